@@ -1,0 +1,54 @@
+/* Web materials: the radial (stack) modulus laws and the sheet constants.
+ * Physics free of I/O; the scene loader fills these structs from models/ YAML. */
+#ifndef REELSIM_MATERIAL_H
+#define REELSIM_MATERIAL_H
+
+#include "reelsim/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { RS_TABLE_MAX = 256, RS_HAKIEL_MAX_COEF = 5, RS_NAME_MAX = 128 };
+
+typedef enum rs_radial_kind {
+  RS_RADIAL_LINEAR,   /* E_r constant */
+  RS_RADIAL_PFEIFFER, /* P = K1 (exp(K2 eps) - 1)  =>  E_r = K2 (P + K1) */
+  RS_RADIAL_HAKIEL,   /* E_r = C0 + C1 P + C2 P^2 + C3 P^3 (+ C4 P^4) */
+  RS_RADIAL_TABLE     /* measured (P, E_r) points, monotone cubic (Fritsch-Carlson) */
+} rs_radial_kind;
+
+typedef struct rs_radial_law {
+  rs_radial_kind law;
+  double E_r;                       /* linear: Pa */
+  double K1, K2;                    /* pfeiffer: Pa, dimensionless */
+  double C[RS_HAKIEL_MAX_COEF];     /* hakiel: Pa, 1, 1/Pa, 1/Pa^2, 1/Pa^3 */
+  int n_coef;
+  int n_points;                     /* table */
+  double P[RS_TABLE_MAX];           /* Pa, strictly increasing, P[0] >= 0 */
+  double E[RS_TABLE_MAX];           /* Pa, > 0 */
+  double slope[RS_TABLE_MAX];       /* dE/dP at the points, set by rs_radial_law_prepare */
+} rs_radial_law;
+
+/* Checks the law (positive moduli, sorted table) and precomputes what evaluation needs
+ * (table slopes). Returns RS_ERR_INPUT with a message naming the offending value. */
+rs_status rs_radial_law_prepare(rs_radial_law *law);
+
+/* Tangent radial modulus E_r(P) in Pa at interlayer pressure P >= 0 (Pa, compression
+ * positive). Table: monotone cubic between points, the end values held outside them. */
+double rs_radial_modulus(const rs_radial_law *law, double P);
+
+typedef struct rs_material {
+  char name[RS_NAME_MAX];
+  double caliper;    /* m: the sheet thickness 2h of the seed paper */
+  double E_theta;    /* Pa: hoop (machine-direction) modulus */
+  double nu_rtheta;  /* Poisson ratio in the Hakiel core condition */
+  rs_radial_law radial;
+  double G_rtheta;   /* Pa: in-plane shear modulus (nip model); 0 = not given */
+  double density;    /* kg/m^3; 0 = not given */
+} rs_material;
+
+#ifdef __cplusplus
+}
+#endif
+#endif

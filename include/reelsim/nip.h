@@ -1,0 +1,50 @@
+/* The nip seam: how the wound-on tension T0 is found at each radius.
+ *
+ * A scene without a nip section creates no rs_nip at all (T0 = web tension), so no nip
+ * code runs. Each model implements rs_nip_ops; the contact model of the seed paper
+ * plugs in here as another implementation. */
+#ifndef REELSIM_NIP_H
+#define REELSIM_NIP_H
+
+#include "reelsim/material.h"
+#include "reelsim/scene.h"
+#include "reelsim/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What the nip sees of the reel at one radius. */
+typedef struct rs_nip_state {
+  double roll_radius;     /* m, current outer radius of the wound roll */
+  double core_radius;     /* m */
+  double web_tension;     /* Ti, N/m (from the tension recipe) */
+  double nip_load;        /* P, N/m (from the load recipe) */
+  double surface_modulus; /* Pa, tangent E_r of the outer layers now */
+  double surface_pressure;/* Pa, interlayer pressure under the outer layer now */
+} rs_nip_state;
+
+typedef struct rs_nip rs_nip;
+
+typedef struct rs_nip_ops {
+  const char *name;
+  rs_status (*wound_on_tension)(void *ctx, const rs_nip_state *state, double *T0);
+  void (*destroy)(void *ctx);
+} rs_nip_ops;
+
+/* Creates the nip model the spec asks for; *out = NULL for RS_NIP_NONE. */
+rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out);
+void rs_nip_destroy(rs_nip **nip);
+rs_status rs_nip_wound_on_tension(rs_nip *nip, const rs_nip_state *state, double *T0);
+const char *rs_nip_name(const rs_nip *nip);
+
+/* For model implementations: wraps ctx and ops in a handle (takes ownership of ctx). */
+rs_status rs_nip_wrap(const rs_nip_ops *ops, void *ctx, rs_nip **out);
+
+/* The friction model: T0 = Ti + mu * P (Good, Wu & Fikes 1994). */
+rs_status rs_nip_friction_create(double mu_roll, rs_nip **out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

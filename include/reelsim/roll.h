@@ -1,0 +1,63 @@
+/* The roll build-up engine: Hakiel-type accretion integrated with SUNDIALS CVODE.
+ *
+ * Plane stress, axisymmetric, cylindrically orthotropic roll on a core (Hakiel 1987).
+ * Each call to rs_roll_add_layers winds m layers of caliper t at wound-on tension T0
+ * (N/m) and adds the stress increment ds(r) on [r_c, s], s the new outer radius, that
+ * solves   r^2 ds'' + 3 r ds' - (g^2 - 1) ds = 0,  g^2 = E_theta / E_r(P)   with
+ * ds(s) = -m T0 / s and the core condition r_c ds'(r_c) = (E_theta/E_c + nu - 1) ds(r_c).
+ * E_r is the tangent radial modulus at the pressure before the increment (frozen).
+ * See docs/roll-model.md for the scale-free (Riccati) formulation that never overflows. */
+#ifndef REELSIM_ROLL_H
+#define REELSIM_ROLL_H
+
+#include "reelsim/material.h"
+#include "reelsim/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rs_roll rs_roll;
+
+typedef struct rs_roll_params {
+  double core_radius;      /* m */
+  double core_stiffness;   /* Pa, effective E_c; INFINITY for a rigid core */
+  double caliper;          /* m */
+  double E_theta;          /* Pa */
+  double nu_rtheta;
+  rs_radial_law radial;    /* must have been through rs_radial_law_prepare */
+  int max_layers;          /* capacity */
+  double rtol;             /* CVODE relative tolerance on (w, ln y) */
+  double atol;             /* CVODE absolute tolerance; <= 0: rtol */
+  long max_steps;          /* CVODE internal steps per increment; <= 0: 100000 */
+} rs_roll_params;
+
+typedef struct rs_roll_stats {
+  long increments;         /* calls to rs_roll_add_layers */
+  long cvode_steps;        /* internal CVODE steps, all increments */
+  long rhs_evals;
+  long jac_evals;
+} rs_roll_stats;
+
+rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out);
+void rs_roll_destroy(rs_roll **roll); /* accepts NULL and *roll == NULL */
+
+/* Winds m >= 1 layers in one increment at wound-on tension T0 >= 0 (N/m). */
+rs_status rs_roll_add_layers(rs_roll *roll, int m, double T0);
+
+int rs_roll_layers(const rs_roll *roll);
+double rs_roll_outer_radius(const rs_roll *roll);          /* m */
+double rs_roll_layer_radius(const rs_roll *roll, int j);   /* outer radius of layer j (0-based) */
+/* Per layer j = 0..n-1 (layer j+1 in the notes), evaluated at its outer radius; Pa,
+ * tension positive. The arrays stay owned by the roll. */
+const double *rs_roll_sigma_r(const rs_roll *roll);
+const double *rs_roll_sigma_theta(const rs_roll *roll);
+double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression positive */
+/* Tangent radial modulus E_r (Pa) of the outermost layer at its current pressure. */
+double rs_roll_surface_modulus(const rs_roll *roll);
+void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

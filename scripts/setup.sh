@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages reelsim needs (only those missing), then configures
+# and builds into build/ (or $RS_BUILD_DIR). Safe to run again: a no-op when all is there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PKGS="build-essential cmake pkg-config libsundials-dev libhdf5-dev liblapacke-dev libcyaml-dev libyaml-dev hdf5-tools gnuplot-nox"
+missing=""
+for p in $PKGS; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "setup: installing missing Debian packages:$missing" >&2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  # shellcheck disable=SC2086
+  $SUDO apt-get install -y -q --no-install-recommends $missing
+fi
+
+BUILD_DIR="${RS_BUILD_DIR:-build}"
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="${RS_BUILD_TYPE:-RelWithDebInfo}" ${RS_CMAKE_ARGS:-} >/dev/null
+cmake --build "$BUILD_DIR" -j "$(nproc)"
