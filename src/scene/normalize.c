@@ -25,7 +25,10 @@ static rs_status normalize_recipe(yn *root, const char *parent_path, const char 
   if (i < 0) return RS_OK;
   yn *node = parent->kids[i];
   snprintf(path, sizeof path, "%s.%s.law", parent_path, key);
-  if (node->kind == YN_SCALAR && !yn_is_empty(node)) {
+  if (yn_is_empty(node))
+    return yn_error(node, "missing value (a number in N/m, or a recipe such as "
+                          "{law: linear, start: 350, end: 280})");
+  if (node->kind == YN_SCALAR) {
     yn *map = yn_new_map(node->file, node->line, node->path);
     yn *law = scalar_like(node, "constant", path);
     if (!map || !law) {

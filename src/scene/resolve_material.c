@@ -87,6 +87,11 @@ static rs_status resolve_radial(const yn *root, const ys_radial *y, rs_radial_la
     const char *rest = msg + n;
     while (*rest == ':' || *rest == ' ') ++rest;
     snprintf(key, sizeof key, "material.%s", tok);
+    /* "radial.points must be sorted ... (points[2].P ...)": point at the entry */
+    const char *at = strstr(rest, "points[");
+    int idx;
+    if (strcmp(tok, "radial.points") == 0 && at && sscanf(at, "points[%d]", &idx) == 1)
+      snprintf(key, sizeof key, "material.radial.points[%d]", idx);
     if (n == 0 || strncmp(tok, "radial", 6) != 0 || !yn_get(root, key))
       return ys_fail(root, "material.radial", "%s", msg);
     return ys_fail(root, key, "%s", rest);
