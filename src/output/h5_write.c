@@ -76,7 +76,8 @@ static rs_status write_final(hid_t file, const rs_reel_result *res)
   size_t n = (size_t)res->n_layers;
   double *pressure = malloc((n ? n : 1) * sizeof *pressure);
   if (!pressure) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %zu layers", n);
-  for (size_t i = 0; i < n; ++i) pressure[i] = -res->sigma_r[i];
+  /* 0 - x rather than -x: an unloaded layer (sigma_r = +0) gets pressure +0, not -0. */
+  for (size_t i = 0; i < n; ++i) pressure[i] = 0.0 - res->sigma_r[i];
   hid_t g;
   rs_status st = rs_h5_group_create(file, "final", &g);
   if (st != RS_OK) {
