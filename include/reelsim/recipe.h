@@ -19,7 +19,7 @@ typedef enum rs_recipe_kind {
 
 typedef struct rs_recipe {
   rs_recipe_kind law;
-  double start, end, k;
+  double start, end, k;  /* k: hyperbolic taper factor, NAN when derived from `end` */
   double r0, r1;        /* m: core radius and final radius (set when the scene resolves) */
   int n_points;
   double r[RS_TABLE_MAX];

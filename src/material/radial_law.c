@@ -1,0 +1,121 @@
+/* Radial (stack) modulus laws E_r(P): the tangent modulus of the wound stack in the
+ * radial direction at interlayer pressure P (Pa, compression positive). */
+#include <math.h>
+
+#include "reelsim/material.h"
+
+/* Fritsch & Carlson (1980) monotone cubic slopes: harmonic-mean interior slopes,
+ * zero where the data change direction, one-sided three-point ends clipped to keep
+ * the interpolant monotone between points. */
+static void pchip_slopes(int n, const double *x, const double *y, double *d)
+{
+  if (n == 1) {
+    d[0] = 0.0;
+    return;
+  }
+  if (n == 2) {
+    d[0] = d[1] = (y[1] - y[0]) / (x[1] - x[0]);
+    return;
+  }
+  for (int i = 1; i < n - 1; ++i) {
+    double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+    double s0 = (y[i] - y[i - 1]) / h0, s1 = (y[i + 1] - y[i]) / h1;
+    if (s0 * s1 <= 0.0) {
+      d[i] = 0.0;
+    } else {
+      double w0 = 2.0 * h1 + h0, w1 = h1 + 2.0 * h0;
+      d[i] = (w0 + w1) / (w0 / s0 + w1 / s1);
+    }
+  }
+  for (int e = 0; e < 2; ++e) {
+    int i0 = e == 0 ? 0 : n - 1, i1 = e == 0 ? 1 : n - 2, i2 = e == 0 ? 2 : n - 3;
+    double h0 = fabs(x[i1] - x[i0]), h1 = fabs(x[i2] - x[i1]);
+    double s0 = (y[i1] - y[i0]) / (x[i1] - x[i0]), s1 = (y[i2] - y[i1]) / (x[i2] - x[i1]);
+    double de = ((2.0 * h0 + h1) * s0 - h0 * s1) / (h0 + h1);
+    if (de * s0 <= 0.0)
+      de = 0.0;
+    else if (s0 * s1 <= 0.0 && fabs(de) > fabs(3.0 * s0))
+      de = 3.0 * s0;
+    d[i0] = de;
+  }
+}
+
+rs_status rs_radial_law_prepare(rs_radial_law *law)
+{
+  switch (law->law) {
+  case RS_RADIAL_LINEAR:
+    if (!(law->E_r > 0.0) || !isfinite(law->E_r))
+      return RS_ERROR(RS_ERR_INPUT, "radial.E_r must be a positive modulus (got %g Pa)", law->E_r);
+    return RS_OK;
+  case RS_RADIAL_PFEIFFER:
+    if (!(law->K1 > 0.0) || !isfinite(law->K1))
+      return RS_ERROR(RS_ERR_INPUT, "radial.K1 must be > 0 Pa (got %g)", law->K1);
+    if (!(law->K2 > 0.0) || !isfinite(law->K2))
+      return RS_ERROR(RS_ERR_INPUT, "radial.K2 must be > 0 (got %g)", law->K2);
+    return RS_OK;
+  case RS_RADIAL_HAKIEL:
+    if (law->n_coef < 1 || law->n_coef > RS_HAKIEL_MAX_COEF)
+      return RS_ERROR(RS_ERR_INPUT, "radial.C must have 1 to %d coefficients (got %d)",
+                      RS_HAKIEL_MAX_COEF, law->n_coef);
+    if (!(law->C[0] > 0.0))
+      return RS_ERROR(RS_ERR_INPUT, "radial.C[0] (E_r at zero pressure) must be > 0 Pa (got %g)",
+                      law->C[0]);
+    for (int i = 0; i < law->n_coef; ++i)
+      if (!isfinite(law->C[i]))
+        return RS_ERROR(RS_ERR_INPUT, "radial.C[%d] is not a finite number", i);
+    return RS_OK;
+  case RS_RADIAL_TABLE:
+    if (law->n_points < 1 || law->n_points > RS_TABLE_MAX)
+      return RS_ERROR(RS_ERR_INPUT, "radial.points must have 1 to %d [P, E_r] pairs (got %d)",
+                      RS_TABLE_MAX, law->n_points);
+    for (int i = 0; i < law->n_points; ++i) {
+      if (!(law->P[i] >= 0.0) || !isfinite(law->P[i]))
+        return RS_ERROR(RS_ERR_INPUT, "radial.points[%d]: pressure must be >= 0 (got %g)", i,
+                        law->P[i]);
+      if (!(law->E[i] > 0.0) || !isfinite(law->E[i]))
+        return RS_ERROR(RS_ERR_INPUT, "radial.points[%d]: E_r must be > 0 (got %g)", i, law->E[i]);
+      if (i > 0 && !(law->P[i] > law->P[i - 1]))
+        return RS_ERROR(RS_ERR_INPUT,
+                        "radial.points must be sorted by strictly increasing pressure "
+                        "(points[%d].P = %g after %g)",
+                        i, law->P[i], law->P[i - 1]);
+    }
+    pchip_slopes(law->n_points, law->P, law->E, law->slope);
+    return RS_OK;
+  }
+  return RS_ERROR(RS_ERR_INPUT, "unknown radial law %d", (int)law->law);
+}
+
+/* E_r(P), Pa:
+ *   linear    E_r
+ *   pfeiffer  K2 (P + K1)                    (Pfeiffer 1968: P = K1 (exp(K2 eps) - 1))
+ *   hakiel    sum_i C_i P^i                  (Hakiel 1987)
+ *   table     monotone cubic Hermite through (P_i, E_i), end values held outside. */
+double rs_radial_modulus(const rs_radial_law *law, double P)
+{
+  if (P < 0.0) P = 0.0; /* a layer never pulls on its neighbour: separation = no stiffness gain */
+  switch (law->law) {
+  case RS_RADIAL_LINEAR: return law->E_r;
+  case RS_RADIAL_PFEIFFER: return law->K2 * (P + law->K1);
+  case RS_RADIAL_HAKIEL: {
+    double e = 0.0;
+    for (int i = law->n_coef - 1; i >= 0; --i) e = e * P + law->C[i];
+    return e;
+  }
+  case RS_RADIAL_TABLE: {
+    int n = law->n_points;
+    if (n == 1 || P <= law->P[0]) return law->E[0];
+    if (P >= law->P[n - 1]) return law->E[n - 1];
+    int lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+      int mid = (lo + hi) / 2;
+      if (law->P[mid] <= P) lo = mid; else hi = mid;
+    }
+    double h = law->P[hi] - law->P[lo], s = (P - law->P[lo]) / h;
+    double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+    double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+    return h00 * law->E[lo] + h10 * h * law->slope[lo] + h01 * law->E[hi] + h11 * h * law->slope[hi];
+  }
+  }
+  return NAN;
+}
