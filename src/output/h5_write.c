@@ -145,8 +145,8 @@ rs_status rs_output_write(const char *path, const rs_scene *scene, const rs_reel
   if (st == RS_OK) st = rs_staging_check_target(path);
   if (st != RS_OK) return st;
 
-  void *image;
-  size_t size;
+  void *image = NULL;
+  size_t size = 0;
   rs_h5_quiet quiet;
   rs_h5_quiet_begin(&quiet);
   st = build_image(scene, res, &image, &size);
