@@ -18,6 +18,7 @@ typedef struct rs_reel_result {
   double *sigma_r;           /* Pa, final radial stress per layer (compression < 0) */
   double *sigma_theta;       /* Pa, final hoop stress per layer */
   double core_pressure;      /* Pa, compression positive */
+  double core_radius;        /* m */
   long increments, cvode_steps, rhs_evals;
   double wall_seconds;
 } rs_reel_result;

@@ -1,10 +1,10 @@
 /* The roll build-up engine: Hakiel-type accretion integrated with SUNDIALS CVODE.
  *
  * Plane stress, axisymmetric, cylindrically orthotropic roll on a core (Hakiel 1987).
- * Each call to rs_roll_add_layers winds m layers of caliper t at wound-on tension T0
+ * Each call to rs_roll_add_layers winds m layers of caliper t at wound-on tensions T0
  * (N/m) and adds the stress increment ds(r) on [r_c, s], s the new outer radius, that
  * solves   r^2 ds'' + 3 r ds' - (g^2 - 1) ds = 0,  g^2 = E_theta / E_r(P)   with
- * ds(s) = -m T0 / s and the core condition r_c ds'(r_c) = (E_theta/E_c + nu - 1) ds(r_c).
+ * ds(s) = -sum(T0) / s and the core condition r_c ds'(r_c) = (E_theta/E_c + nu - 1) ds(r_c).
  * E_r is the tangent radial modulus at the pressure before the increment (frozen).
  * See docs/roll-model.md for the scale-free (Riccati) formulation that never overflows. */
 #ifndef REELSIM_ROLL_H
@@ -42,8 +42,9 @@ typedef struct rs_roll_stats {
 rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out);
 void rs_roll_destroy(rs_roll **roll); /* accepts NULL and *roll == NULL */
 
-/* Winds m >= 1 layers in one increment at wound-on tension T0 >= 0 (N/m). */
-rs_status rs_roll_add_layers(rs_roll *roll, int m, double T0);
+/* Winds m >= 1 layers in one increment; T0[i] >= 0 (N/m) is the wound-on tension of
+ * the i-th of them, innermost first. The outer condition is ds(s) = -sum(T0)/s. */
+rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0);
 
 int rs_roll_layers(const rs_roll *roll);
 double rs_roll_outer_radius(const rs_roll *roll);          /* m */

@@ -1,0 +1,179 @@
+/* HDF5 writing helpers; see h5_util.h. Each helper closes everything it opened on
+ * every path, so a failed write leaks no HDF5 identifiers. */
+#include "output/h5_util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void rs_h5_quiet_begin(rs_h5_quiet *q)
+{
+  q->saved = H5Eget_auto2(H5E_DEFAULT, &q->func, &q->data) >= 0;
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+}
+
+void rs_h5_quiet_end(rs_h5_quiet *q)
+{
+  if (q->saved) H5Eset_auto2(H5E_DEFAULT, q->func, q->data);
+}
+
+enum { RS_H5_DETAIL_LEN = 512 };
+
+static herr_t innermost_cb(unsigned n, const H5E_error2_t *err, void *client)
+{
+  (void)n;
+  /* Walking downward, the last entry is the deepest: the one that says why. */
+  if (err->desc) snprintf((char *)client, RS_H5_DETAIL_LEN, "%s", err->desc);
+  return 0;
+}
+
+void rs_h5_error_detail(char *buf, size_t len)
+{
+  char deep[RS_H5_DETAIL_LEN] = "";
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost_cb, deep);
+  /* A system call failure carries "..., error message = 'No space left on device', ...":
+   * that part is what a user can act on; the rest is file offsets. */
+  const char *key = "error message = '";
+  const char *p = strstr(deep, key);
+  if (p) {
+    p += strlen(key);
+    const char *q = strchr(p, '\'');
+    int m = q ? (int)(q - p) : (int)strlen(p);
+    snprintf(buf, len, "%.*s", m, p);
+  } else {
+    snprintf(buf, len, "%s", deep);
+  }
+}
+
+/* Records the failure of `what` on object `name` under `loc`, reading HDF5's reason
+ * before any other HDF5 call clears it. */
+static rs_status h5_fail(const char *func, int line, hid_t loc, const char *name,
+                         const char *what)
+{
+  char detail[512], where[1024] = "";
+  rs_h5_error_detail(detail, sizeof detail);
+  if (H5Iget_name(loc, where, sizeof where) <= 0) where[0] = '\0';
+  size_t w = strlen(where);
+  if (w > 0 && where[w - 1] == '/') where[--w] = '\0';
+  return rs_error_set(RS_ERR_IO, func, __FILE__, line, "cannot %s '%s/%s'%s%s", what, where,
+                      name, detail[0] ? ": " : "", detail);
+}
+#define H5_FAIL(loc, name, what) h5_fail(__func__, __LINE__, (loc), (name), (what))
+
+/* Writes a scalar attribute of file type `ftype` from memory of type `mtype`. */
+static rs_status attr_scalar(hid_t obj, const char *name, hid_t ftype, hid_t mtype,
+                             const void *value)
+{
+  rs_status st = RS_OK;
+  hid_t space = -1, attr = -1;
+  if ((space = H5Screate(H5S_SCALAR)) < 0 ||
+      (attr = H5Acreate2(obj, name, ftype, space, H5P_DEFAULT, H5P_DEFAULT)) < 0 ||
+      H5Awrite(attr, mtype, value) < 0)
+    st = H5_FAIL(obj, name, "write attribute");
+  if (attr >= 0) H5Aclose(attr);
+  if (space >= 0) H5Sclose(space);
+  return st;
+}
+
+rs_status rs_h5_attr_string(hid_t obj, const char *name, const char *value)
+{
+  hid_t type = H5Tcopy(H5T_C_S1);
+  if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0) {
+    rs_status st = H5_FAIL(obj, name, "make the string type for attribute");
+    if (type >= 0) H5Tclose(type);
+    return st;
+  }
+  const char *v = value ? value : "";
+  rs_status st = attr_scalar(obj, name, type, type, &v);
+  H5Tclose(type);
+  return st;
+}
+
+rs_status rs_h5_attr_double(hid_t obj, const char *name, double value)
+{
+  return attr_scalar(obj, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
+}
+
+rs_status rs_h5_attr_int64(hid_t obj, const char *name, long long value)
+{
+  return attr_scalar(obj, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &value);
+}
+
+rs_status rs_h5_group_create(hid_t loc, const char *name, hid_t *out)
+{
+  *out = H5Gcreate2(loc, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  return *out < 0 ? H5_FAIL(loc, name, "create group") : RS_OK;
+}
+
+/* Creates and fills one dataset of doubles and gives it units and description. */
+static rs_status write_doubles(hid_t loc, const char *name, hid_t space, hid_t dcpl,
+                               const double *data, const char *units, const char *description)
+{
+  rs_status st = RS_OK;
+  hid_t dset = H5Dcreate2(loc, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  if (dset < 0) return H5_FAIL(loc, name, "create dataset");
+  if (H5Sget_simple_extent_npoints(space) > 0 &&
+      H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    st = H5_FAIL(loc, name, "write dataset");
+  if (st == RS_OK) st = rs_h5_attr_string(dset, "units", units);
+  if (st == RS_OK) st = rs_h5_attr_string(dset, "description", description);
+  if (H5Dclose(dset) < 0 && st == RS_OK) st = H5_FAIL(loc, name, "close dataset");
+  return st;
+}
+
+rs_status rs_h5_write_scalar(hid_t loc, const char *name, double value, const char *units,
+                             const char *description)
+{
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (space < 0) return H5_FAIL(loc, name, "make the dataspace for");
+  rs_status st = write_doubles(loc, name, space, H5P_DEFAULT, &value, units, description);
+  H5Sclose(space);
+  return st;
+}
+
+rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t n,
+                         const char *units, const char *description)
+{
+  hsize_t dims[1] = {n};
+  hid_t space = H5Screate_simple(1, dims, NULL);
+  if (space < 0) return H5_FAIL(loc, name, "make the dataspace for");
+  rs_status st = write_doubles(loc, name, space, H5P_DEFAULT, data, units, description);
+  H5Sclose(space);
+  return st;
+}
+
+void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2])
+{
+  const size_t target = 32768; /* doubles: 256 KiB, HDF5's advice is 10 KiB .. 1 MiB */
+  size_t c = cols < 4096 ? cols : 4096;
+  if (c == 0) c = 1;
+  size_t r = target / c;
+  if (r > rows) r = rows;
+  if (r == 0) r = 1;
+  chunk[0] = r;
+  chunk[1] = c;
+}
+
+rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data, size_t rows,
+                                 size_t cols, const char *units, const char *description)
+{
+  rs_status st = RS_OK;
+  hsize_t dims[2] = {rows, cols}, maxdims[2] = {H5S_UNLIMITED, H5S_UNLIMITED}, chunk[2];
+  const double fill = NAN;
+  hid_t space = -1, dcpl = -1;
+  rs_h5_chunk_shape(rows, cols, chunk);
+  if ((space = H5Screate_simple(2, dims, maxdims)) < 0 ||
+      (dcpl = H5Pcreate(H5P_DATASET_CREATE)) < 0 || H5Pset_chunk(dcpl, 2, chunk) < 0 ||
+      H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill) < 0) {
+    st = H5_FAIL(loc, name, "set up the chunked layout for");
+  } else if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+    /* Shuffle groups the bytes of the doubles by significance: deflate then finds the
+     * repeated exponents. Without zlib the data is still written, just uncompressed. */
+    if (H5Pset_shuffle(dcpl) < 0 || H5Pset_deflate(dcpl, 4) < 0)
+      st = H5_FAIL(loc, name, "set up compression for");
+  }
+  if (st == RS_OK) st = write_doubles(loc, name, space, dcpl, data, units, description);
+  if (dcpl >= 0) H5Pclose(dcpl);
+  if (space >= 0) H5Sclose(space);
+  return st;
+}

@@ -1,0 +1,58 @@
+/* Small HDF5 writing helpers for the output module (internal, not installed).
+ *
+ * Every helper returns RS_OK or records RS_ERR_IO naming the object ("/layers/radius")
+ * and, when HDF5 gave one, its innermost reason ("No space left on device").
+ * Strings are variable-length UTF-8 scalars so h5py reads them as str; numbers are
+ * little-endian IEEE doubles and 64-bit integers whatever the host. */
+#ifndef RS_OUTPUT_H5_UTIL_H
+#define RS_OUTPUT_H5_UTIL_H
+
+#include <stddef.h>
+
+#include <hdf5.h>
+
+#include "reelsim/status.h"
+
+/* Turns off HDF5's printing of its error stack on this thread for the lifetime of
+ * the guard, restoring whatever handler the caller had afterwards. */
+typedef struct rs_h5_quiet {
+  H5E_auto2_t func;
+  void *data;
+  int saved;
+} rs_h5_quiet;
+void rs_h5_quiet_begin(rs_h5_quiet *q);
+void rs_h5_quiet_end(rs_h5_quiet *q);
+
+/* The innermost message on this thread's HDF5 error stack, or "" when there is none.
+ * Call straight after the failing HDF5 call: the next HDF5 call clears the stack. */
+void rs_h5_error_detail(char *buf, size_t len);
+
+/* An empty HDF5 file in memory (core driver, nothing on disk); close with H5Fclose. */
+rs_status rs_h5_memfile_create(hid_t *file);
+/* The bytes of the file so far, ready to write out (*image malloc'd, caller frees). */
+rs_status rs_h5_memfile_image(hid_t file, void **image, size_t *size);
+
+rs_status rs_h5_attr_string(hid_t obj, const char *name, const char *value);
+rs_status rs_h5_attr_double(hid_t obj, const char *name, double value);
+rs_status rs_h5_attr_int64(hid_t obj, const char *name, long long value);
+
+/* Creates group `name` under `loc`; the caller closes *out with H5Gclose. */
+rs_status rs_h5_group_create(hid_t loc, const char *name, hid_t *out);
+
+/* Datasets of doubles, each with string attributes `units` and `description`. */
+rs_status rs_h5_write_scalar(hid_t loc, const char *name, double value, const char *units,
+                             const char *description);
+rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t n,
+                         const char *units, const char *description);
+
+/* A rows x cols row-major array as a chunked, shuffled, deflate-compressed dataset
+ * (fill value NaN, both dimensions extendable, so a history can grow stage by stage).
+ * `data` may hold NaN (e.g. layers not yet wound); rows or cols may be 0. */
+rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data, size_t rows,
+                                 size_t cols, const char *units, const char *description);
+
+/* The chunk shape rs_h5_write_2d_chunked picks: whole rows up to 4096 columns and
+ * about 256 KiB per chunk, so reading one stage or one layer touches few chunks. */
+void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2]);
+
+#endif

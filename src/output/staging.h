@@ -1,0 +1,22 @@
+/* Putting a finished file in place (internal to the output module): the bytes go to
+ * "<path>.tmp.<pid>.<n>" beside the target, are flushed to disk, and the temporary is
+ * renamed onto `path`. rename() within one directory is atomic on POSIX file systems,
+ * so readers see either the old file or the whole new one, never a part. */
+#ifndef RS_OUTPUT_STAGING_H
+#define RS_OUTPUT_STAGING_H
+
+#include <stddef.h>
+
+#include "reelsim/status.h"
+
+/* Checks, before any work, what users most often get wrong: the directory of `path`
+ * is missing, not a directory or not writable, or `path` itself is a directory or a
+ * device. Records RS_ERR_IO with a message naming the path. */
+rs_status rs_staging_check_target(const char *path);
+
+/* Writes `size` bytes to a new temporary beside `path` and renames it onto `path`.
+ * On failure the temporary is removed and an existing file at `path` is untouched;
+ * the error (RS_ERR_IO) names the path and gives the system's reason. */
+rs_status rs_staging_write(const char *path, const void *data, size_t size);
+
+#endif
