@@ -129,6 +129,7 @@ int cli_run(const cli_args *a)
     goto done;
   }
   if (st != RS_OK) {
+    if (st == RS_ERR_INPUT) rs_error_wrap("%s", scene->path); /* e.g. a nip model not built */
     code = cli_fail_status(st);
     if (res && st == RS_ERR_SOLVER)
       fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n", res->n_layers,

@@ -10,46 +10,6 @@
 
 #include "scene/scene_internal.h"
 
-enum { SEG_MAX = 128 };
-
-static int is_index(const char *seg, long *i)
-{
-  char *end;
-  if (!seg[0]) return 0;
-  *i = strtol(seg, &end, 10);
-  return *end == '\0' && *i >= 0;
-}
-
-/* Splits "a.b[2].c" into segments "a", "b", "2", "c". */
-static int split(const char *path, char seg[][SEG_MAX], int max)
-{
-  int n = 0;
-  const char *p = path;
-  while (*p) {
-    size_t len;
-    if (*p == '.') {
-      if (p == path || p[1] == '\0' || p[1] == '.') return -1;
-      ++p;
-      continue;
-    }
-    if (*p == '[') {
-      len = strcspn(p + 1, "]");
-      if (p[1 + len] != ']' || len == 0) return -1;
-      if (n == max || len >= SEG_MAX) return -1;
-      memcpy(seg[n], p + 1, len);
-      seg[n++][len] = '\0';
-      p += len + 2;
-      continue;
-    }
-    len = strcspn(p, ".[");
-    if (n == max || len >= SEG_MAX) return -1;
-    memcpy(seg[n], p, len);
-    seg[n++][len] = '\0';
-    p += len;
-  }
-  return n;
-}
-
 /* dst = a + sep + b, cut to size (paths here are bounded by the --set text anyway) */
 static void join3(char *dst, size_t size, const char *a, const char *sep, const char *b)
 {
@@ -68,7 +28,7 @@ static int is_scalar_schema(const cyaml_schema_value_t *s)
 
 rs_status ys_apply_set(yn *root, const char *set, int pass)
 {
-  char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][SEG_MAX], keys[512];
+  char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
   snprintf(origin, sizeof origin, "--set %s", set);
   const char *eq = strchr(set, '=');
   if (!eq || eq == set)
@@ -81,7 +41,7 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
 
   if ((pass == 0) != (strcmp(path, "material") == 0)) return RS_OK;
 
-  int n = split(path, seg, 16);
+  int n = yn_path_split(path, seg, 16);
   if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);
 
   yn *cur = root;
@@ -89,7 +49,7 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
     char next[sizeof walked], num[32];
     long idx;
     if (cur->kind == YN_SEQ) {
-      if (!is_index(seg[i], &idx))
+      if (!yn_seg_index(seg[i], &idx))
         return RS_ERROR(RS_ERR_INPUT, "%s: %s is a list: expected an entry number, got '%s'",
                         origin, walked, seg[i]);
       if (idx >= cur->n)

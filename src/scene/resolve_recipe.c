@@ -135,7 +135,7 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
       int imin = 0;
       for (int i = 1; i < out->n_points; ++i)
         if (out->value[i] < out->value[imin]) imin = i;
-      snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, imin);
+      snprintf(key, sizeof key, "%s.%s[%d][1]", path, tkey, imin);
       return ys_fail(root, key, "the %s must not be negative (got %g N/m at r = %g m)", what,
                      out->value[imin], out->r[imin]);
     }

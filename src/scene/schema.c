@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "reelsim/recipe.h"
+#include "scene/ytree.h"
 
 #define OPT CYAML_FLAG_OPTIONAL
 #define REQ CYAML_FLAG_DEFAULT
@@ -165,39 +166,19 @@ int ys_is_shorthand(const char *p)
 
 const cyaml_schema_value_t *ys_schema_at(const char *path)
 {
-  const cyaml_schema_value_t *s = &ys_scene_schema;
-  const char *p = path;
-  char seg[128];
-  while (*p) {
-    if (*p == '.') {
-      ++p;
-      continue;
-    }
-    if (*p == '[') {
-      const char *close = strchr(p, ']');
-      if (!close) return NULL;
-      p = close + 1;
-      if (s->type != CYAML_SEQUENCE && s->type != CYAML_SEQUENCE_FIXED) return NULL;
-      s = s->sequence.entry;
-      continue;
-    }
-    size_t n = strcspn(p, ".[");
-    if (n >= sizeof seg) return NULL;
-    memcpy(seg, p, n);
-    seg[n] = '\0';
-    p += n;
+  char seg[32][YN_SEG_MAX];
+  int n = yn_path_split(path, seg, 32);
+  const cyaml_schema_value_t *s = n < 0 ? NULL : &ys_scene_schema;
+  for (int i = 0; s && i < n; ++i) {
     if (s->type == CYAML_SEQUENCE || s->type == CYAML_SEQUENCE_FIXED) {
-      char *end;
-      strtol(seg, &end, 10);
-      if (*end || !seg[0]) return NULL;
-      s = s->sequence.entry;
+      long k;
+      s = yn_seg_index(seg[i], &k) ? s->sequence.entry : NULL;
       continue;
     }
     if (s->type != CYAML_MAPPING) return NULL;
     const cyaml_schema_field_t *f = s->mapping.fields;
-    while (f->key && strcmp(f->key, seg) != 0) ++f;
-    if (!f->key) return NULL;
-    s = &f->value;
+    while (f->key && strcmp(f->key, seg[i]) != 0) ++f;
+    s = f->key ? &f->value : NULL;
   }
   return s;
 }

@@ -301,39 +301,57 @@ rs_status yn_parse_file(const char *file, yn **out)
 
 /* ---- lookup and edits ------------------------------------------------------------ */
 
-yn *yn_get(const yn *root, const char *path)
+/* Splits "a.b[2].c" into segments "a", "b", "2", "c". */
+int yn_path_split(const char *path, char seg[][YN_SEG_MAX], int max)
 {
-  const yn *cur = root;
+  int n = 0;
   const char *p = path;
-  char seg[256];
-  while (cur && *p) {
+  while (*p) {
+    size_t len;
     if (*p == '.') {
+      if (p == path || p[1] == '\0' || p[1] == '.') return -1;
       ++p;
       continue;
     }
     if (*p == '[') {
-      char *end;
-      long i = strtol(p + 1, &end, 10);
-      if (*end != ']' || cur->kind != YN_SEQ || i < 0 || i >= cur->n) return NULL;
-      cur = cur->kids[i];
-      p = end + 1;
+      len = strcspn(p + 1, "]");
+      if (p[1 + len] != ']' || len == 0) return -1;
+      if (n == max || len >= YN_SEG_MAX) return -1;
+      memcpy(seg[n], p + 1, len);
+      seg[n++][len] = '\0';
+      p += len + 2;
       continue;
     }
-    size_t n = strcspn(p, ".[");
-    if (n >= sizeof seg) return NULL;
-    memcpy(seg, p, n);
-    seg[n] = '\0';
-    p += n;
-    if (cur->kind == YN_SEQ) {
-      char *end;
-      long i = strtol(seg, &end, 10);
-      if (*end || !seg[0] || i < 0 || i >= cur->n) return NULL;
-      cur = cur->kids[i];
-    } else {
-      cur = yn_map_get(cur, seg);
-    }
+    len = strcspn(p, ".[");
+    if (n == max || len >= YN_SEG_MAX) return -1;
+    memcpy(seg[n], p, len);
+    seg[n++][len] = '\0';
+    p += len;
   }
-  return (yn *)cur;
+  return n;
+}
+
+int yn_seg_index(const char *seg, long *i)
+{
+  char *end;
+  if (!seg[0]) return 0;
+  *i = strtol(seg, &end, 10);
+  return *end == '\0' && *i >= 0;
+}
+
+yn *yn_get(const yn *root, const char *path)
+{
+  char seg[32][YN_SEG_MAX];
+  int n = yn_path_split(path, seg, 32);
+  const yn *cur = root;
+  for (int i = 0; cur && i < n; ++i) {
+    long k;
+    if (cur->kind == YN_SEQ)
+      cur = yn_seg_index(seg[i], &k) && k < cur->n ? cur->kids[k] : NULL;
+    else
+      cur = yn_map_get(cur, seg[i]);
+  }
+  return n < 0 ? NULL : (yn *)cur;
 }
 
 yn *yn_copy(const yn *node)

@@ -51,6 +51,14 @@ rs_status yn_map_put(yn *map, const char *key, yn *child);
 /* Removes key (freeing its value); no-op when absent. */
 void yn_map_remove(yn *map, const char *key);
 
+enum { YN_SEG_MAX = 128 };
+
+/* Splits a key path "a.b[2].c" into its segments "a", "b", "2", "c"; returns how many,
+ * or -1 when the path is malformed or has more than `max`. */
+int yn_path_split(const char *path, char seg[][YN_SEG_MAX], int max);
+/* 1 and *i when a segment is a list index ("2"). */
+int yn_seg_index(const char *seg, long *i);
+
 /* Looks up a dotted path below `root`: "core.radius", "radial.points[2][0]",
  * "table.1.0" (a number on a sequence is an index). NULL when absent. */
 yn *yn_get(const yn *root, const char *path);

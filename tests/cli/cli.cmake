@@ -66,6 +66,10 @@ rs_cli_test(set_malformed 2 [[--set winding\.tension: expected key\.path=value]]
             check ${CASES}/newsprint-rider.yaml --set winding.tension)
 rs_cli_test(set_creates_key 0 [[numerics: 10 layers per step]]
             check ${CASES}/newsprint-taper.yaml --set numerics.layers_per_step=10)
+rs_cli_test(set_table_entry 0 [=[table: \[\[0\.0762, 800\], \[0\.3, 320\], \[0\.5, 600\]\]]=]
+            check ${CASES}/linerboard-table.yaml --set winding.tension.table[1][1]=320)
+rs_cli_test(set_table_negative 2 [[--set winding\.tension\.table\.2\.1=-5: the tension must not be negative]]
+            check ${CASES}/linerboard-table.yaml --set winding.tension.table.2.1=-5)
 rs_cli_test(set_material 0 [[material: pet-film from .*models/pet-film\.yaml]]
             check ${CASES}/newsprint-rider.yaml --set material=pet-film)
 
