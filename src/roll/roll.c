@@ -132,6 +132,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->sigma_r);
   free(roll->sigma_theta);
   free(roll->g2);
+  free(roll->lg2);
   free(roll->w);
   free(roll->L);
   free(roll->xnode);
@@ -181,7 +182,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->L = calloc(cap + 1, sizeof(double));
   roll->xnode = calloc(cap + 1, sizeof(double));
   roll->block_share = calloc(cap + 1, sizeof(double));
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->w || !roll->L || !roll->xnode ||
+  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->w || !roll->L || !roll->xnode ||
       !roll->block_share) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
