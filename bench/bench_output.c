@@ -1,6 +1,5 @@
 /* Cost of rs_output_write and of the chunked 2-D helper at realistic sizes.
  * Prints wall time per write and bytes written; see docs/output.md ("Cost"). */
-#define _POSIX_C_SOURCE 200809L
 
 #include <math.h>
 #include <stdio.h>

@@ -3,7 +3,6 @@
  * Ctrl-C sets a flag that the engine's progress callback returns, so the run stops
  * after the current step; nothing is written and the exit status is 130. A second
  * Ctrl-C kills the program the usual way (SA_RESETHAND). */
-#define _POSIX_C_SOURCE 200809L /* sigaction, clock_gettime */
 
 #include <math.h>
 #include <signal.h>

@@ -4,7 +4,6 @@
  * full) leaves a dangling file identifier that crashes the program at exit (fixed only
  * in 1.14.1), and our own write() gives plain errno reasons. The price is memory: the
  * file twice over, briefly, at the end. */
-#define _POSIX_C_SOURCE 200809L
 
 #include <stdatomic.h>
 #include <stdio.h>

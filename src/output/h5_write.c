@@ -2,7 +2,6 @@
  *
  * The dataset names under /layers and /final are a contract: users' scripts read them.
  * Add new things beside them; never rename or change the sign of an existing one. */
-#define _POSIX_C_SOURCE 200809L
 
 #include "reelsim/output.h"
 

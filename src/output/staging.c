@@ -1,5 +1,4 @@
 /* Temporary name, target checks and the final rename; see staging.h. */
-#define _POSIX_C_SOURCE 200809L
 
 #include "output/staging.h"
 

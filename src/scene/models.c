@@ -6,7 +6,6 @@
  * A name ending in .yaml/.yml or holding a '/' is a path (relative to the scene's
  * directory). The model file's lines stay attached to its values, so an error in it
  * names the model file, not the scene. */
-#define _POSIX_C_SOURCE 200809L /* strtok_r, stat */
 
 #include <stdio.h>
 #include <stdlib.h>

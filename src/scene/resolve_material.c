@@ -1,6 +1,5 @@
 /* The material from its typed form: sheet constants and the radial modulus law. Errors
  * point into the model file the material came from (or the scene, when inline). */
-#define _POSIX_C_SOURCE 200809L /* strtok_r, stat */
 
 #include <ctype.h>
 #include <math.h>

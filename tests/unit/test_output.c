@@ -1,6 +1,5 @@
 /* The HDF5 output: what rs_output_write writes is what the HDF5 C API reads back, bit
  * for bit, and a failed write leaves neither a file nor a temporary behind. */
-#define _POSIX_C_SOURCE 200809L
 
 #include <dirent.h>
 #include <errno.h>
