@@ -1,0 +1,232 @@
+/* Influence kernels of eq. (19) from the Fourier series of the mode compliances.
+ *
+ * For a basis function with cosine coefficients a_n (on the circle; t = offset / R):
+ *   pu(t) = R/A [a_0 F0_11 + sum a_n F11/n cos nt]            (m/Pa)
+ *   pe(t) = 1/A [-a_0 F0_11 + sum a_n (F21 - F11/n) cos nt]   (1/Pa)
+ *   qu(t) = R/A [sum a_n (-F12/n) sin nt]
+ *   qe(t) = 1/A [sum a_n (F12/n - F22) sin nt]
+ * (F = n C A/R, C the mode compliance; eps = (v_r + dv_t/dtheta)/R.) The accelerated
+ * series subtracts from each multiplier m(n) its expansion e0 + e1/n + e2/n^2 and adds
+ * e0 S0 + e1 S1 + e2 S2 back, S_k the closed-form sums of sums.c. */
+#include "cylinder/internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { KPU, KPE, KQU, KQE, NK };
+
+void rs_kernels_free(rs_kernels *k)
+{
+  if (!k) return;
+  free(k->pu);
+  free(k->pe);
+  free(k->qu);
+  free(k->qe);
+  memset(k, 0, sizeof *k);
+}
+
+static rs_status ensure_capacity(rs_kernels *k, int n)
+{
+  if (k->capacity >= n && k->pu && k->pe && k->qu && k->qe) return RS_OK;
+  free(k->pu);
+  free(k->pe);
+  free(k->qu);
+  free(k->qe);
+  k->pu = calloc((size_t)n, sizeof(double));
+  k->pe = calloc((size_t)n, sizeof(double));
+  k->qu = calloc((size_t)n, sizeof(double));
+  k->qe = calloc((size_t)n, sizeof(double));
+  if (!k->pu || !k->pe || !k->qu || !k->qe) {
+    rs_kernels_free(k);
+    return RS_ERROR(RS_ERR_MEMORY, "kernels of %d values", n);
+  }
+  k->capacity = n;
+  return RS_OK;
+}
+
+/* Expansion coefficients e[kernel][0..2] of the multipliers, from F ~ c0 + c1/n + c2/n^2. */
+static void multiplier_expansion(const rs_cylinder *c, double e[NK][3])
+{
+  const double(*F)[2][2] = c->Fexp;
+  e[KPU][0] = 0;
+  e[KPU][1] = F[0][0][0];
+  e[KPU][2] = F[1][0][0];
+  e[KPE][0] = F[0][1][0];
+  e[KPE][1] = F[1][1][0] - F[0][0][0];
+  e[KPE][2] = F[2][1][0] - F[1][0][0];
+  e[KQU][0] = 0;
+  e[KQU][1] = -F[0][0][1];
+  e[KQU][2] = -F[1][0][1];
+  e[KQE][0] = -F[0][1][1];
+  e[KQE][1] = F[0][0][1] - F[1][1][1];
+  e[KQE][2] = F[1][0][1] - F[2][1][1];
+}
+
+typedef struct work {
+  int K;
+  const double *t;
+  double *c, *s, *ct, *st; /* cos, sin of n t and of t */
+  double *acc[NK];         /* partial sums */
+} work;
+
+/* Adds modes n1..n2 to the partial sums. cos/sin(n t) advance by rotation, restarted from
+ * the library functions every 256 modes (error growth stays ~ 256 eps). */
+static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int accel,
+                      const double e[NK][3], long n1, long n2, work *wk)
+{
+  const int K = wk->K;
+  double *c = wk->c, *s = wk->s, *ct = wk->ct, *st = wk->st;
+  double *apu = wk->acc[KPU], *ape = wk->acc[KPE], *aqu = wk->acc[KQU], *aqe = wk->acc[KQE];
+  for (long n = n1; n <= n2; ++n) {
+    if ((n - n1) % 256 == 0)
+      for (int k = 0; k < K; ++k) {
+        c[k] = cos((double)n * wk->t[k]);
+        s[k] = sin((double)n * wk->t[k]);
+      }
+    const double(*F)[2] = cyl->cache[n].F;
+    double in = 1.0 / (double)n, an = rs_cyl_basis_coef(basis, w, n);
+    double mpu = F[0][0] * in, mpe = F[1][0] - F[0][0] * in;
+    double mqu = -F[0][1] * in, mqe = F[0][1] * in - F[1][1];
+    if (accel) {
+      mpu -= e[KPU][0] + in * (e[KPU][1] + in * e[KPU][2]);
+      mpe -= e[KPE][0] + in * (e[KPE][1] + in * e[KPE][2]);
+      mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
+      mqe -= e[KQE][0] + in * (e[KQE][1] + in * e[KQE][2]);
+    }
+    mpu *= an;
+    mpe *= an;
+    mqu *= an;
+    mqe *= an;
+    for (int k = 0; k < K; ++k) {
+      double ck = c[k], sk = s[k];
+      apu[k] += mpu * ck;
+      ape[k] += mpe * ck;
+      aqu[k] += mqu * sk;
+      aqe[k] += mqe * sk;
+      c[k] = ck * ct[k] - sk * st[k];
+      s[k] = sk * ct[k] + ck * st[k];
+    }
+  }
+}
+
+rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, double shift, int M,
+                              unsigned what, const rs_series_opts *opts, rs_kernels *out)
+{
+  if (!cyl || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  if (basis != RS_BASIS_HAT && basis != RS_BASIS_BOX)
+    return RS_ERROR(RS_ERR_INPUT, "unknown basis %d", (int)basis);
+  if (M < 2 || M > 1000000) return RS_ERROR(RS_ERR_INPUT, "M = %d out of range", M);
+  if (!(dx > 0) || !isfinite(shift)) return RS_ERROR(RS_ERR_INPUT, "dx = %g, shift = %g", dx, shift);
+  double w = basis == RS_BASIS_HAT ? dx / cyl->R : 0.5 * dx / cyl->R;
+  if (w > 0.25 * RS_PI)
+    return RS_ERROR(RS_ERR_INPUT, "element too coarse: dx/R = %g (basis half-width %g rad > pi/4)",
+                    dx / cyl->R, w);
+  rs_series_opts o = {0, 1e-6, 1L << 22, 1};
+  if (opts) o = *opts;
+  if (o.tol <= 0) o.tol = 1e-6;
+  if (o.max_terms <= 0) o.max_terms = 1L << 22;
+  what &= RS_KERNEL_ALL;
+  if (!what) what = RS_KERNEL_ALL;
+
+  const int K = 2 * M - 1;
+  rs_status st = ensure_capacity(out, K);
+  if (st) return st;
+  double *mem = calloc((size_t)K * (5 + 2 * NK), sizeof(double));
+  if (!mem) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
+  double *t = mem, *closed[NK], *prev[NK];
+  work wk = {K, t, mem + K, mem + 2 * K, mem + 3 * K, mem + 4 * K, {0}};
+  for (int j = 0; j < NK; ++j) {
+    wk.acc[j] = mem + (5 + j) * K;
+    closed[j] = mem + (5 + NK + j) * K;
+  }
+  for (int j = 0; j < NK; ++j) prev[j] = NULL;
+  double *prevmem = NULL;
+
+  double e[NK][3];
+  multiplier_expansion(cyl, e);
+  for (int k = 0; k < K; ++k) {
+    t[k] = remainder(((double)(k - (M - 1)) * dx + shift) / cyl->R, 2 * RS_PI);
+    wk.ct[k] = cos(t[k]);
+    wk.st[k] = sin(t[k]);
+    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(t[k]) - w) < 1e-10 * w) {
+      free(mem);
+      return RS_ERROR(RS_ERR_INPUT, "shear-to-strain kernel of a box is log-singular at its "
+                      "edge (offset %d dx %+g m)", k - (M - 1), shift);
+    }
+    if (o.accelerate) {
+      double S[6];
+      rs_cyl_closed_sums(basis, w, t[k], S);
+      closed[KPU][k] = e[KPU][1] * S[1] + e[KPU][2] * S[2];
+      closed[KPE][k] = e[KPE][0] * S[0] + e[KPE][1] * S[1] + e[KPE][2] * S[2];
+      closed[KQU][k] = e[KQU][1] * S[4] + e[KQU][2] * S[5];
+      closed[KQE][k] = e[KQE][0] * S[3] + e[KQE][1] * S[4] + e[KQE][2] * S[5];
+    }
+  }
+
+  /* n = 0: uniform pressure; uniform shear (torsion) gives no w and no eps */
+  st = rs_cyl_cache_reserve(cyl, 0);
+  if (st) goto done;
+  double a0 = rs_cyl_basis_coef(basis, w, 0), F0 = cyl->cache[0].F[0][0];
+  for (int k = 0; k < K; ++k) {
+    closed[KPU][k] += a0 * F0;
+    closed[KPE][k] -= a0 * F0;
+  }
+
+  long N = o.terms > 0 ? o.terms : 64, done_to = 0;
+  unsigned bit[NK] = {RS_KERNEL_PU, RS_KERNEL_PE, RS_KERNEL_QU, RS_KERNEL_QE};
+  for (;;) {
+    st = rs_cyl_cache_reserve(cyl, N);
+    if (st) goto done;
+    add_modes(cyl, basis, w, o.accelerate, e, done_to + 1, N, &wk);
+    done_to = N;
+    if (o.terms > 0) break;
+    /* doubling: converged when the last doubling moved each kernel < tol/4 of its max */
+    if (prevmem) {
+      int ok = 1;
+      for (int j = 0; j < NK && ok; ++j) {
+        if (!(what & bit[j])) continue;
+        double mx = 0, dmax = 0;
+        for (int k = 0; k < K; ++k) {
+          double v = closed[j][k] + wk.acc[j][k];
+          mx = fmax(mx, fabs(v));
+          dmax = fmax(dmax, fabs(v - prev[j][k]));
+        }
+        if (!(dmax <= 0.25 * o.tol * mx)) ok = 0;
+      }
+      if (ok) break;
+    } else {
+      prevmem = malloc((size_t)K * NK * sizeof(double));
+      if (!prevmem) {
+        st = RS_ERROR(RS_ERR_MEMORY, "kernel work space");
+        goto done;
+      }
+      for (int j = 0; j < NK; ++j) prev[j] = prevmem + (size_t)j * K;
+    }
+    for (int j = 0; j < NK; ++j)
+      for (int k = 0; k < K; ++k) prev[j][k] = closed[j][k] + wk.acc[j][k];
+    if (2 * N > o.max_terms) {
+      st = RS_ERROR(RS_ERR_SOLVER, "kernel series not converged to %g with %ld terms "
+                    "(max_terms %ld)", o.tol, N, o.max_terms);
+      goto done;
+    }
+    N *= 2;
+  }
+
+  double fu = cyl->R / cyl->A_ref, fe = 1.0 / cyl->A_ref;
+  double *dst[NK] = {out->pu, out->pe, out->qu, out->qe};
+  double fac[NK] = {fu, fe, fu, fe};
+  for (int j = 0; j < NK; ++j) {
+    if (!(what & bit[j])) continue;
+    for (int k = 0; k < K; ++k) dst[j][k] = fac[j] * (closed[j][k] + wk.acc[j][k]);
+  }
+  out->M = M;
+  out->basis = basis;
+  out->dx = dx;
+  out->shift = shift;
+  out->terms = done_to;
+done:
+  free(prevmem);
+  free(mem);
+  return st;
+}
