@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
 # Quick start, command 2: set up, build, and pass the whole test suite (ctest).
-# .ci/run runs exactly this.
+# .ci/run runs exactly this. Three passes:
+#   1. the normal build (build/): every test, plus the unit tests again under valgrind;
+#   2. an AddressSanitizer + UBSan build (build-asan/): every test, any report fails it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cd build
-ctest --output-on-failure -j "$(nproc)"
+echo "== tests (build/) =="
+(cd build && ctest --output-on-failure -j "$(nproc)")
+
+echo "== tests under AddressSanitizer + UBSan (build-asan/) =="
+RS_BUILD_DIR=build-asan RS_BUILD_TYPE=Debug \
+  RS_CMAKE_ARGS="-DREELSIM_SANITIZE=ON -DREELSIM_BENCH=OFF" bash scripts/setup.sh
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+(cd build-asan && ctest --output-on-failure -j "$(nproc)")

@@ -87,7 +87,8 @@ typedef struct rs_scene {
 rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, rs_scene **out);
 void rs_scene_destroy(rs_scene **scene);
 
-/* Writes the human-readable list of active effects, one per line ("  - elastic core ..."). */
+/* Writes the human-readable list of active effects, one per line
+ * ("  - core: elastic (E_c = 1e9 Pa), radius 76.2 mm", "  - nip: none (T0 = web tension)"). */
 void rs_scene_print_effects(const rs_scene *scene, FILE *out);
 
 #ifdef __cplusplus

@@ -132,6 +132,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->sigma_r);
   free(roll->sigma_theta);
   free(roll->g2);
+  free(roll->lg2);
   free(roll->w);
   free(roll->L);
   free(roll->xnode);
@@ -181,7 +182,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->L = calloc(cap + 1, sizeof(double));
   roll->xnode = calloc(cap + 1, sizeof(double));
   roll->block_share = calloc(cap + 1, sizeof(double));
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->w || !roll->L || !roll->xnode ||
+  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->w || !roll->L || !roll->xnode ||
       !roll->block_share) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
@@ -265,6 +266,21 @@ static rs_status roll_integrate(rs_roll *roll, int k)
                       exp(tret), exp(xs),
                       roll->cvode_msg[0] ? roll->cvode_msg : CVodeGetReturnFlagName(flag));
     if (xn[next] > tret) continue; /* no node inside this step */
+    /* Read the nodes inside this step off its interpolating polynomial. Few nodes: ask
+     * CVODE per node. Many (the long interior steps): take the polynomial's Taylor
+     * coefficients once (q + 1 calls) and evaluate each node by Horner. Same polynomial. */
+    int last = next;
+    while (last < k && xn[last + 1] <= tret) ++last;
+    if (last - next < 3) {
+      for (; next <= last; ++next) {
+        if (CVodeGetDky(roll->cvode, xn[next], 0, roll->dky[0]) != CV_SUCCESS)
+          return RS_ERROR(RS_ERR_INTERNAL, "CVodeGetDky failed at r = %.9g m", exp(xn[next]));
+        const sunrealtype *v = N_VGetArrayPointer(roll->dky[0]);
+        roll->w[next] = v[0];
+        roll->L[next] = v[1];
+      }
+      continue;
+    }
     int q = 0;
     CVodeGetLastOrder(roll->cvode, &q);
     /* Taylor coefficients of the step's interpolant at x_n: c_d = y^(d)(x_n) / d! */
@@ -277,7 +293,7 @@ static rs_status roll_integrate(rs_roll *roll, int k)
       cw[d] = dk[0] / fact;
       cL[d] = dk[1] / fact;
     }
-    for (; next <= k && xn[next] <= tret; ++next) {
+    for (; next <= last; ++next) {
       double dx = xn[next] - tret, wv = cw[q], Lv = cL[q];
       for (int d = q - 1; d >= 0; --d) {
         wv = wv * dx + cw[d];

@@ -1,0 +1,40 @@
+/* The reelsim command line: argument parsing, the commands, and exit statuses.
+ * Exit status: 0 ok, 2 bad input or usage, 3 solver failure, 130 interrupted (SIGINT),
+ * 1 anything else (see docs/cli.md). */
+#ifndef RS_CLI_H
+#define RS_CLI_H
+
+#include <stdio.h>
+
+#include "reelsim/status.h"
+
+enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER = 3,
+       CLI_EXIT_INTERRUPTED = 130 };
+
+typedef struct cli_args {
+  const char *cmd;      /* "run" or "check" */
+  const char *scene;
+  const char *output;   /* -o FILE, or NULL */
+  int quiet;
+  int n_sets;           /* --set key.path=value, in order; -o adds output.file=FILE last */
+  const char **sets;
+  char *owned;          /* the "output.file=FILE" made from -o */
+} cli_args;
+
+/* Parses the options after the command name (argv[first..]). Returns -1 when the
+ * command should run, otherwise the exit status (0 after --help, 2 on bad usage). */
+int cli_parse(int argc, char **argv, int first, cli_args *a);
+void cli_args_free(cli_args *a);
+
+int cli_check(const cli_args *a);
+int cli_run(const cli_args *a);
+
+/* Help: the general text (cmd NULL) or one command's. 0 if cmd is known, else 2. */
+int cli_usage(FILE *out, const char *cmd);
+
+/* "reelsim: ..." on stderr; returns `code`. */
+int cli_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Prints the recorded library error and returns the exit status for it. */
+int cli_fail_status(rs_status st);
+
+#endif

@@ -1,0 +1,21 @@
+/* reelsim check: load, check, and show a scene without winding it. */
+#include <stdio.h>
+
+#include "cli/cli.h"
+#include "reelsim/scene.h"
+
+int cli_check(const cli_args *a)
+{
+  rs_scene *scene = NULL;
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
+  if (st != RS_OK) return cli_fail_status(st);
+  if (!a->quiet) {
+    printf("%s\n", scene->title);
+    printf("scene %s: ok\n", scene->path);
+    printf("active effects:\n");
+    rs_scene_print_effects(scene, stdout);
+    printf("\nresolved scene:\n%s", scene->resolved_text);
+  }
+  rs_scene_destroy(&scene);
+  return CLI_EXIT_OK;
+}

@@ -1,0 +1,78 @@
+/* Defaults for optional keys, written into the tree so that the resolved scene (stored
+ * with every result) shows every value the run used. docs/scenes.md lists them. */
+#include <stdio.h>
+#include <string.h>
+
+#include "scene/scene_internal.h"
+
+static rs_status put_default(yn *map, const char *key, const char *text)
+{
+  char path[512];
+  if (yn_map_index(map, key) >= 0) return RS_OK;
+  snprintf(path, sizeof path, "%s%s%s", map->path, map->path[0] ? "." : "", key);
+  yn *n = yn_new_scalar(text, map->file, 0, path);
+  if (!n) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  rs_status st = yn_set_origin(n, "default");
+  if (st != RS_OK) {
+    yn_free(n);
+    return st;
+  }
+  return yn_map_put(map, key, n);
+}
+
+static yn *ensure_map(yn *root, const char *key)
+{
+  yn *m = yn_map_get(root, key);
+  if (m) return m;
+  m = yn_new_map(root->file, 0, key);
+  if (!m || yn_set_origin(m, "default") != RS_OK || yn_map_put(root, key, m) != RS_OK) return NULL;
+  return m;
+}
+
+/* "cases/newsprint-rider.yaml" -> "newsprint-rider" */
+static void stem(const char *path, char *out, size_t size)
+{
+  const char *base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  const char *dot = strrchr(base, '.');
+  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+  snprintf(out, size, "%.*s", (int)n, base);
+}
+
+rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
+{
+  char name[RS_PATH_MAX], file[RS_PATH_MAX + 8];
+  rs_status st;
+  stem(scene->path, name, sizeof name);
+  snprintf(file, sizeof file, "%s.h5", name);
+
+  if ((st = put_default(root, "title", name)) != RS_OK) return st;
+
+  yn *mat = yn_map_get(root, "material");
+  if ((st = put_default(mat, "name", "inline")) != RS_OK) return st;
+  if ((st = put_default(mat, "nu_rtheta", "0")) != RS_OK) return st;
+
+  yn *num = ensure_map(root, "numerics");
+  yn *out = num ? ensure_map(root, "output") : NULL;
+  if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if ((st = put_default(num, "layers_per_step", "1")) != RS_OK ||
+      (st = put_default(num, "rtol", "1e-6")) != RS_OK ||
+      (st = put_default(num, "atol", "0")) != RS_OK ||
+      (st = put_default(num, "max_steps", "0")) != RS_OK)
+    return st;
+  if ((st = put_default(out, "file", file)) != RS_OK ||
+      (st = put_default(out, "history_every", "0")) != RS_OK)
+    return st;
+
+  yn *nip = yn_map_get(root, "nip");
+  if (nip && strcmp(yn_map_get(nip, "model")->text, "none") != 0) {
+    if ((st = put_default(nip, "winder", "center")) != RS_OK ||
+        (st = put_default(nip, "nodes", "64")) != RS_OK ||
+        (st = put_default(nip, "terms", "0")) != RS_OK)
+      return st;
+    if (strcmp(yn_map_get(nip, "winder")->text, "center-surface") == 0 &&
+        (st = put_default(nip, "torque_share", "0.5")) != RS_OK)
+      return st;
+  }
+  return RS_OK;
+}

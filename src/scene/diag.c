@@ -1,0 +1,56 @@
+/* Locating range-check errors: a dotted scene path -> the node the user wrote. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "scene/scene_internal.h"
+
+int ys_has(const yn *root, const char *path) { return yn_get(root, path) != NULL; }
+
+rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
+{
+  char msg[1536], trimmed[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+
+  const yn *node = yn_get(root, path);
+  if (node) return yn_error(node, "%s", msg);
+  /* absent key: report at the nearest parent that is there, under the full key name */
+  snprintf(trimmed, sizeof trimmed, "%s", path);
+  for (;;) {
+    char *cut = strrchr(trimmed, '.');
+    char *br = strrchr(trimmed, '[');
+    if (br && (!cut || br > cut)) cut = br;
+    if (!cut) {
+      node = root;
+      break;
+    }
+    *cut = '\0';
+    node = yn_get(root, trimmed);
+    if (node) break;
+  }
+  const char *rest = path + strlen(trimmed);
+  if (*rest == '.') ++rest;
+  return yn_error_key(node, rest, "%s", msg);
+}
+
+/* %g without the exponent's plus sign and leading zeros: 1e9, 7e-5, 0.19. */
+void ys_fmt(char *buf, size_t size, double v)
+{
+  char tmp[64];
+  snprintf(tmp, sizeof tmp, "%g", v);
+  char *e = strchr(tmp, 'e');
+  if (!e) {
+    snprintf(buf, size, "%s", tmp);
+    return;
+  }
+  char mant[64];
+  snprintf(mant, sizeof mant, "%.*s", (int)(e - tmp), tmp);
+  const char *x = e + 1;
+  int neg = *x == '-';
+  if (*x == '+' || *x == '-') ++x;
+  while (*x == '0' && x[1]) ++x;
+  snprintf(buf, size, "%se%s%s", mant, neg ? "-" : "", x);
+}

@@ -1,0 +1,130 @@
+/* What a scene switches on, in words: one line per effect, for `reelsim check/run`. */
+#include <math.h>
+#include <stdio.h>
+
+#include "reelsim/core.h"
+#include "reelsim/recipe.h"
+#include "scene/scene_internal.h"
+
+typedef char num_t[48];
+
+static const char *f(num_t buf, double v)
+{
+  ys_fmt(buf, sizeof(num_t), v);
+  return buf;
+}
+
+static void print_recipe(FILE *out, const char *what, const rs_recipe *rc)
+{
+  num_t a, b, c;
+  switch (rc->law) {
+  case RS_RECIPE_CONSTANT: fprintf(out, "  - %s: constant %s N/m\n", what, f(a, rc->start)); return;
+  case RS_RECIPE_LINEAR:
+    fprintf(out, "  - %s: linear taper %s -> %s N/m\n", what, f(a, rc->start), f(b, rc->end));
+    return;
+  case RS_RECIPE_HYPERBOLIC:
+    fprintf(out, "  - %s: hyperbolic taper %s -> %s N/m (k = %s)\n", what, f(a, rc->start),
+            f(b, rs_recipe_eval(rc, rc->r1)), f(c, rc->k));
+    return;
+  case RS_RECIPE_TORQUE:
+    fprintf(out, "  - %s: constant torque, %s N/m at the core -> %s N/m at the outside\n", what,
+            f(a, rc->start), f(b, rs_recipe_eval(rc, rc->r1)));
+    return;
+  case RS_RECIPE_TABLE: {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < rc->n_points; ++i) {
+      lo = fmin(lo, rc->value[i]);
+      hi = fmax(hi, rc->value[i]);
+    }
+    fprintf(out, "  - %s: table of %d points, %s .. %s N/m\n", what, rc->n_points, f(a, lo),
+            f(b, hi));
+    return;
+  }
+  }
+}
+
+static void print_radial(FILE *out, const rs_radial_law *law)
+{
+  num_t a, b;
+  switch (law->law) {
+  case RS_RADIAL_LINEAR: fprintf(out, "  - radial law: linear (E_r = %s Pa)\n", f(a, law->E_r)); return;
+  case RS_RADIAL_PFEIFFER:
+    fprintf(out, "  - radial law: pfeiffer (K1 = %s Pa, K2 = %s)\n", f(a, law->K1), f(b, law->K2));
+    return;
+  case RS_RADIAL_HAKIEL:
+    fprintf(out, "  - radial law: hakiel (E_r = ");
+    for (int i = 0; i < law->n_coef; ++i) {
+      fprintf(out, "%s%s", i ? " + " : "", f(a, law->C[i]));
+      if (i == 1) fprintf(out, " P");
+      if (i > 1) fprintf(out, " P^%d", i);
+    }
+    fprintf(out, " Pa)\n");
+    return;
+  case RS_RADIAL_TABLE:
+    fprintf(out, "  - radial law: table of %d points (E_r %s .. %s Pa, monotone cubic)\n",
+            law->n_points, f(a, law->E[0]), f(b, law->E[law->n_points - 1]));
+    return;
+  }
+}
+
+static void print_core(FILE *out, const rs_core *c)
+{
+  num_t a, b, d, e, g;
+  f(a, c->radius * 1e3);
+  switch (c->kind) {
+  case RS_CORE_RIGID: fprintf(out, "  - core: rigid (no core compliance), radius %s mm\n", a); return;
+  case RS_CORE_ELASTIC:
+    fprintf(out, "  - core: elastic (E_c = %s Pa), radius %s mm\n", f(b, c->stiffness), a);
+    return;
+  case RS_CORE_TUBE:
+    fprintf(out, "  - core: tube (E = %s Pa, nu = %s, bore %s mm; E_c = %s Pa), radius %s mm\n",
+            f(b, c->modulus), f(d, c->poisson), f(e, c->bore * 1e3), f(g, rs_core_stiffness(c)),
+            a);
+    return;
+  }
+}
+
+static const char *winder_name(rs_winder_kind w)
+{
+  switch (w) {
+  case RS_WINDER_CENTER: return "center";
+  case RS_WINDER_SURFACE: return "surface";
+  case RS_WINDER_CENTER_SURFACE: return "center-surface";
+  }
+  return "?";
+}
+
+void rs_scene_print_effects(const rs_scene *s, FILE *out)
+{
+  num_t a, b, c;
+  const rs_material *m = &s->material;
+  fprintf(out, "  - material: %s from %s (caliper %s um, E_theta = %s Pa, nu_rtheta = %s)\n",
+          m->name, s->material_source, f(a, m->caliper * 1e6), f(b, m->E_theta),
+          f(c, m->nu_rtheta));
+  print_radial(out, &m->radial);
+  print_core(out, &s->core);
+  fprintf(out, "  - roll: %s -> %s mm, %d layers", f(a, s->core.radius * 1e3),
+          f(b, s->final_radius * 1e3), s->n_layers);
+  if (s->web_length > 0.0) fprintf(out, " (web length %s m)", f(c, s->web_length));
+  fprintf(out, "\n");
+  print_recipe(out, "tension", &s->tension);
+  switch (s->nip.model) {
+  case RS_NIP_NONE: fprintf(out, "  - nip: none (T0 = web tension)\n"); break;
+  case RS_NIP_FRICTION:
+    fprintf(out, "  - nip: friction (T0 = T + %s N)\n", f(a, s->nip.mu_roll));
+    print_recipe(out, "nip load N", &s->nip.load);
+    break;
+  case RS_NIP_CONTACT:
+    fprintf(out,
+            "  - nip: contact model (%s winder, mu roll %s, mu drum %s, drum radius %s mm, "
+            "%d nodes)\n",
+            winder_name(s->nip.winder), f(a, s->nip.mu_roll), f(b, s->nip.mu_drum),
+            f(c, s->nip.drum.radius * 1e3), s->nip.nodes);
+    print_recipe(out, "nip load", &s->nip.load);
+    break;
+  }
+  fprintf(out, "  - numerics: %d layer%s per step, rtol %s", s->numerics.layers_per_step,
+          s->numerics.layers_per_step == 1 ? "" : "s", f(a, s->numerics.rtol));
+  if (s->numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->numerics.atol));
+  fprintf(out, "\n");
+}

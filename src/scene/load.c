@@ -1,0 +1,134 @@
+/* rs_scene_load: the loader's steps in order (see scene_internal.h). */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reelsim_version.h"
+#include "scene/scene_internal.h"
+
+typedef struct logbuf {
+  char text[2048];
+  size_t len;
+} logbuf;
+
+/* libcyaml's log, kept for the error record instead of going to stderr */
+static void cy_log(cyaml_log_t level, void *ctx, const char *fmt, va_list args)
+{
+  logbuf *b = ctx;
+  (void)level;
+  if (b->len + 1 >= sizeof b->text) return;
+  int n = vsnprintf(b->text + b->len, sizeof b->text - b->len, fmt, args);
+  if (n < 0) return;
+  b->len += (size_t)n;
+  if (b->len >= sizeof b->text) b->len = sizeof b->text - 1;
+  /* one line: its messages end in newlines */
+  for (char *p = b->text; *p; ++p)
+    if (*p == '\n') *p = ' ';
+}
+
+static rs_status cyaml_load(const char *text, const char *path, ys_scene **out)
+{
+  logbuf log = {.len = 0};
+  cyaml_config_t cfg = {.log_fn = cy_log, .log_ctx = &log, .mem_fn = cyaml_mem,
+                        .log_level = CYAML_LOG_ERROR, .flags = CYAML_CFG_NO_ALIAS};
+  log.text[0] = '\0';
+  cyaml_err_t err = cyaml_load_data((const uint8_t *)text, strlen(text), &cfg, &ys_scene_schema,
+                                    (cyaml_data_t **)out, NULL);
+  if (err == CYAML_OK) return RS_OK;
+  *out = NULL;
+  if (err == CYAML_ERR_OOM) return RS_ERROR(RS_ERR_MEMORY, "out of memory loading %s", path);
+  /* the tree checks walk this same schema, so this means they are out of step with it */
+  return RS_ERROR(RS_ERR_INTERNAL, "%s: libcyaml rejected the checked scene: %s (%s)", path,
+                  cyaml_strerror(err), log.text);
+}
+
+static void cyaml_release(ys_scene *y)
+{
+  cyaml_config_t cfg = {.mem_fn = cyaml_mem, .log_level = CYAML_LOG_ERROR};
+  if (y) cyaml_free(&cfg, &ys_scene_schema, y, 0);
+}
+
+/* The resolved scene: a header of comments (what it came from, derived values), then the
+ * scene with the material inlined, shorthands expanded, defaults and overrides applied.
+ * It loads again as a scene and gives the same run. */
+static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets, const char *body)
+{
+  char head[8192], num[3][64];
+  size_t len = 0;
+#define ADD(...)                                                                         \
+  do {                                                                                   \
+    int w_ = snprintf(head + len, sizeof head - len, __VA_ARGS__);                       \
+    if (w_ > 0) len = (size_t)w_ < sizeof head - len ? len + (size_t)w_ : sizeof head - 1; \
+  } while (0)
+  ADD("# reelsim %s resolved scene (material inlined, defaults filled, overrides applied)\n",
+      RS_VERSION_STRING);
+  ADD("# scene: %s\n# material: %s\n", s->path, s->material_source);
+  for (int i = 0; i < n_sets; ++i) ADD("# --set %s\n", sets[i]);
+  ys_fmt(num[0], sizeof num[0], s->final_radius);
+  ys_fmt(num[1], sizeof num[1], s->material.caliper);
+  ADD("# derived: final radius %s m, %d layers of caliper %s m", num[0], s->n_layers, num[1]);
+  if (s->web_length > 0.0) {
+    ys_fmt(num[2], sizeof num[2], s->web_length);
+    ADD(" (from web length %s m)", num[2]);
+  }
+  ADD("\n");
+  if (s->tension.law == RS_RECIPE_HYPERBOLIC) {
+    ys_fmt(num[0], sizeof num[0], s->tension.k);
+    ys_fmt(num[1], sizeof num[1], s->tension.end);
+    ADD("# derived: tension taper k = %s, end = %s N/m\n", num[0], num[1]);
+  }
+#undef ADD
+  size_t blen = strlen(body);
+  s->resolved_text = malloc(len + blen + 1);
+  if (!s->resolved_text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  memcpy(s->resolved_text, head, len);
+  memcpy(s->resolved_text + len, body, blen + 1);
+  return RS_OK;
+}
+
+rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, rs_scene **out)
+{
+  if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: out is NULL");
+  *out = NULL;
+  if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no scene file given");
+  if (strlen(path) >= RS_PATH_MAX) return RS_ERROR(RS_ERR_INPUT, "%.64s...: path too long", path);
+  if (n_sets > 0 && !sets) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: sets is NULL");
+
+  rs_scene *s = calloc(1, sizeof *s);
+  if (!s) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  snprintf(s->path, sizeof s->path, "%s", path);
+
+  yn *root = NULL;
+  ys_scene *y = NULL;
+  char *body = NULL;
+  rs_status st = yn_parse_file(s->path, &root);
+  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 0);
+  if (st == RS_OK) st = ys_inline_material(root, s);
+  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 1);
+  if (st == RS_OK) st = ys_normalize(root);
+  if (st == RS_OK) st = ys_typecheck(root, &ys_scene_schema);
+  if (st == RS_OK) st = ys_fill_defaults(root, s);
+  if (st == RS_OK) st = yn_emit(root, &body);
+  if (st == RS_OK) st = cyaml_load(body, s->path, &y);
+  if (st == RS_OK) st = ys_resolve(root, y, s);
+  if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);
+
+  cyaml_release(y);
+  free(body);
+  yn_free(root);
+  if (st != RS_OK) {
+    rs_scene_destroy(&s);
+    return st;
+  }
+  *out = s;
+  return RS_OK;
+}
+
+void rs_scene_destroy(rs_scene **scene)
+{
+  if (!scene || !*scene) return;
+  free((*scene)->resolved_text);
+  free(*scene);
+  *scene = NULL;
+}

@@ -1,0 +1,82 @@
+/* Shorthands rewritten into the one form the schema knows:
+ *   tension: 350                 -> tension: {law: constant, value: 350}
+ *   tension: {table: [...]}      -> tension: {law: table, table: [...]}
+ * (the same for nip.load). The new nodes keep the line and origin of what the user
+ * wrote, so `tension: abc` is still reported as winding.tension at its line. */
+#include <string.h>
+
+#include "scene/scene_internal.h"
+
+static yn *scalar_like(const yn *like, const char *text, const char *path)
+{
+  yn *n = yn_new_scalar(text, like->file, like->line, path);
+  if (n && like->origin && yn_set_origin(n, like->origin) != RS_OK) {
+    yn_free(n);
+    return NULL;
+  }
+  return n;
+}
+
+static rs_status normalize_recipe(yn *root, const char *parent_path, const char *key)
+{
+  char path[256];
+  yn *parent = yn_get(root, parent_path);
+  int i = yn_map_index(parent, key);
+  if (i < 0) return RS_OK;
+  yn *node = parent->kids[i];
+  snprintf(path, sizeof path, "%s.%s.law", parent_path, key);
+  if (yn_is_empty(node))
+    return yn_error(node, "missing value (a number in N/m, or a recipe such as "
+                          "{law: linear, start: 350, end: 280})");
+  if (node->kind == YN_SCALAR) {
+    yn *map = yn_new_map(node->file, node->line, node->path);
+    yn *law = scalar_like(node, "constant", path);
+    if (!map || !law) {
+      yn_free(map);
+      yn_free(law);
+      return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+    }
+    if (node->origin && yn_set_origin(map, node->origin) != RS_OK) {
+      yn_free(map);
+      yn_free(law);
+      return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+    }
+    rs_status st = yn_map_put(map, "law", law);
+    if (st != RS_OK) {
+      yn_free(map);
+      return st;
+    }
+    /* move the scalar itself under `value`: it keeps its path, line and origin */
+    parent->kids[i] = map;
+    st = yn_map_put(map, "value", node);
+    return st;
+  }
+  if (node->kind == YN_MAP && !yn_map_get(node, "law") &&
+      (yn_map_get(node, "table") || yn_map_get(node, "points"))) {
+    yn *law = scalar_like(node, "table", path);
+    if (!law) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+    rs_status st = yn_map_put(node, "law", law);
+    if (st != RS_OK) return st;
+    /* law first, as people write it */
+    for (int j = node->n - 1; j > 0; --j) {
+      char *k = node->keys[j];
+      yn *v = node->kids[j];
+      node->keys[j] = node->keys[j - 1];
+      node->kids[j] = node->kids[j - 1];
+      node->keys[j - 1] = k;
+      node->kids[j - 1] = v;
+    }
+    return RS_OK;
+  }
+  return RS_OK;
+}
+
+rs_status ys_normalize(yn *root)
+{
+  rs_status st = RS_OK;
+  if (yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
+    st = normalize_recipe(root, "winding", "tension");
+  if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
+    st = normalize_recipe(root, "nip", "load");
+  return st;
+}

@@ -1,0 +1,105 @@
+/* --set key.path=value: replaces one scalar of the scene before anything is checked.
+ *
+ * A key the file leaves out but the schema knows (numerics.layers_per_step with no
+ * numerics section) is created; a key the schema does not know, a path through a single
+ * value, or a path that ends on a whole mapping or list is refused. The value is checked
+ * later with everything else, and errors about it name the --set that wrote it. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/scene_internal.h"
+
+/* dst = a + sep + b, cut to size (paths here are bounded by the --set text anyway) */
+static void join3(char *dst, size_t size, const char *a, const char *sep, const char *b)
+{
+  size_t len = 0;
+  const char *parts[3] = {a, sep, b};
+  for (int i = 0; i < 3; ++i)
+    for (const char *p = parts[i]; *p && len + 1 < size; ++p) dst[len++] = *p;
+  dst[len] = '\0';
+}
+
+static int is_scalar_schema(const cyaml_schema_value_t *s)
+{
+  return s->type != CYAML_MAPPING && s->type != CYAML_SEQUENCE &&
+         s->type != CYAML_SEQUENCE_FIXED;
+}
+
+rs_status ys_apply_set(yn *root, const char *set, int pass)
+{
+  char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
+  snprintf(origin, sizeof origin, "--set %s", set);
+  const char *eq = strchr(set, '=');
+  if (!eq || eq == set)
+    return RS_ERROR(RS_ERR_INPUT, "%s: expected key.path=value (e.g. numerics.rtol=1e-8)", origin);
+  size_t plen = (size_t)(eq - set);
+  if (plen >= sizeof path) return RS_ERROR(RS_ERR_INPUT, "%s: key path too long", origin);
+  memcpy(path, set, plen);
+  path[plen] = '\0';
+  const char *value = eq + 1;
+
+  if ((pass == 0) != (strcmp(path, "material") == 0)) return RS_OK;
+
+  int n = yn_path_split(path, seg, 16);
+  if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);
+
+  yn *cur = root;
+  for (int i = 0; i < n; ++i) {
+    char next[sizeof walked], num[32];
+    long idx;
+    if (cur->kind == YN_SEQ) {
+      if (!yn_seg_index(seg[i], &idx))
+        return RS_ERROR(RS_ERR_INPUT, "%s: %s is a list: expected an entry number, got '%s'",
+                        origin, walked, seg[i]);
+      if (idx >= cur->n)
+        return RS_ERROR(RS_ERR_INPUT, "%s: %s has no entry %ld (it has %d)", origin, walked, idx,
+                        cur->n);
+      snprintf(num, sizeof num, "[%ld]", idx);
+      join3(next, sizeof next, walked, "", num);
+      memcpy(walked, next, sizeof walked);
+      cur = cur->kids[idx];
+      continue;
+    }
+    if (cur->kind != YN_MAP)
+      return RS_ERROR(RS_ERR_INPUT, "%s: %s is a single value, not a mapping with key '%s'",
+                      origin, walked, seg[i]);
+    join3(next, sizeof next, walked, walked[0] ? "." : "", seg[i]);
+    yn *kid = yn_map_get(cur, seg[i]);
+    if (!kid) {
+      /* absent: create it when the schema knows the key */
+      const cyaml_schema_value_t *s = ys_schema_at(next);
+      if (!s) {
+        const cyaml_schema_value_t *ps = walked[0] ? ys_schema_at(walked) : &ys_scene_schema;
+        ys_schema_keys(ps ? ps : &ys_scene_schema, keys, sizeof keys);
+        return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
+                        seg[i], walked[0] ? " in " : "", walked, keys);
+      }
+      int last = i == n - 1;
+      if (last && !is_scalar_schema(s) && !ys_is_shorthand(next))
+        return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, next,
+                        s->type == CYAML_MAPPING ? "mapping" : "list");
+      if (!last && s->type != CYAML_MAPPING)
+        return RS_ERROR(RS_ERR_INPUT, "%s: cannot create entries of the list %s with --set",
+                        origin, next);
+      kid = last ? yn_new_scalar(value, root->file, 0, next) : yn_new_map(root->file, 0, next);
+      if (!kid) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+      rs_status st = yn_set_origin(kid, origin);
+      if (st == RS_OK) st = yn_map_put(cur, seg[i], kid);
+      else yn_free(kid);
+      if (st != RS_OK) return st;
+    }
+    memcpy(walked, next, sizeof walked);
+    cur = kid;
+  }
+  if (cur->kind != YN_SCALAR)
+    return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, path,
+                    cur->kind == YN_MAP ? "mapping" : "list");
+  char *text = malloc(strlen(value) + 1);
+  if (!text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  strcpy(text, value);
+  free(cur->text);
+  cur->text = text;
+  cur->quoted = 0;
+  return yn_set_origin(cur, origin);
+}

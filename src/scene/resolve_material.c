@@ -1,0 +1,122 @@
+/* The material from its typed form: sheet constants and the radial modulus law. Errors
+ * point into the model file the material came from (or the scene, when inline). */
+#define _POSIX_C_SOURCE 200809L /* strtok_r, stat */
+
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "scene/scene_internal.h"
+
+static const char *radial_keys(rs_radial_kind law)
+{
+  switch (law) {
+  case RS_RADIAL_LINEAR: return "E_r";
+  case RS_RADIAL_PFEIFFER: return "K1, K2";
+  case RS_RADIAL_HAKIEL: return "C";
+  case RS_RADIAL_TABLE: return "points";
+  }
+  return "";
+}
+
+static const char *radial_name(rs_radial_kind law)
+{
+  switch (law) {
+  case RS_RADIAL_LINEAR: return "linear";
+  case RS_RADIAL_PFEIFFER: return "pfeiffer";
+  case RS_RADIAL_HAKIEL: return "hakiel";
+  case RS_RADIAL_TABLE: return "table";
+  }
+  return "?";
+}
+
+static rs_status resolve_radial(const yn *root, const ys_radial *y, rs_radial_law *law)
+{
+  char key[256], want[64];
+  const yn *node = yn_get(root, "material.radial");
+  rs_radial_kind kind = (rs_radial_kind)y->law;
+  snprintf(want, sizeof want, "%s", radial_keys(kind));
+
+  for (int i = 0; i < node->n; ++i) {
+    const char *k = node->keys[i];
+    if (strcmp(k, "law") == 0) continue;
+    int used = 0;
+    char list[64], *save = NULL;
+    snprintf(list, sizeof list, "%s", want);
+    for (char *t = strtok_r(list, ", ", &save); t; t = strtok_r(NULL, ", ", &save))
+      used |= strcmp(t, k) == 0;
+    if (!used) {
+      snprintf(key, sizeof key, "material.radial.%s", k);
+      return ys_fail(root, key, "not used by radial law %s (it takes: %s)", radial_name(kind),
+                     want);
+    }
+  }
+  {
+    char list[64], *save = NULL;
+    snprintf(list, sizeof list, "%s", want);
+    for (char *t = strtok_r(list, ", ", &save); t; t = strtok_r(NULL, ", ", &save))
+      if (!yn_map_get(node, t))
+        return ys_fail(root, "material.radial", "radial law %s needs '%s' (it takes: %s)",
+                       radial_name(kind), t, want);
+  }
+
+  memset(law, 0, sizeof *law);
+  law->law = kind;
+  law->E_r = y->E_r;
+  law->K1 = y->K1;
+  law->K2 = y->K2;
+  law->n_coef = (int)y->C_count;
+  for (unsigned i = 0; i < y->C_count; ++i) law->C[i] = y->C[i];
+  law->n_points = (int)y->points_count;
+  for (unsigned i = 0; i < y->points_count; ++i) {
+    law->P[i] = y->points[i].v[0];
+    law->E[i] = y->points[i].v[1];
+  }
+  if (rs_radial_law_prepare(law) != RS_OK) {
+    /* its messages open with the key they are about ("radial.K1 must be > 0 ..."):
+     * find that key in the tree for the file and line */
+    char msg[1024], tok[128];
+    snprintf(msg, sizeof msg, "%s", rs_error_message());
+    size_t n = 0;
+    while (msg[n] && n < sizeof tok - 1 &&
+           (isalnum((unsigned char)msg[n]) || strchr("_.[]", msg[n])))
+      ++n;
+    memcpy(tok, msg, n);
+    tok[n] = '\0';
+    const char *rest = msg + n;
+    while (*rest == ':' || *rest == ' ') ++rest;
+    snprintf(key, sizeof key, "material.%s", tok);
+    /* "radial.points must be sorted ... (points[2].P ...)": point at the entry */
+    const char *at = strstr(rest, "points[");
+    int idx;
+    if (strcmp(tok, "radial.points") == 0 && at && sscanf(at, "points[%d]", &idx) == 1)
+      snprintf(key, sizeof key, "material.radial.points[%d]", idx);
+    if (n == 0 || strncmp(tok, "radial", 6) != 0 || !yn_get(root, key))
+      return ys_fail(root, "material.radial", "%s", msg);
+    return ys_fail(root, key, "%s", rest);
+  }
+  return RS_OK;
+}
+
+rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material *m)
+{
+  memset(m, 0, sizeof *m);
+  snprintf(m->name, sizeof m->name, "%s", y->name ? y->name : "inline");
+  if (!(y->caliper > 0.0))
+    return ys_fail(root, "material.caliper", "must be > 0 m (got %g)", y->caliper);
+  if (!(y->E_theta > 0.0))
+    return ys_fail(root, "material.E_theta", "must be > 0 Pa (got %g)", y->E_theta);
+  if (!(y->nu_rtheta > -1.0 && y->nu_rtheta < 1.0))
+    return ys_fail(root, "material.nu_rtheta", "must lie in (-1, 1) (got %g)", y->nu_rtheta);
+  if (ys_has(root, "material.G_rtheta") && !(y->G_rtheta > 0.0))
+    return ys_fail(root, "material.G_rtheta", "must be > 0 Pa (got %g)", y->G_rtheta);
+  if (ys_has(root, "material.density") && !(y->density > 0.0))
+    return ys_fail(root, "material.density", "must be > 0 kg/m^3 (got %g)", y->density);
+  m->caliper = y->caliper;
+  m->E_theta = y->E_theta;
+  m->nu_rtheta = y->nu_rtheta;
+  m->G_rtheta = y->G_rtheta;
+  m->density = y->density;
+  return resolve_radial(root, &y->radial, &m->radial);
+}

@@ -1,0 +1,162 @@
+/* Recipes (web tension, nip load) from their typed form, with the checks a user needs:
+ * the keys each law takes, a sorted table, and no taper that goes negative on the roll. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reelsim/recipe.h"
+#include "scene/scene_internal.h"
+
+/* which keys each law takes: value start end k table points */
+static const char *law_keys(rs_recipe_kind law)
+{
+  switch (law) {
+  case RS_RECIPE_CONSTANT: return "value";
+  case RS_RECIPE_LINEAR: return "start, end";
+  case RS_RECIPE_HYPERBOLIC: return "start and one of end, k";
+  case RS_RECIPE_TORQUE: return "start";
+  case RS_RECIPE_TABLE: return "table (or points)";
+  }
+  return "";
+}
+
+static int law_uses(rs_recipe_kind law, const char *key)
+{
+  switch (law) {
+  case RS_RECIPE_CONSTANT: return strcmp(key, "value") == 0;
+  case RS_RECIPE_LINEAR: return strcmp(key, "start") == 0 || strcmp(key, "end") == 0;
+  case RS_RECIPE_HYPERBOLIC:
+    return strcmp(key, "start") == 0 || strcmp(key, "end") == 0 || strcmp(key, "k") == 0;
+  case RS_RECIPE_TORQUE: return strcmp(key, "start") == 0;
+  case RS_RECIPE_TABLE: return strcmp(key, "table") == 0 || strcmp(key, "points") == 0;
+  }
+  return 0;
+}
+
+rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
+                            const ys_recipe *y, double r0, double r1, rs_recipe *out)
+{
+  char key[256];
+  const yn *node = yn_get(root, path);
+  rs_recipe_kind law = (rs_recipe_kind)y->law;
+  const char *law_name = rs_recipe_law_name(law);
+
+  for (int i = 0; i < node->n; ++i) {
+    const char *k = node->keys[i];
+    if (strcmp(k, "law") == 0 || law_uses(law, k)) continue;
+    snprintf(key, sizeof key, "%s.%s", path, k);
+    if (law == RS_RECIPE_TORQUE && strcmp(k, "end") == 0)
+      return ys_fail(root, key,
+                     "a torque recipe is fixed by its start value (%s = start r0 / r); "
+                     "remove 'end', or use law: hyperbolic with end (or k)",
+                     what);
+    return ys_fail(root, key, "not used by law %s (it takes: %s)", law_name, law_keys(law));
+  }
+#define NEED(k)                                                                              \
+  do {                                                                                       \
+    if (!yn_map_get(node, k))                                                                \
+      return ys_fail(root, path, "law %s needs '%s' (it takes: %s)", law_name, k,            \
+                     law_keys(law));                                                         \
+  } while (0)
+
+  memset(out, 0, sizeof *out);
+  out->law = law;
+  out->end = NAN;
+  out->k = NAN;
+  switch (law) {
+  case RS_RECIPE_CONSTANT:
+    NEED("value");
+    out->start = out->end = y->value;
+    break;
+  case RS_RECIPE_LINEAR:
+    NEED("start");
+    NEED("end");
+    out->start = y->start;
+    out->end = y->end;
+    break;
+  case RS_RECIPE_HYPERBOLIC: {
+    NEED("start");
+    int has_end = yn_map_get(node, "end") != NULL, has_k = yn_map_get(node, "k") != NULL;
+    if (has_end == has_k) {
+      snprintf(key, sizeof key, "%s.%s", path, has_k ? "k" : "end");
+      return ys_fail(root, has_k ? key : path,
+                     "law hyperbolic takes either 'end' or 'k', %s",
+                     has_k ? "not both" : "and neither is given");
+    }
+    out->start = y->start;
+    if (has_end) out->end = y->end;
+    else out->k = y->k;
+    break;
+  }
+  case RS_RECIPE_TORQUE:
+    NEED("start");
+    out->start = y->start;
+    break;
+  case RS_RECIPE_TABLE: {
+    int has_t = yn_map_get(node, "table") != NULL, has_p = yn_map_get(node, "points") != NULL;
+    if (has_t && has_p) {
+      snprintf(key, sizeof key, "%s.points", path);
+      return ys_fail(root, key, "give the table as 'table' or as 'points', not both");
+    }
+    NEED(has_p ? "points" : "table");
+    const ys_pair *pts = has_p ? y->points : y->table;
+    unsigned n = has_p ? y->points_count : y->table_count;
+    out->n_points = (int)n;
+    for (unsigned i = 0; i < n; ++i) {
+      out->r[i] = pts[i].v[0];
+      out->value[i] = pts[i].v[1];
+    }
+    break;
+  }
+  }
+#undef NEED
+
+  const char *tkey = yn_map_get(node, "points") ? "points" : "table";
+  if (rs_recipe_prepare(out, r0, r1) != RS_OK) {
+    char msg[1024];
+    int idx;
+    snprintf(msg, sizeof msg, "%s", rs_error_message());
+    const char *at = strstr(msg, "table[");
+    if (law == RS_RECIPE_TABLE && at && sscanf(at, "table[%d]", &idx) == 1)
+      snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, idx);
+    else
+      snprintf(key, sizeof key, "%s", path);
+    return ys_fail(root, key, "%s", msg);
+  }
+
+  /* the least value on [r0, r1] and where it is (each law is monotone, a table is
+   * piecewise linear: the minimum sits at an end or at a point) */
+  double vmin = rs_recipe_min(out);
+  if (!(vmin >= 0.0)) {
+    double v0 = rs_recipe_eval(out, r0), v1 = rs_recipe_eval(out, r1);
+    switch (law) {
+    case RS_RECIPE_TABLE: {
+      int imin = 0;
+      for (int i = 1; i < out->n_points; ++i)
+        if (out->value[i] < out->value[imin]) imin = i;
+      snprintf(key, sizeof key, "%s.%s[%d][1]", path, tkey, imin);
+      return ys_fail(root, key, "the %s must not be negative (got %g N/m at r = %g m)", what,
+                     out->value[imin], out->r[imin]);
+    }
+    case RS_RECIPE_CONSTANT:
+      snprintf(key, sizeof key, "%s.value", path);
+      return ys_fail(root, key, "the %s must not be negative (got %g N/m)", what, v0);
+    default:
+      if (!(v0 >= 0.0)) {
+        snprintf(key, sizeof key, "%s.start", path);
+        return ys_fail(root, key, "the %s must not be negative (got %g N/m at the core, r = %g m)",
+                       what, v0, r0);
+      }
+      snprintf(key, sizeof key, "%s.%s", path, yn_map_get(node, "k") ? "k" : "end");
+      return ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g N/m)", what, r1,
+                     v1);
+    }
+  }
+  for (int i = 0; i < out->n_points; ++i)
+    if (out->r[i] <= 0.0) {
+      snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, i);
+      return ys_fail(root, key, "radius must be > 0 m (got %g)", out->r[i]);
+    }
+  return RS_OK;
+}

@@ -1,0 +1,52 @@
+/* Internal interface between the scene loader's steps:
+ *   parse (ytree.c) -> --set material (overrides.c) -> model lookup (models.c)
+ *   -> other --set (overrides.c) -> shorthands (normalize.c) -> schema checks on the tree
+ *   (typecheck.c) -> defaults (defaults.c) -> libcyaml typed load (load.c)
+ *   -> range checks and derived values (resolve_*.c) -> resolved text (load.c). */
+#ifndef RS_SCENE_INTERNAL_H
+#define RS_SCENE_INTERNAL_H
+
+#include <stddef.h>
+
+#include "reelsim/scene.h"
+#include "scene/schema.h"
+#include "scene/ytree.h"
+
+/* typecheck.c */
+rs_status ys_typecheck(const yn *node, const cyaml_schema_value_t *schema);
+void ys_schema_keys(const cyaml_schema_value_t *mapping, char *buf, size_t size);
+int ys_parse_double(const char *text, double *out);
+
+/* overrides.c: applies one "key.path=value". pass 0 applies only a set of `material`
+ * itself (before the model is looked up), pass 1 everything else. */
+rs_status ys_apply_set(yn *root, const char *set, int pass);
+
+/* models.c: replaces a `material: name` by the model file's tree (lines stay those of
+ * the model file) and fills scene->material_source. */
+rs_status ys_inline_material(yn *root, rs_scene *scene);
+/* The search order for a model name (for messages and tests): up to `max` candidates. */
+int ys_model_candidates(const char *scene_path, const char *name, char cand[][RS_PATH_MAX],
+                        int max);
+
+/* normalize.c: `tension: 350` -> {law: constant, value: 350}; a table without `law`. */
+rs_status ys_normalize(yn *root);
+
+/* defaults.c: fills absent optional keys (marked origin "default"). */
+rs_status ys_fill_defaults(yn *root, const rs_scene *scene);
+
+/* resolve_*.c: typed values -> rs_scene, with range checks located through the tree. */
+rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material *m);
+rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
+                            const ys_recipe *y, double r0, double r1, rs_recipe *out);
+rs_status ys_resolve(const yn *root, const ys_scene *y, rs_scene *scene);
+
+/* Reports an error at a dotted scene path; when the key is absent, at its nearest
+ * present parent ("file:line: nip.load: required by ..."). */
+rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+int ys_has(const yn *root, const char *path);
+
+/* effects.c / resolve: numbers for people: 1e9 rather than 1e+09. */
+void ys_fmt(char *buf, size_t size, double v);
+
+#endif
