@@ -240,6 +240,34 @@ static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
   }
 }
 
+/* The lower contact needs one stick element, or xi2 is undetermined (its column empty).
+ * A free rider (center winder) slips forward on part of the contact and backward on the
+ * rest with one element stuck between, where the slip direction changes: keep that one
+ * (the neighbour closer to sticking); without a change of direction keep the element
+ * closest to sticking (the iteration then reports that no state fits). */
+static void keep_lower_stick(const rs_nip_contact *nc, const double *srate, signed char *next)
+{
+  const int M = nc->M, E = M - 1;
+  for (int e = 0; e < E; ++e)
+    if (next[E + e] == 0) return;
+  const signed char *cur = nc->state + E;
+  const double *s = srate + E;
+#define CLOSENESS(e) (cur[e] == 0 ? 0.0 : fabs(s[e]))
+  int keep = -1;
+  for (int e = 0; e + 1 < E && keep < 0; ++e)
+    if (next[E + e] != next[E + e + 1]) keep = CLOSENESS(e) <= CLOSENESS(e + 1) ? e : e + 1;
+  if (keep < 0) {
+    double best = INFINITY;
+    for (int e = 0; e < E; ++e)
+      if (CLOSENESS(e) < best) {
+        best = CLOSENESS(e);
+        keep = e;
+      }
+  }
+#undef CLOSENESS
+  next[E + keep] = 0;
+}
+
 static int same_state(const signed char *a, const signed char *b, int n)
 {
   return memcmp(a, b, (size_t)n) == 0;
@@ -304,9 +332,10 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
         signed char ns = nc->state[idx];
         if (nc->state[idx] == 0) {
           double over = fabs(q) - lim;
-          if (over > rtol * (mu[k] * pmax + 1e-300)) {
+          double qscale = mu[k] * pmax + 1e-6 * pmax + 1e-300; /* mu = 0: round-off of q */
+          if (over > rtol * qscale) {
             ns = q > 0 ? 1 : -1;
-            v = over / (mu[k] * pmax + 1e-300);
+            v = over / qscale;
           }
         } else if (lim > 0) {
           double back = -nc->state[idx] * srate_all[idx];
@@ -333,23 +362,6 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
       memcpy(next, nc->state, (size_t)S);
       next[iworst] = sworst;
     }
-    /* keep one lower stick element (xi2 is otherwise undetermined) */
-    nstick_low = 0;
-    for (int e = 0; e < E; ++e) nstick_low += next[E + e] == 0;
-    if (!nstick_low) {
-      int keep = -1;
-      double best = INFINITY;
-      for (int e = 0; e < E; ++e) {
-        if (nc->state[E + e] != 0) continue;
-        double ratio = fabs(nc->z[COL_Q(1, e)]) / (mu[1] * nc->pbar[e] + 1e-300);
-        if (ratio < best) {
-          best = ratio;
-          keep = e;
-        }
-      }
-      if (keep < 0) keep = E / 2;
-      next[E + keep] = 0;
-    }
     int seen = 0;
     for (int v = 0; v < nvis && !seen; ++v) seen = same_state(nc->visited + (size_t)v * S, next, S);
     if (seen) {
@@ -362,6 +374,13 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
       single = 1;
       memcpy(next, nc->state, (size_t)S);
       next[iworst] = sworst;
+    }
+    keep_lower_stick(nc, srate_all, next);
+    if (same_state(next, nc->state, S)) {
+      st = RS_ERROR(RS_ERR_SOLVER, "no consistent stick/slip state at a = %g m after %d passes: "
+                    "the drum contact would slip everywhere (worst violation %.3g relative)",
+                    a, it, worst);
+      break;
     }
     if (nvis < nc->cfg.max_iterations) memcpy(nc->visited + (size_t)nvis++ * S, nc->state, (size_t)S);
     memcpy(nc->state, next, (size_t)S);
