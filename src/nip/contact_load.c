@@ -53,7 +53,9 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
   const double xmax = log(amax), xmin = log(amax * 1e-7), lnP = log(P), tol = nc->cfg.load_rtol;
   double a0, slope = 2.0;
   if (nc->warm_a > 0) {
-    a0 = nc->warm_a * sqrt(P / nc->warm_P * Rs / nc->warm_Rs);
+    double ratio = P / nc->warm_P * Rs / nc->warm_Rs;
+    /* the same nip again: start exactly at the previous a (its kernels are cached) */
+    a0 = fabs(ratio - 1) <= tol ? nc->warm_a : nc->warm_a * sqrt(ratio);
     if (nc->warm_slope > 0.5 && nc->warm_slope < 4) slope = nc->warm_slope;
   } else {
     a0 = hertz_guess(nc, P);
