@@ -46,6 +46,8 @@ typedef struct rs_material {
   rs_radial_law radial;
   double G_rtheta;   /* Pa: in-plane shear modulus (nip model); 0 = not given */
   double density;    /* kg/m^3; 0 = not given */
+  double pressure_limit; /* Pa: crushing/blocking pressure (defect check); 0 = not given */
+  double friction_layer; /* web-on-web friction coefficient (slip check); 0 = not given */
 } rs_material;
 
 #ifdef __cplusplus

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "output/h5_defects.h"
 #include "output/h5_util.h"
 #include "output/staging.h"
 #include "reelsim_version.h"
@@ -165,6 +166,7 @@ static rs_status build_image(const rs_scene *scene, const rs_reel_result *res, v
   if (st == RS_OK) st = write_layers(file, res);
   if (st == RS_OK) st = write_final(file, res);
   if (st == RS_OK && scene->output.history_every > 0) st = write_history(file, scene, res);
+  if (st == RS_OK) st = rs_h5_write_defects(file, scene, res);
   if (st == RS_OK) st = rs_h5_memfile_image(file, image, size);
   if (H5Fclose(file) < 0 && st == RS_OK) {
     char detail[512];
