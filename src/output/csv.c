@@ -74,7 +74,9 @@ rs_status rs_output_csv_path(const char *dir, const char *name, const char *whic
 rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_result *res)
 {
   enum { N_FILES = 2 };
-  static const char *const which[N_FILES] = {"profile", "wot"};
+  static const char *const which[N_FILES] = {"wot", "profile"};
+  static rs_status (*const build[N_FILES])(const rs_reel_result *, csv_text *) = {build_wot,
+                                                                                 build_profile};
   char path[N_FILES][4096];
   char *tmp[N_FILES] = {NULL, NULL};
   csv_text text[N_FILES] = {{NULL, 0}, {NULL, 0}};
@@ -84,8 +86,7 @@ rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_r
     st = rs_output_csv_path(dir, name, which[i], path[i], sizeof path[i]);
     if (st == RS_OK) st = rs_staging_check_target(path[i]);
   }
-  if (st == RS_OK) st = build_profile(res, &text[0]);
-  if (st == RS_OK) st = build_wot(res, &text[1]);
+  for (int i = 0; st == RS_OK && i < N_FILES; ++i) st = build[i](res, &text[i]);
   /* every file to its temporary first, then the renames: a failure before the renames
    * leaves nothing new; only a failing rename (almost never) can leave the first alone */
   for (int i = 0; st == RS_OK && i < N_FILES; ++i)
