@@ -44,7 +44,8 @@ static void print_hoop(FILE *out, const rs_defect_report *rep)
             rep->hoop.min_radius * 1e3);
     return;
   }
-  fprintf(out, "  WARNING: hoop compression (sigma_theta < 0: starring/buckling risk) in %d layer%s",
+  fprintf(out,
+          "  WARNING: hoop compression (sigma_theta < 0: starring/buckling risk) in %d layer%s",
           rep->hoop.layers, rep->hoop.layers == 1 ? "" : "s");
   print_ranges(out, rep->hoop.ranges, rep->hoop.n_ranges);
   fprintf(out, "; least %s at r = %.1f mm\n", a, rep->hoop.min_radius * 1e3);
@@ -53,18 +54,22 @@ static void print_hoop(FILE *out, const rs_defect_report *rep)
 static void print_pressure(FILE *out, const rs_defect_report *rep)
 {
   char a[64], b[64];
-  if (rep->pressure.verdict == RS_DEFECT_NOT_ASSESSED && rep->hoop.verdict == RS_DEFECT_NOT_ASSESSED)
+  if (rep->pressure.verdict == RS_DEFECT_NOT_ASSESSED &&
+      rep->hoop.verdict == RS_DEFECT_NOT_ASSESSED)
     return;
   cli_fmt_stress(a, sizeof a, rep->pressure.max);
   double r = rep->pressure.max_radius * 1e3;
   switch (rep->pressure.verdict) {
   case RS_DEFECT_NOT_ASSESSED:
-    fprintf(out, "  pressure           peak %s at r = %.1f mm: not assessed (no material.pressure_limit)\n",
-            a, r);
+    fprintf(
+        out,
+        "  pressure           peak %s at r = %.1f mm: not assessed (no material.pressure_limit)\n",
+        a, r);
     return;
   case RS_DEFECT_OK:
     cli_fmt_stress(b, sizeof b, rep->pressure.limit);
-    fprintf(out, "  pressure           peak %s at r = %.1f mm, %.2f of material.pressure_limit %s: ok\n",
+    fprintf(out,
+            "  pressure           peak %s at r = %.1f mm, %.2f of material.pressure_limit %s: ok\n",
             a, r, rep->pressure.ratio, b);
     return;
   case RS_DEFECT_RISK:
@@ -115,8 +120,8 @@ static void print_core(FILE *out, const rs_defect_report *rep)
     fprintf(out, "  core               %s, %.2f of core.rating %s: ok\n", a, rep->core.ratio, b);
     return;
   case RS_DEFECT_RISK:
-    fprintf(out, "  WARNING: core pressure %s exceeds core.rating %s (%.2f x): core crush risk\n", a,
-            b, rep->core.ratio);
+    fprintf(out, "  WARNING: core pressure %s exceeds core.rating %s (%.2f x): core crush risk\n",
+            a, b, rep->core.ratio);
     return;
   }
 }

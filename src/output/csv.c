@@ -23,8 +23,7 @@ rs_status rs_output_check_csv_dir(const char *dir)
   }
   if (!S_ISDIR(sb.st_mode)) return RS_ERROR(RS_ERR_INPUT, "--csv %s: not a directory", dir);
   if (access(dir, W_OK | X_OK) != 0)
-    return RS_ERROR(RS_ERR_INPUT, "--csv %s: directory is not writable (%s)", dir,
-                    strerror(errno));
+    return RS_ERROR(RS_ERR_INPUT, "--csv %s: directory is not writable (%s)", dir, strerror(errno));
   return RS_OK;
 }
 
@@ -76,7 +75,7 @@ rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_r
   enum { N_FILES = 2 };
   static const char *const which[N_FILES] = {"wot", "profile"};
   static rs_status (*const build[N_FILES])(const rs_reel_result *, csv_text *) = {build_wot,
-                                                                                 build_profile};
+                                                                                  build_profile};
   char path[N_FILES][4096];
   char *tmp[N_FILES] = {NULL, NULL};
   csv_text text[N_FILES] = {{NULL, 0}, {NULL, 0}};
@@ -86,12 +85,14 @@ rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_r
     st = rs_output_csv_path(dir, name, which[i], path[i], sizeof path[i]);
     if (st == RS_OK) st = rs_staging_check_target(path[i]);
   }
-  for (int i = 0; st == RS_OK && i < N_FILES; ++i) st = build[i](res, &text[i]);
+  for (int i = 0; st == RS_OK && i < N_FILES; ++i)
+    st = build[i](res, &text[i]);
   /* every file to its temporary first, then the renames: a failure before the renames
    * leaves nothing new; only a failing rename (almost never) can leave the first alone */
   for (int i = 0; st == RS_OK && i < N_FILES; ++i)
     st = rs_staging_prepare(path[i], text[i].text, text[i].size, &tmp[i]);
-  for (int i = 0; st == RS_OK && i < N_FILES; ++i) st = rs_staging_commit(path[i], &tmp[i]);
+  for (int i = 0; st == RS_OK && i < N_FILES; ++i)
+    st = rs_staging_commit(path[i], &tmp[i]);
   for (int i = 0; i < N_FILES; ++i) {
     rs_staging_abort(&tmp[i]);
     free(text[i].text);

@@ -66,8 +66,9 @@ static rs_status write_pressure(hid_t parent, const rs_defect_report *rep)
   if (st != RS_OK) return st;
   st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->pressure.verdict));
   if (st == RS_OK)
-    st = rs_h5_attr_string(g, "rule", "risk where the greatest pressure on the web > "
-                                      "material.pressure_limit");
+    st = rs_h5_attr_string(g, "rule",
+                           "risk where the greatest pressure on the web > "
+                           "material.pressure_limit");
   if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure", rep->pressure.max);
   if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure_radius", rep->pressure.max_radius);
   if (st == RS_OK && rep->pressure.verdict != RS_DEFECT_NOT_ASSESSED) {

@@ -145,8 +145,9 @@ static void round_trip(void)
 
   hid_t f = H5Fopen(h5, H5F_ACC_RDONLY, H5P_DEFAULT);
   CHECK(f >= 0);
-  const char *names[] = {"/final/radius", "/final/sigma_r", "/final/sigma_theta", "/final/pressure",
-                         "/layers/wound_on_tension", "/layers/web_tension", "/layers/nip_load"};
+  const char *names[] = {"/final/radius",   "/final/sigma_r",           "/final/sigma_theta",
+                         "/final/pressure", "/layers/wound_on_tension", "/layers/web_tension",
+                         "/layers/nip_load"};
   double *h[7];
   for (int i = 0; i < 7; ++i) {
     h[i] = read_h5(f, names[i], (size_t)n);
@@ -155,15 +156,17 @@ static void round_trip(void)
   H5Fclose(f);
 
   double *p[6], *w[4];
-  for (int c = 0; c < 6; ++c) p[c] = malloc((size_t)n * sizeof(double));
-  for (int c = 0; c < 4; ++c) w[c] = malloc((size_t)n * sizeof(double));
+  for (int c = 0; c < 6; ++c)
+    p[c] = malloc((size_t)n * sizeof(double));
+  for (int c = 0; c < 4; ++c)
+    w[c] = malloc((size_t)n * sizeof(double));
   char *prof = join(dir, "small-profile.csv"), *wot = join(dir, "small-wot.csv");
   int rp = parse_csv(prof,
                      "layer,radius_m,sigma_r_Pa,sigma_theta_Pa,pressure_Pa,"
                      "wound_on_tension_N_per_m\n",
                      6, p, n);
-  int rw = parse_csv(wot, "radius_m,web_tension_N_per_m,nip_load_N_per_m,wound_on_tension_N_per_m\n",
-                     4, w, n);
+  int rw = parse_csv(
+      wot, "radius_m,web_tension_N_per_m,nip_load_N_per_m,wound_on_tension_N_per_m\n", 4, w, n);
   CHECK(rp == n && rw == n);
   int diff = 0;
   for (int i = 0; i < 7; ++i)
@@ -181,9 +184,12 @@ static void round_trip(void)
     CHECK_LOG("last row pressure (Pa)", p[4][n - 1]);
   }
   CHECK(diff == 0);
-  for (int i = 0; i < 7; ++i) free(h[i]);
-  for (int c = 0; c < 6; ++c) free(p[c]);
-  for (int c = 0; c < 4; ++c) free(w[c]);
+  for (int i = 0; i < 7; ++i)
+    free(h[i]);
+  for (int c = 0; c < 6; ++c)
+    free(p[c]);
+  for (int c = 0; c < 4; ++c)
+    free(w[c]);
   free(prof);
   free(wot);
   free(h5);
@@ -263,7 +269,8 @@ static void failed_write_keeps_old_files(void)
   CHECK_LOG("profile bytes", np);
   CHECK_LOG("wot bytes", nw);
   CHECK(old_p && old_w && nw < np);
-  for (int j = 0; j < res->n_layers; ++j) res->sigma_r[j] *= 1.5; /* a different reel */
+  for (int j = 0; j < res->n_layers; ++j)
+    res->sigma_r[j] *= 1.5; /* a different reel */
 
   struct rlimit saved, lim;
   CHECK(getrlimit(RLIMIT_FSIZE, &saved) == 0);

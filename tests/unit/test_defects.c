@@ -52,7 +52,7 @@ static rs_defect_report *assess(const rs_reel_result *r, const rs_defect_limits 
 static void hoop_no_compression(void)
 {
   rs_reel_result *r = profile(50);
-  r->sigma_theta[20] = 1.0; /* least, but still tension */
+  r->sigma_theta[20] = 1.0;  /* least, but still tension */
   r->sigma_theta[21] = -0.0; /* a negative zero is no compression */
   rs_defect_report *rep = assess(r, NULL);
   CHECK(rep->hoop.verdict == RS_DEFECT_OK);
@@ -71,7 +71,8 @@ static void hoop_one_layer(void)
   CHECK(rep->hoop.verdict == RS_DEFECT_RISK);
   CHECK(rep->hoop.layers == 1 && rep->hoop.n_ranges == 1);
   CHECK(rep->hoop.ranges[0].first == 17 && rep->hoop.ranges[0].last == 17);
-  CHECK(rep->hoop.ranges[0].r_first == r->radius[17] && rep->hoop.ranges[0].r_last == r->radius[17]);
+  CHECK(rep->hoop.ranges[0].r_first == r->radius[17] &&
+        rep->hoop.ranges[0].r_last == r->radius[17]);
   CHECK(rep->hoop.min == -3.0e4 && rep->hoop.min_radius == r->radius[17]);
   rs_defect_report_destroy(&rep);
   profile_free(r);
@@ -81,10 +82,13 @@ static void hoop_one_layer(void)
 static void hoop_ranges(void)
 {
   rs_reel_result *r = profile(40);
-  for (int j = 0; j < 5; ++j) r->sigma_theta[j] = -1.0e3 * (j + 1);
-  for (int j = 12; j <= 14; ++j) r->sigma_theta[j] = -2.0e5;
+  for (int j = 0; j < 5; ++j)
+    r->sigma_theta[j] = -1.0e3 * (j + 1);
+  for (int j = 12; j <= 14; ++j)
+    r->sigma_theta[j] = -2.0e5;
   r->sigma_theta[13] = -2.5e5;
-  for (int j = 38; j < 40; ++j) r->sigma_theta[j] = -1.0;
+  for (int j = 38; j < 40; ++j)
+    r->sigma_theta[j] = -1.0;
   rs_defect_report *rep = assess(r, NULL);
   CHECK(rep->hoop.verdict == RS_DEFECT_RISK);
   CHECK(rep->hoop.layers == 10 && rep->hoop.n_ranges == 3);
@@ -190,7 +194,8 @@ static void slip_threshold_radius(void)
   r->sigma_r[n - 1] = 0.0; /* free surface */
   double r_star = sqrt(M / (2.0 * pi * mu * P));
   int k = 0;
-  while (k < n - 1 && r->radius[k] < r_star) ++k; /* interfaces 0..k-1 slip */
+  while (k < n - 1 && r->radius[k] < r_star)
+    ++k; /* interfaces 0..k-1 slip */
   CHECK_LOG("r* (m)", r_star);
   CHECK_LOG("interfaces inside r*", k);
   CHECK(k > 0 && k < n - 1);
@@ -242,8 +247,10 @@ static void limits_from_scene(void)
   CHECK(lim.accel_torque == 0.0 && lim.core_rating == 0.0);
   rs_scene_destroy(&sc);
   /* refused values */
-  const char *bad[][1] = {{"material.pressure_limit=0"}, {"core.rating=-1"},
-                          {"material.friction_layer=0"}, {"winding.accel_torque=5"}};
+  const char *bad[][1] = {{"material.pressure_limit=0"},
+                          {"core.rating=-1"},
+                          {"material.friction_layer=0"},
+                          {"winding.accel_torque=5"}};
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
     CHECK(rs_scene_load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 1, bad[i], &sc) == RS_ERR_INPUT);
     printf("  %s -> %s\n", bad[i][0], rs_error_message());

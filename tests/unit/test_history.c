@@ -48,7 +48,8 @@ static void check_stage_shape(const rs_reel_result *res)
     }
     CHECK_CLOSE(res->stage_radius[s], res->radius[k - 1], 1e-15);
     for (int j = 0; j < n; ++j) {
-      double a = res->stage_sigma_r[(size_t)s * n + j], b = res->stage_sigma_theta[(size_t)s * n + j];
+      double a = res->stage_sigma_r[(size_t)s * n + j],
+             b = res->stage_sigma_theta[(size_t)s * n + j];
       if (j < k)
         bad += !isfinite(a) || !isfinite(b);
       else
@@ -77,7 +78,8 @@ static void last_stage_is_final(void)
   rs_reel_result *res = wind(1, sets, NULL, NULL);
   CHECK(res && res->n_stages == 4);
   if (!res) return;
-  for (int s = 0; s < res->n_stages; ++s) CHECK(res->stage_layers[s] == 50 * (s + 1));
+  for (int s = 0; s < res->n_stages; ++s)
+    CHECK(res->stage_layers[s] == 50 * (s + 1));
   check_last_is_final(res);
   rs_reel_result_destroy(&res);
 }
@@ -134,7 +136,8 @@ static void step_boundaries(void)
   static const int want[] = {51, 102, 150, 200};
   CHECK(res && res->n_stages == 4);
   if (!res || res->n_stages != 4) return;
-  for (int s = 0; s < 4; ++s) CHECK(res->stage_layers[s] == want[s]);
+  for (int s = 0; s < 4; ++s)
+    CHECK(res->stage_layers[s] == want[s]);
   check_stage_shape(res);
   check_last_is_final(res);
   rs_reel_result_destroy(&res);
@@ -279,7 +282,8 @@ static void file_round_trip(void)
     }
     if (sr && st && rad && fr && ft) {
       for (size_t i = 0; i < (size_t)S * n; ++i)
-        diff += !same_bits(sr[i], res->stage_sigma_r[i]) || !same_bits(st[i], res->stage_sigma_theta[i]);
+        diff += !same_bits(sr[i], res->stage_sigma_r[i]) ||
+                !same_bits(st[i], res->stage_sigma_theta[i]);
       for (int s = 0; s < S; ++s)
         diff += !same_bits(rad[s], res->stage_radius[s]) || layers[s] != res->stage_layers[s];
       /* the last stored stage is /final, exactly */
