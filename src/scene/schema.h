@@ -37,6 +37,7 @@ typedef struct ys_material {
   char *name, *source, *notes;
   double caliper, E_theta, nu_rtheta, G_rtheta, density;
   double pressure_limit, friction_layer; /* defect checks */
+  double E_z, E_cd, nu_md_cd; /* the sheet in the contact nip (docs/nip.md) */
   ys_radial radial;
 } ys_material;
 
