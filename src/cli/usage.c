@@ -30,18 +30,20 @@ static const char set_help[] =
     "                      --set material=pet-film --set nip.friction.roll=0.25\n";
 
 static const char run_help[] =
-    "usage: reelsim run SCENE [-o FILE] [--set key.path=value ...] [--quiet]\n"
+    "usage: reelsim run SCENE [-o FILE] [--csv DIR] [--set key.path=value ...] [--quiet]\n"
     "\n"
     "Winds the reel SCENE describes layer by layer, writes the result to an HDF5 file\n"
     "(output.file of the scene, or FILE) and prints a summary: active effects, final\n"
     "radius, layers, core pressure, peak pressure, least hoop stress, wound-on tension\n"
-    "range, wall time.\n"
+    "range, wall time, and the defect-risk indicators (docs/defects.md).\n"
     "\n"
     "options:\n"
     "  -o, --output FILE\n"
     "                 write the result here (same as --set output.file=FILE)\n"
+    "  --csv DIR      also write DIR/<scene>-profile.csv and DIR/<scene>-wot.csv\n"
+    "                 (DIR must exist)\n"
     "%s"
-    "  -q, --quiet    print nothing but errors\n"
+    "  -q, --quiet    print nothing but errors (no summary, no progress bar)\n"
     "\n"
     "Ctrl-C stops the run after the current step: no file is written, exit status 130.\n"
     "exit status: 0 ok, 2 bad input, 3 the solver failed, 130 interrupted, 1 other\n";
