@@ -35,3 +35,8 @@ rs_cli_test(bad_accel_without_friction 2 [[--set winding\.accel_torque=50: the i
             check ${SC}/small.yaml --set winding.accel_torque=50)
 
 rs_cli_script(progress_tty progress_tty.sh ${CASES}/newsprint-falling-taper.yaml)
+
+# A steep rising taper compresses the inner layers (the issue's hoop-compression warning).
+rs_cli_test(rising_taper_warning 0
+            [[WARNING: hoop compression \(sigma_theta < 0: starring/buckling risk\) in [0-9]+ layers at r = [0-9.]+ \.\. [0-9.]+ mm. least -[0-9.]+ MPa]]
+            run ${SC}/rising-taper.yaml -o rising-taper.h5)
