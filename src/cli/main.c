@@ -20,15 +20,20 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "help") == 0 && argc > 2) return cli_usage(stdout, argv[2]);
     return cli_usage(stdout, NULL);
   }
-  if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0) {
+  if (strcmp(cmd, "plot") == 0) return cli_plot(argc, argv);
+  if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0 && strcmp(cmd, "compare") != 0) {
     if (cmd[0] == '-')
       return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
-    return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (commands: run, check, help)", cmd);
+    return cli_fail(CLI_EXIT_USAGE,
+                    "unknown command '%s' (commands: run, check, compare, plot, help)", cmd);
   }
 
   cli_args a;
   int code = cli_parse(argc, argv, 2, &a);
-  if (code < 0) code = strcmp(cmd, "run") == 0 ? cli_run(&a) : cli_check(&a);
+  if (code < 0)
+    code = strcmp(cmd, "run") == 0       ? cli_run(&a)
+           : strcmp(cmd, "compare") == 0 ? cli_compare(&a)
+                                         : cli_check(&a);
   cli_args_free(&a);
   return code;
 }
