@@ -10,9 +10,9 @@
 
 enum { MAX_STAGES = 5 };
 
-/* Stages are grey, darker the later; the final state in colour on top. */
-static const char *const stage_grey[MAX_STAGES] = {"#d0d0d0", "#b4b4b4", "#989898", "#7c7c7c",
-                                                   "#606060"};
+/* Stages in light to dark purple, the later the darker; the final state in blue on top. */
+static const char *const stage_color[MAX_STAGES] = {"#cbc9e2", "#aeabd3", "#9390c4", "#7b6db5",
+                                                    "#6a51a3"};
 static const char final_color[] = "#1f77b4";
 
 /* /history, if there: which stages to draw (up to MAX_STAGES, evenly spread, the final
@@ -73,7 +73,7 @@ static rs_status history_curves(plot_ctx *c, const run_data *d, const history *h
     for (size_t j = 0; j < h->cols; ++j) y[j] = scale * h->stress[s * h->cols + j];
     char style[128], title[128];
     snprintf(style, sizeof style, "with lines linewidth 1.5 linecolor rgb '%s'",
-             stage_grey[MAX_STAGES - h->n_pick + k]);
+             stage_color[MAX_STAGES - h->n_pick + k]);
     snprintf(title, sizeof title, "after %.0f layers (r = %.1f mm)", h->layers[s],
              h->outer[s] * 1e3);
     st = plot_curve(c, d->r_mm, y, h->cols, style, title, NULL);
@@ -188,15 +188,17 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
   if (st != RS_OK) return st;
-  int nip = 0;
-  for (size_t j = 0; j < d->n; ++j) nip = nip || d->nip[j] != 0.0;
+  double nip_max = 0.0;
+  for (size_t j = 0; j < d->n; ++j) nip_max = fmax(nip_max, d->nip[j]);
+  int nip = nip_max > 0.0;
   plot_title(c, d->title, nip ? "wound-on tension T0 and the recipe (web tension, nip load)"
                               : "wound-on tension T0 and the web tension of the recipe");
   axes_radius(c);
   rs_gp_printf(&c->gp, "set ylabel 'tension per unit width (N/m)'\n");
   if (nip)
+    /* from 0 with headroom, so a constant load does not hide in the top border */
     rs_gp_printf(&c->gp, "set ytics nomirror\nset y2tics\nset y2label 'nip load (N/m)'\n"
-                         "set y2range [0:*]\n");
+                         "set y2range [0:%.10g]\n", 1.15 * nip_max);
   st = plot_curve(c, d->r_mm, d->web, d->n,
                   "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",
                   "web tension (recipe)", NULL);
