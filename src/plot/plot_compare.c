@@ -29,7 +29,7 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
   snprintf(head, sizeof head, "comparison of %d run%s (%s)", n, n == 1 ? "" : "s", c->stem);
   plot_title(c, head, figs[q].what);
   rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset ylabel '%s'\nset grid\n"
-                       "set key below left Left reverse\n",
+                       "set key below left Left reverse height 1.5\n",
                figs[q].ylabel);
   if (q == Q_HOOP) rs_gp_printf(&c->gp, "set xzeroaxis linetype -1\n");
   for (int i = 0; st == RS_OK && i < n; ++i) {
