@@ -39,7 +39,12 @@ static inline int png_unfilter(unsigned char *raw, uint32_t h, size_t stride, in
     for (size_t i = 0; i < stride; ++i) {
       int a = i >= (size_t)bpp ? px[i - bpp] : 0, b = prev ? prev[i] : 0;
       int c = prev && i >= (size_t)bpp ? prev[i - bpp] : 0;
-      int add = f == 0 ? 0 : f == 1 ? a : f == 2 ? b : f == 3 ? (a + b) / 2 : f == 4 ? png_paeth(a, b, c) : -1;
+      int add = f == 0   ? 0
+                : f == 1 ? a
+                : f == 2 ? b
+                : f == 3 ? (a + b) / 2
+                : f == 4 ? png_paeth(a, b, c)
+                         : -1;
       if (add < 0) return -1;
       px[i] = (unsigned char)(px[i] + add);
     }

@@ -208,7 +208,8 @@ rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const 
   if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
       (space = H5Screate_simple(1, dims, NULL)) < 0)
     st = H5_FAIL(loc, name, "make the string type or dataspace for");
-  if (st == RS_OK) st = write_typed(loc, name, type, type, space, H5P_DEFAULT, strings, "", description);
+  if (st == RS_OK)
+    st = write_typed(loc, name, type, type, space, H5P_DEFAULT, strings, "", description);
   if (space >= 0) H5Sclose(space);
   if (type >= 0) H5Tclose(type);
   return st;

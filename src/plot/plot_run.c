@@ -32,7 +32,9 @@ static void history_free(history *h)
   memset(h, 0, sizeof *h);
 }
 
-/* Reads base/history/<what> when the file has a history; h->n_pick = 0 when not. */
+/* Reads base/history/<what> when the file has a history; h->n_pick = 0 when not, or when
+ * its layout is not the one this code knows (docs/output.md): the plot then shows the
+ * final state alone rather than failing. */
 static rs_status history_read(plot_ctx *c, const run_data *d, const char *what, history *h)
 {
   char path[PLOT_PATH];
@@ -47,9 +49,12 @@ static rs_status history_read(plot_ctx *c, const run_data *d, const char *what, 
   if (st == RS_OK)
     st = rs_reader_read_1d(c->rd, plot_at(path, "%s/history/outer_radius", d->base),
                            &h->outer, &ns);
-  if (st == RS_OK && (nl != h->stages || ns != h->stages || h->cols > d->n))
-    st = RS_ERROR(RS_ERR_INPUT, "%s: %s/history: the stage arrays do not agree",
-                  rs_reader_path(c->rd), d->base);
+  if (st == RS_ERR_INPUT || (st == RS_OK && (nl != h->stages || ns != h->stages ||
+                                             h->cols > d->n))) {
+    rs_error_clear();
+    history_free(h);
+    return RS_OK;
+  }
   if (st != RS_OK) {
     history_free(h);
     return st;
@@ -83,7 +88,7 @@ static rs_status history_curves(plot_ctx *c, const run_data *d, const history *h
 }
 
 /* Flagged ranges of a defect rule, as radius bands (mm) from the inner edge of the first
- * layer to the outer edge of the last. */
+ * layer to the outer edge of the last (none when the file has none, or another layout). */
 static rs_status defect_bands(plot_ctx *c, const run_data *d, const char *rule,
                               const char *color, int *drawn)
 {
@@ -96,6 +101,11 @@ static rs_status defect_bands(plot_ctx *c, const run_data *d, const char *rule,
   size_t n0 = 0, n1 = 0;
   rs_status st = rs_reader_read_1d(c->rd, p0, &r0, &n0);
   if (st == RS_OK) st = rs_reader_read_1d(c->rd, p1, &r1, &n1);
+  if (st == RS_ERR_INPUT) { /* not the layout this code knows: no bands */
+    rs_error_clear();
+    st = RS_OK;
+    n0 = 0;
+  }
   if (st == RS_OK && n0 == n1 && n0 > 0) {
     double t = d->n >= 2 ? d->r_mm[1] - d->r_mm[0] : 0.0;
     for (size_t k = 0; k < n0; ++k) {

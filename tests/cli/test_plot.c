@@ -209,6 +209,45 @@ static void plain_run(void)
   free(tmp);
 }
 
+/* Optional groups in a layout this code does not know (a 1-D history, a profile without
+ * pressure): the plots are drawn without them rather than failing. */
+static void odd_optional_groups(void)
+{
+  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *file = write_run_file(dir, "odd.h5", N_LAYERS);
+  hid_t f = H5Fopen(file, H5F_ACC_RDWR, H5P_DEFAULT), g, n, h;
+  double v[3] = {1, 2, 3};
+  CHECK(rs_h5_group_create(f, "history", &g) == RS_OK);
+  write_1d(g, "sigma_r", v, 3);
+  write_1d(g, "sigma_theta", v, 3);
+  H5Gclose(g);
+  CHECK(rs_h5_group_create(f, "nip", &n) == RS_OK);
+  CHECK(rs_h5_group_create(n, "profiles", &g) == RS_OK);
+  CHECK(rs_h5_group_create(g, "0", &h) == RS_OK);
+  write_1d(h, "x", v, 3);
+  H5Gclose(h);
+  H5Gclose(g);
+  H5Gclose(n);
+  H5Fclose(f);
+  char **out = NULL;
+  int k = 0;
+  CHECK(rs_plot_file(file, dir, NULL, &out, &k) == RS_OK);
+  CHECK(k == 3);
+  for (int i = 0; i < k; ++i) {
+    png_image img;
+    if (!read_plot(out[i], &img)) continue;
+    CHECK(png_count(&img, LAST_STAGE) == 0);
+    free(img.rgb);
+  }
+  rs_plot_list_free(&out, k);
+  CHECK(syn_count_entries(tmp) == 0);
+  remove_plots(dir);
+  rmdir(tmp);
+  free(file);
+  free(dir);
+  free(tmp);
+}
+
 /* A comparison: each run in its own colour in every overlay. */
 static void compare_overlay(void)
 {
@@ -405,6 +444,7 @@ static void checker_sees_blank(void)
 static const check_case cases[] = {
     {"rich_run", rich_run},
     {"plain_run", plain_run},
+    {"odd_optional_groups", odd_optional_groups},
     {"compare_overlay", compare_overlay},
     {"empty_run", empty_run},
     {"refuses_bad_input", refuses_bad_input},
