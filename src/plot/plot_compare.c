@@ -1,5 +1,6 @@
 /* The figures of a comparison file: each quantity with every run overlaid, one colour
  * per run, the legend naming the run and its scene's title. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -32,6 +33,13 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
                        "set key below left Left reverse height 1.5\n",
                figs[q].ylabel);
   if (q == Q_HOOP) rs_gp_printf(&c->gp, "set xzeroaxis linetype -1\n");
+  if (q == Q_TENSION) { /* from 0: constant recipes would otherwise sit on the border */
+    double t_max = 0.0;
+    for (int i = 0; i < n; ++i)
+      for (size_t j = 0; j < runs[i].n; ++j)
+        t_max = fmax(t_max, fmax(runs[i].t0[j], runs[i].web[j]));
+    if (t_max > 0.0) rs_gp_printf(&c->gp, "set yrange [0:%.10g]\n", 1.1 * t_max);
+  }
   for (int i = 0; st == RS_OK && i < n; ++i) {
     const run_data *d = &runs[i];
     const double *y = q == Q_PRESSURE ? d->p_kpa : q == Q_HOOP ? d->hoop_mpa : d->t0;

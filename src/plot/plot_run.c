@@ -198,17 +198,23 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
   if (st != RS_OK) return st;
-  double nip_max = 0.0;
-  for (size_t j = 0; j < d->n; ++j) nip_max = fmax(nip_max, d->nip[j]);
+  double nip_max = 0.0, t_max = 0.0;
+  for (size_t j = 0; j < d->n; ++j) {
+    nip_max = fmax(nip_max, d->nip[j]);
+    t_max = fmax(t_max, fmax(d->t0[j], d->web[j]));
+  }
   int nip = nip_max > 0.0;
   plot_title(c, d->title, nip ? "wound-on tension T0 and the recipe (web tension, nip load)"
                               : "wound-on tension T0 and the web tension of the recipe");
   axes_radius(c);
+  /* from 0, with room for the legend above the curves: constant recipes are common and
+   * would otherwise sit on the border; the load's axis goes to twice its greatest value so
+   * that a constant load and a constant T0 do not draw on top of each other */
   rs_gp_printf(&c->gp, "set ylabel 'tension per unit width (N/m)'\n");
+  if (t_max > 0.0) rs_gp_printf(&c->gp, "set yrange [0:%.10g]\n", 1.3 * t_max);
   if (nip)
-    /* from 0 with headroom, so a constant load does not hide in the top border */
     rs_gp_printf(&c->gp, "set ytics nomirror\nset y2tics\nset y2label 'nip load (N/m)'\n"
-                         "set y2range [0:%.10g]\n", 1.15 * nip_max);
+                         "set y2range [0:%.10g]\n", 2.0 * nip_max);
   st = plot_curve(c, d->r_mm, d->web, d->n,
                   "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",
                   "web tension (recipe)", NULL);
