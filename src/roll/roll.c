@@ -350,16 +350,25 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     roll->block_share[i] = total > 0.0 ? above / total : 0.0;
   }
   const double Ls = roll->L[k], scale = -total / s;
-  double ds0 = scale * exp(roll->L[0] - Ls);
-  if (!isfinite(ds0))
-    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)", s);
-  roll->core_sigma += ds0;
-  for (int j = 1; j <= k; ++j) {
+  /* First every node's increment (ds into L, ds + r ds' into w, which are spent), then the
+   * state: an increment that fails leaves the roll exactly as it was, every finished
+   * layer intact. */
+  for (int j = 0; j <= k; ++j) {
     double ds = scale * exp(roll->L[j] - Ls);
-    double hoop = ds * (1.0 + roll->w[j]); /* ds + r ds' */
-    if (!isfinite(ds) || !isfinite(hoop))
+    double hoop = ds * (1.0 + roll->w[j]);
+    if (!isfinite(ds) || !isfinite(hoop)) {
+      if (j == 0)
+        return RS_ERROR(RS_ERR_SOLVER,
+                        "non-finite stress increment at the core (outer radius %.9g m)", s);
       return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
                       rc + j * t, j);
+    }
+    roll->L[j] = ds;
+    roll->w[j] = hoop;
+  }
+  roll->core_sigma += roll->L[0];
+  for (int j = 1; j <= k; ++j) {
+    double ds = roll->L[j], hoop = roll->w[j];
     if (j <= k_old) {
       roll->sigma_r[j - 1] += ds;
       roll->sigma_theta[j - 1] += hoop;
