@@ -247,8 +247,11 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   roll->cvode_msg[0] = '\0';
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      /* w relaxes from kc towards g - 1 over dx ~ 1/(2g): start inside that scale */
-      CVodeSetInitStep(roll->cvode, 0.05 / sqrt(roll->g2[0] + 1.0)) != CV_SUCCESS)
+      /* w relaxes from kc towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much
+       * softer than the web: kc = E_theta/E_c - 1) like 1/(x - x_c + 1/kc), over dx ~ 1/kc:
+       * start inside the shorter scale, or the first Newton iterations diverge */
+      CVodeSetInitStep(roll->cvode,
+                       0.05 / fmax(sqrt(roll->g2[0] + 1.0), fabs(roll->kc) + 1.0)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
 
   int next = 1; /* next node to fill */
