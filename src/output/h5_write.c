@@ -39,6 +39,8 @@ static rs_status write_root_attributes(hid_t file, const rs_scene *scene,
   if ((st = rs_h5_attr_string(file, "scene", scene->resolved_text)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(file, "layers", n)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(file, "layers_planned", scene->n_layers)) != RS_OK) return st;
+  /* 0: a run that stopped early, written on request (reelsim run --keep-partial) */
+  if ((st = rs_h5_attr_int64(file, "complete", n == scene->n_layers)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(file, "final_radius", final_radius)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(file, "core_pressure", res->core_pressure)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(file, "increments", res->increments)) != RS_OK) return st;
