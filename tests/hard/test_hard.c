@@ -6,7 +6,7 @@
  *   soft_pfeiffer_g2_1e8                     Pfeiffer, K1 = 1 Pa: bounds, rtol convergence, equilibrium
  *   core_very_soft_limit                     E_c -> 0: core pressure ~ E_c -> 0 (closed form, limit)
  *   core_stiff_soft_web                      E_c sweep 1e3..1e13 Pa, soft web: monotone, rigid limit
- *   thin_film_100k                           100,000 layers of 6 um (lumped 20 per step): closed form
+ *   thin_film_100k                           100,000 layers of 6 um (lumped increments): closed form
  *   ratio_20                                 roll/core radius 20: closed form (linear), bounds (Pfeiffer)
  *   tension_scaling_linear                   T from 1e-9 to 1e6 N/m: sigma/T the same (linear law)
  *   tension_limits_pfeiffer                  T -> 0: the linear law of modulus K1 K2; T huge: bounds
@@ -249,18 +249,41 @@ static double lumped_at(double g, double kc, double rc, double t, int k_end, int
   return j <= k0 ? ds : ds * (double)(k_end - j + 1) / mb;
 }
 
+/* Core pressure of the lumped closed form, blocks of mb layers (mb = 1: exact accretion). */
+static double lumped_core(double g, double kc, double rc, double t, int n, int mb, double T)
+{
+  double sum = 0.0;
+  for (int k_end = mb;; k_end += mb) {
+    if (k_end > n) k_end = n;
+    int b = k_end % mb ? k_end % mb : mb;
+    sum += lumped_at(g, kc, rc, t, k_end, b, T, 0);
+    if (k_end == n) break;
+  }
+  return -sum;
+}
+
+/* The engine lumps 20 layers per increment; 50 under AddressSanitizer, which makes it 5x
+ * slower (the checks are the same). */
+#if defined(__SANITIZE_ADDRESS__)
+enum { THIN_FILM_M = 50 };
+#else
+enum { THIN_FILM_M = 20 };
+#endif
+
 /* 100,000 layers of a 6 um film (PET-like E_theta = 5e9 Pa, linear E_r = 5e6 Pa, g = 31.6)
- * on a 76.2 mm core: r = 0.0762 -> 0.6762 m. One layer per increment costs ~240 s here, so
- * the test lumps m = 20 layers per increment (~7 s; docs/robustness.md). Expectations:
+ * on a 76.2 mm core: r = 0.0762 -> 0.6762 m. One layer per increment would cost ~100 s of
+ * CPU here, so the engine lumps m = THIN_FILM_M layers per increment (~6 s of CPU;
+ * docs/robustness.md). Expectations:
  *  (a) numerics: the engine equals the closed form of the same lumped increments (Altmann
- *      per block, shared as the engine shares) at the core and 12 sampled layers, to 1e-6;
+ *      per block, shared as the engine shares) at the core to 2e-6 (= 20 rtol, measured
+ *      5e-7) and at 12 sampled layers to 1e-6 (measured 5e-8);
  *  (b) model: the lumped closed form approaches single-layer accretion (the closed form
- *      with m = 1) at first order in m: the core-pressure error halves from m = 40 to 20
- *      and from 20 to 10 (ratios 2 +- 10%), and is below 5% at m = 20. */
+ *      with m = 1) at first order in m: the core-pressure error doubles from m = 10 to 20
+ *      and from 20 to 40 (ratios 2 +- 10%), and is below 5% at m = 20. */
 static void thin_film_100k(void)
 {
   const double rc = 0.0762, t = 6e-6, Et = 5e9, Er = 5e6, T = 100.0;
-  const int n = 100000, m = 20;
+  const int n = 100000, m = THIN_FILM_M;
   const double g = sqrt(Et / Er), kc = -1.0;
   rs_roll_params p = linear_params(rc, t, Et, Er, INFINITY, n);
   p.rtol = 1e-7;
@@ -270,30 +293,20 @@ static void thin_film_100k(void)
   CHECK(all_finite(roll));
   rs_roll_stats stats;
   rs_roll_get_stats(roll, &stats);
+  CHECK_LOG("layers per increment", m);
   CHECK_LOG("increments", stats.increments);
   CHECK_LOG("CVODE steps", stats.cvode_steps);
+  double lumped = lumped_core(g, kc, rc, t, n, m, T);
+  CHECK_LOG("core pressure, engine (Pa)", rs_roll_core_pressure(roll));
+  CHECK_LOG("core pressure, lumped closed form (Pa)", lumped);
+  CHECK_CLOSE(rs_roll_core_pressure(roll), lumped, 2e-6);
 
-  /* core pressure of the lumped closed form for block sizes 1 (exact accretion), m/2, m, 2m */
-  double core[4];
-  const int mbs[4] = {1, m / 2, m, 2 * m};
-  for (int c = 0; c < 4; ++c) {
-    double sum = 0.0;
-    for (int k_end = mbs[c];; k_end += mbs[c]) {
-      if (k_end > n) k_end = n;
-      int mb = k_end % mbs[c] ? k_end % mbs[c] : mbs[c];
-      sum += lumped_at(g, kc, rc, t, k_end, mb, T, 0);
-      if (k_end == n) break;
-    }
-    core[c] = -sum;
-  }
-  CHECK_LOG("core pressure, engine m = 20 (Pa)", rs_roll_core_pressure(roll));
-  CHECK_LOG("core pressure, lumped closed form m = 20", core[2]);
-  CHECK_LOG("core pressure, closed form m = 1 (Pa)", core[0]);
-  CHECK_CLOSE(rs_roll_core_pressure(roll), core[2], 1e-6);
-  double e[3];
-  for (int c = 1; c < 4; ++c) {
-    e[c - 1] = fabs(core[c] - core[0]) / core[0];
-    printf("  lumping error of the core pressure, m = %-3d %.17g\n", mbs[c], e[c - 1]);
+  const int mbs[3] = {10, 20, 40};
+  double exact = lumped_core(g, kc, rc, t, n, 1, T), e[3];
+  CHECK_LOG("core pressure, closed form m = 1 (Pa)", exact);
+  for (int c = 0; c < 3; ++c) {
+    e[c] = fabs(lumped_core(g, kc, rc, t, n, mbs[c], T) - exact) / exact;
+    printf("  lumping error of the core pressure, m = %-3d %.17g\n", mbs[c], e[c]);
   }
   CHECK_CLOSE(e[1] / e[0], 2.0, 0.1);
   CHECK_CLOSE(e[2] / e[1], 2.0, 0.1);
