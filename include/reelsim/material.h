@@ -45,6 +45,11 @@ typedef struct rs_material {
   double nu_rtheta;  /* Poisson ratio in the Hakiel core condition */
   rs_radial_law radial;
   double G_rtheta;   /* Pa: in-plane shear modulus (nip model); 0 = not given */
+  /* The sheet and the roll in the nip (contact model, docs/nip.md); 0 = not given: */
+  double E_z;        /* Pa: thickness (ZD) modulus of one sheet; 0 = the roll's nip E_r */
+  double E_cd;       /* Pa: cross-direction modulus (plane strain); 0 = E_theta */
+  double nu_md_cd;   /* MD stress -> CD strain Poisson ratio (plane strain); the scene's
+                        default is 0.3, a value given here is used as is (0 is 0) */
   double density;    /* kg/m^3; 0 = not given */
 } rs_material;
 

@@ -28,6 +28,8 @@ int cli_parse(int argc, char **argv, int first, cli_args *a);
 void cli_args_free(cli_args *a);
 
 int cli_check(const cli_args *a);
+/* reelsim nip SCENE --radius R [--json] [--set k=v]...: one contact nip (cmd_nip.c). */
+int cli_nip(int argc, char **argv, int first);
 int cli_run(const cli_args *a);
 
 /* Help: the general text (cmd NULL) or one command's. 0 if cmd is known, else 2. */

@@ -20,10 +20,11 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "help") == 0 && argc > 2) return cli_usage(stdout, argv[2]);
     return cli_usage(stdout, NULL);
   }
+  if (strcmp(cmd, "nip") == 0) return cli_nip(argc, argv, 2);
   if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0) {
     if (cmd[0] == '-')
       return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
-    return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (commands: run, check, help)", cmd);
+    return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (commands: run, check, nip, help)", cmd);
   }
 
   cli_args a;

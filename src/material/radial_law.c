@@ -2,6 +2,8 @@
  * radial direction at interlayer pressure P (Pa, compression positive). */
 #include <math.h>
 
+#include "util/bracket.h"
+
 #include "reelsim/material.h"
 
 /* Fritsch & Carlson (1980) monotone cubic slopes: harmonic-mean interior slopes,
@@ -106,11 +108,7 @@ double rs_radial_modulus(const rs_radial_law *law, double P)
     int n = law->n_points;
     if (n == 1 || P <= law->P[0]) return law->E[0];
     if (P >= law->P[n - 1]) return law->E[n - 1];
-    int lo = 0, hi = n - 1;
-    while (hi - lo > 1) {
-      int mid = (lo + hi) / 2;
-      if (law->P[mid] <= P) lo = mid; else hi = mid;
-    }
+    int lo = rs_bracket(law->P, n, P), hi = lo + 1;
     double h = law->P[hi] - law->P[lo], s = (P - law->P[lo]) / h;
     double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
     double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);

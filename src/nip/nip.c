@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "reelsim/nip.h"
+#include "reelsim/nip_contact.h"
 
 struct rs_nip {
   const rs_nip_ops *ops;
@@ -39,13 +40,11 @@ const char *rs_nip_name(const rs_nip *nip) { return nip ? nip->ops->name : "none
 
 rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out)
 {
-  (void)material;
   *out = NULL;
   switch (spec->model) {
   case RS_NIP_NONE: return RS_OK; /* no nip, no nip code */
   case RS_NIP_FRICTION: return rs_nip_friction_create(spec->mu_roll, out);
-  case RS_NIP_CONTACT:
-    return RS_ERROR(RS_ERR_INPUT, "nip.model: 'contact' is not available in this build yet");
+  case RS_NIP_CONTACT: return rs_nip_contact_nip_create(spec, material, out);
   }
   return RS_ERROR(RS_ERR_INPUT, "nip.model: unknown model %d", (int)spec->model);
 }

@@ -1,6 +1,8 @@
 /* Winding recipes over roll radius r in [r0, r1] (r0 core, r1 final radius). */
 #include <math.h>
 
+#include "util/bracket.h"
+
 #include "reelsim/recipe.h"
 
 /* constant   start
@@ -34,11 +36,7 @@ double rs_recipe_eval(const rs_recipe *rc, double r)
     int n = rc->n_points;
     if (n == 1 || r <= rc->r[0]) return rc->value[0];
     if (r >= rc->r[n - 1]) return rc->value[n - 1];
-    int lo = 0, hi = n - 1;
-    while (hi - lo > 1) {
-      int mid = (lo + hi) / 2;
-      if (rc->r[mid] <= r) lo = mid; else hi = mid;
-    }
+    int lo = rs_bracket(rc->r, n, r), hi = lo + 1;
     double s = (r - rc->r[lo]) / (rc->r[hi] - rc->r[lo]);
     return rc->value[lo] + s * (rc->value[hi] - rc->value[lo]);
   }

@@ -112,6 +112,17 @@ rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material 
     return ys_fail(root, "material.G_rtheta", "must be > 0 Pa (got %g)", y->G_rtheta);
   if (ys_has(root, "material.density") && !(y->density > 0.0))
     return ys_fail(root, "material.density", "must be > 0 kg/m^3 (got %g)", y->density);
+  /* the sheet in the contact nip (docs/nip.md): 0 = derived (E_z: the roll's nip E_r,
+   * E_cd: E_theta); nu_md_cd defaults to 0.3, a typical in-plane Poisson ratio of paper */
+  if (ys_has(root, "material.E_z") && !(y->E_z > 0.0))
+    return ys_fail(root, "material.E_z", "must be > 0 Pa (got %g)", y->E_z);
+  if (ys_has(root, "material.E_cd") && !(y->E_cd > 0.0))
+    return ys_fail(root, "material.E_cd", "must be > 0 Pa (got %g)", y->E_cd);
+  if (ys_has(root, "material.nu_md_cd") && !(y->nu_md_cd > -1.0 && y->nu_md_cd < 1.0))
+    return ys_fail(root, "material.nu_md_cd", "must lie in (-1, 1) (got %g)", y->nu_md_cd);
+  m->E_z = y->E_z;
+  m->E_cd = y->E_cd;
+  m->nu_md_cd = ys_has(root, "material.nu_md_cd") ? y->nu_md_cd : 0.3;
   m->caliper = y->caliper;
   m->E_theta = y->E_theta;
   m->nu_rtheta = y->nu_rtheta;

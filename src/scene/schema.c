@@ -65,6 +65,9 @@ static const cyaml_schema_field_t material_fields[] = {
     CYAML_FIELD_FLOAT("nu_rtheta", OPT, ys_material, nu_rtheta),
     CYAML_FIELD_FLOAT("G_rtheta", OPT, ys_material, G_rtheta),
     CYAML_FIELD_FLOAT("density", OPT, ys_material, density),
+    CYAML_FIELD_FLOAT("E_z", OPT, ys_material, E_z),
+    CYAML_FIELD_FLOAT("E_cd", OPT, ys_material, E_cd),
+    CYAML_FIELD_FLOAT("nu_md_cd", OPT, ys_material, nu_md_cd),
     CYAML_FIELD_MAPPING("radial", REQ, ys_material, radial, radial_fields),
     CYAML_FIELD_END};
 

@@ -36,6 +36,7 @@ typedef struct ys_radial {
 typedef struct ys_material {
   char *name, *source, *notes;
   double caliper, E_theta, nu_rtheta, G_rtheta, density;
+  double E_z, E_cd, nu_md_cd; /* the sheet in the contact nip (docs/nip.md) */
   ys_radial radial;
 } ys_material;
 

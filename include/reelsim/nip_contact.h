@@ -1,0 +1,134 @@
+/* The winding nip as a contact problem (seed paper, eqs. (12)-(22)): wound roll (upper
+ * cylinder 1), sheet, drum or rider (lower cylinder 2), stick/slip friction on both faces
+ * of the sheet, and the wound-on tension T0 from the wound-on condition xi1 = 0.
+ *
+ * SIGN CONVENTIONS (docs/nip.md)
+ *   x        along the sheet, in the direction of travel; the sheet enters at x = -a with
+ *            tension Ti and leaves at x = +a with T0 (N/m).
+ *   pressure p(x) >= 0, compression positive (the paper's sigma+- = h = -p).
+ *   shear    tau+ = tau_xy(x, +h), tau- = tau_xy(x, -h) of the sheet (the paper's), Pa.
+ *            The roll feels -tau+ in +x, the drum +tau-. Sheet equilibrium:
+ *            N(x) = Ti - int_{-a}^{x} (tau+ - tau-) dx, N(a) = T0.
+ *   slip     velocity of the sheet face relative to the cylinder surface, per unit speed:
+ *            s+ = eps_sheet - eps_1 + xi1 (xi1 = 0), s- = eps_sheet - eps_2 + xi2.
+ *            In slip the friction on the cylinder (-tau+ resp. +tau-) has the sign of s and
+ *            magnitude mu p; stick: s = 0 and |tau| <= mu p. Dissipation is >= 0.
+ *   winder   M1/R1 = int tau+ + T0 = share * Ti with share = 1 (center: undriven rider,
+ *            M2 = 0), 0 (surface: undriven roll, M1 = 0), torque_share (center-surface).
+ *
+ * DISCRETISATION: M nodes x_i = -a + i dx, dx = 2a/(M-1). Pressure piecewise linear (hat
+ * functions, eq. (16)-(18)), zero at both ends. Shear piecewise CONSTANT on the M-1
+ * elements and the stick/slip conditions at the element midpoints (staggered): the paper's
+ * literal collocation (hat shear, stick at the nodes) is singular (docs/nip.md).
+ * Unknowns: M-2 pressures, 2(M-1) shears, delta0, eps0, xi2, T0 (3M). Equations:
+ * indentation (12) at the nodes (M), stick (13)-(14) or slip (15) at the midpoints
+ * (2(M-1)), sheet equilibrium and winder torque (20) (2).
+ *
+ * Thread safety: a handle is used by one thread at a time. No I/O. */
+#ifndef REELSIM_NIP_CONTACT_H
+#define REELSIM_NIP_CONTACT_H
+
+#include "reelsim/cylinder.h"
+#include "reelsim/material.h"
+#include "reelsim/nip.h"
+#include "reelsim/scene.h"
+#include "reelsim/sheet.h"
+#include "reelsim/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rs_nip_contact_config {
+  rs_ortho drum;               /* constants of the lower cylinder (plane strain) */
+  double drum_radius;          /* m */
+  double drum_core_radius;     /* m, rigid core; 0 < core < radius */
+  rs_sheet sheet;
+  double mu_roll;              /* upper contact (sheet on roll), >= 0 */
+  double mu_drum;              /* lower contact (sheet on drum), >= 0 */
+  rs_winder_kind winder;
+  double torque_share;         /* center-surface: M1/R1 = share * Ti, in [0, 1] */
+  int nodes;                   /* M >= 4 */
+  rs_series_opts series;       /* kernel series; terms = 0 and tol = 0: automatic, 1e-7 */
+  int max_iterations;          /* active-set solves per half-width; 0: 4 M + 40 */
+  double load_rtol;            /* |P(a)/P - 1| at the returned a; 0: 1e-9 */
+} rs_nip_contact_config;
+
+/* One converged nip. Arrays are owned; rs_nip_solution_free releases them. */
+typedef struct rs_nip_solution {
+  int M, capacity;
+  double a;                 /* m, half-width */
+  double dx;                /* m */
+  double load;              /* N/m, int p dx (eq. (21)) of the returned state */
+  double Ti, T0;            /* N/m, incoming and wound-on tension */
+  double xi2;               /* creep of the lower contact */
+  double delta0;            /* m, approach of the cylinder centres */
+  double eps0;              /* m, shift of the nip centre */
+  double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
+  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix */
+  int iterations;           /* active-set solves at the final half-width */
+  int width_iterations;     /* half-widths tried by the load search (1 for a given a) */
+  int total_solves;         /* linear solves in all */
+  double dissipation;       /* int (q+ s+ + q- s-) dx >= 0, N/m per unit speed */
+  double *x;                /* M nodes, m */
+  double *pressure;         /* M, Pa, compression positive */
+  double *x_shear;          /* M-1 element midpoints, m */
+  double *shear_upper;      /* M-1, tau+ (Pa) */
+  double *shear_lower;      /* M-1, tau- (Pa) */
+  double *slip_rate_upper;  /* M-1, s+ (0 where stuck) */
+  double *slip_rate_lower;  /* M-1, s- */
+  unsigned char *slip_upper;/* M-1, 1 = slip */
+  unsigned char *slip_lower;
+} rs_nip_solution;
+
+void rs_nip_solution_free(rs_nip_solution *s);
+
+typedef struct rs_nip_contact rs_nip_contact;
+
+/* Checks the configuration (RS_ERR_INPUT naming the scene key: nip.friction.roll,
+ * nip.friction.drum, nip.drum.radius / core_radius, nip.nodes, nip.torque_share). */
+rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact **out);
+void rs_nip_contact_destroy(rs_nip_contact **nc);
+
+/* The roll (upper cylinder) at this call: constants (plane strain), radius R, core R0.
+ * Keeps the previous solution for a warm start; rebuilds the roll kernels only when
+ * something changed. */
+rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, double R, double R0);
+
+/* Forgets the warm-start state (the next solve starts cold). */
+void rs_nip_contact_forget(rs_nip_contact *nc);
+
+/* Solves the nip for a given half-width a (m) and incoming tension Ti (N/m); the load is
+ * an output (eq. (21)). RS_ERR_SOLVER (with what was tried) if the stick/slip iteration
+ * does not settle. */
+rs_status rs_nip_contact_solve_width(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
+
+/* Solves the nip for a given load P (N/m): finds a with P(a) = P (bracket + Brent on ln a,
+ * warm-started from the previous a). RS_ERR_INPUT naming nip.load if no half-width up to
+ * 0.2 min(R1, R2) carries P, or (surface winder) if mu_drum P < Ti. */
+rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out);
+
+/* ---- from a scene: material + nip spec ------------------------------------------------ */
+
+/* Builds the contact model from the scene's nip spec and material (the drum, the sheet
+ * constants, friction, winder); the roll is set per call by rs_nip_contact_solve_state. */
+rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_material *mat,
+                                          rs_nip_contact **out);
+
+/* One nip at the reel state (roll radius, core radius, Ti, P, surface pressure): chooses
+ * the roll's radial modulus (docs/nip.md: secant stack modulus over the mean nip pressure),
+ * builds the roll and the sheet, and solves for the load. Needs create_from_spec. */
+rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *st,
+                                     rs_nip_solution *out);
+
+/* The radial modulus the roll gets: the secant modulus of the stack law between p0 and
+ * p0 + dp (Pa), (dp) / int_{p0}^{p0+dp} dP / E_r(P); E_r(p0) when dp = 0. */
+double rs_radial_secant_modulus(const rs_radial_law *law, double p0, double dp);
+
+/* The nip seam entry: an rs_nip handle for RS_NIP_CONTACT (used by rs_nip_create). */
+rs_status rs_nip_contact_nip_create(const rs_nip_spec *spec, const rs_material *mat, rs_nip **out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

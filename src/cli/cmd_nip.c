@@ -1,0 +1,130 @@
+/* reelsim nip SCENE --radius R [--json] [--set key=value]...: solves the scene's contact
+ * nip (nip.model: contact) once at roll radius R and reports it (docs/nip.md).
+ * Exit 0 ok, 2 bad input, 3 solver failure. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "reelsim/nip_contact.h"
+#include "reelsim/scene.h"
+
+static void json_array(const char *name, const double *v, int n)
+{
+  printf(",\"%s\":[", name);
+  for (int i = 0; i < n; ++i) printf("%s%.17g", i ? "," : "", v[i]);
+  printf("]");
+}
+
+static void json_bools(const char *name, const unsigned char *v, int n)
+{
+  printf(",\"%s\":[", name);
+  for (int i = 0; i < n; ++i) printf("%s%s", i ? "," : "", v[i] ? "true" : "false");
+  printf("]");
+}
+
+static const char *winder_name(rs_winder_kind w)
+{
+  return w == RS_WINDER_CENTER ? "center" : w == RS_WINDER_SURFACE ? "surface" : "center-surface";
+}
+
+int cli_nip(int argc, char **argv, int first)
+{
+  const char *scene_path = NULL, *radius_text = NULL;
+  int json = 0, n_sets = 0;
+  const char **sets = calloc((size_t)argc, sizeof *sets);
+  if (!sets) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  for (int i = first; i < argc; ++i) {
+    if (!strcmp(argv[i], "--json")) json = 1;
+    else if (!strcmp(argv[i], "--radius") && i + 1 < argc) radius_text = argv[++i];
+    else if (!strcmp(argv[i], "--set") && i + 1 < argc) sets[n_sets++] = argv[++i];
+    else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      free(sets);
+      printf("usage: reelsim nip SCENE --radius R [--json] [--set key.path=value]...\n"
+             "  Solves the scene's contact nip (nip.model: contact) at roll radius R (m):\n"
+             "  half-width, load, wound-on tension T0, stick/slip zones (docs/nip.md).\n");
+      return CLI_EXIT_OK;
+    } else if (argv[i][0] == '-' || scene_path) {
+      free(sets);
+      return cli_fail(CLI_EXIT_USAGE, "nip: unexpected argument '%s' (usage: reelsim nip SCENE "
+                      "--radius R [--json] [--set key=value])", argv[i]);
+    } else scene_path = argv[i];
+  }
+  if (!scene_path || !radius_text) {
+    free(sets);
+    return cli_fail(CLI_EXIT_USAGE, "nip: need SCENE and --radius R (m)");
+  }
+  char *end = NULL;
+  double R = strtod(radius_text, &end);
+  if (!end || *end || !(isfinite(R) && R > 0)) {
+    free(sets);
+    return cli_fail(CLI_EXIT_USAGE, "nip: --radius must be a positive number of metres (got '%s')", radius_text);
+  }
+  rs_scene *scene = NULL;
+  rs_status st = rs_scene_load(scene_path, n_sets, sets, &scene);
+  free(sets);
+  if (st) return cli_fail_status(st);
+  if (scene->nip.model != RS_NIP_CONTACT) {
+    rs_scene_destroy(&scene);
+    return cli_fail(CLI_EXIT_USAGE, "%s: nip.model: 'reelsim nip' needs nip.model: contact", scene_path);
+  }
+  if (!(R > scene->core.radius)) {
+    double rc = scene->core.radius;
+    rs_scene_destroy(&scene);
+    return cli_fail(CLI_EXIT_USAGE, "nip: --radius %g m must exceed the core radius %g m", R, rc);
+  }
+  rs_nip_contact *nc = NULL;
+  rs_nip_solution sol = {0};
+  rs_nip_state ns = {R, scene->core.radius, rs_recipe_eval(&scene->tension, R),
+                     rs_recipe_eval(&scene->nip.load, R), 0.0, 0.0};
+  ns.surface_modulus = rs_radial_modulus(&scene->material.radial, 0.0);
+  st = rs_nip_contact_create_from_spec(&scene->nip, &scene->material, &nc);
+  if (!st) st = rs_nip_contact_solve_state(nc, &ns, &sol);
+  if (st) {
+    rs_error_wrap("%s", scene_path);
+    rs_nip_contact_destroy(&nc);
+    rs_scene_destroy(&scene);
+    return cli_fail_status(st);
+  }
+  int M = sol.M, E = M - 1;
+  if (json) {
+    printf("{\"radius\":%.17g,\"winder\":\"%s\",\"a\":%.17g,\"load\":%.17g,\"Ti\":%.17g,\"T0\":%.17g,"
+           "\"NIT\":%.17g,\"xi2\":%.17g,\"delta0\":%.17g,\"eps0\":%.17g,\"E_r\":%.17g,"
+           "\"iterations\":%d,\"width_iterations\":%d,\"total_solves\":%d,"
+           "\"condition_number\":%.17g,\"dissipation\":%.17g,\"nodes\":%d",
+           R, winder_name(scene->nip.winder), sol.a, sol.load, sol.Ti, sol.T0, sol.T0 - sol.Ti,
+           sol.xi2, sol.delta0, sol.eps0, sol.E_r, sol.iterations, sol.width_iterations,
+           sol.total_solves, sol.condition_number, sol.dissipation, M);
+    json_array("x", sol.x, M);
+    json_array("pressure", sol.pressure, M);
+    json_array("x_shear", sol.x_shear, E);
+    json_array("shear_upper", sol.shear_upper, E);
+    json_array("shear_lower", sol.shear_lower, E);
+    json_bools("slip_upper", sol.slip_upper, E);
+    json_bools("slip_lower", sol.slip_lower, E);
+    printf("}\n");
+  } else {
+    int su = 0, sl = 0;
+    for (int e = 0; e < E; ++e) {
+      su += sol.slip_upper[e];
+      sl += sol.slip_lower[e];
+    }
+    printf("nip at roll radius %g m (%s winder, M = %d)\n", R, winder_name(scene->nip.winder), M);
+    printf("  half-width a        %.6g mm\n", sol.a * 1e3);
+    printf("  load P              %.6g N/m\n", sol.load);
+    printf("  web tension Ti      %.6g N/m\n", sol.Ti);
+    printf("  wound-on tension T0 %.6g N/m (NIT = %.6g N/m, mu_roll P = %.6g N/m)\n", sol.T0,
+           sol.T0 - sol.Ti, scene->nip.mu_roll * sol.load);
+    printf("  peak pressure       %.6g Pa\n", sol.pressure[M / 2]);
+    printf("  roll E_r (secant)   %.6g Pa\n", sol.E_r);
+    printf("  slip elements       roll %d / %d, drum %d / %d\n", su, E, sl, E);
+    printf("  creep xi2           %.6g\n", sol.xi2);
+    printf("  iterations          %d (half-widths %d, solves %d), condition number %.3g\n",
+           sol.iterations, sol.width_iterations, sol.total_solves, sol.condition_number);
+  }
+  rs_nip_solution_free(&sol);
+  rs_nip_contact_destroy(&nc);
+  rs_scene_destroy(&scene);
+  return CLI_EXIT_OK;
+}

@@ -1,0 +1,153 @@
+/* The nip contact handle: configuration checks, the bodies, cached kernels, warm start. */
+#include "nip/contact_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int finite_nonneg(double v) { return isfinite(v) && v >= 0; }
+
+rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact **out)
+{
+  if (!cfg || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  *out = NULL;
+  if (!finite_nonneg(cfg->mu_roll))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.roll must be >= 0 (got %g)", cfg->mu_roll);
+  if (!finite_nonneg(cfg->mu_drum))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.drum must be >= 0 (got %g)", cfg->mu_drum);
+  if (!(isfinite(cfg->drum_radius) && cfg->drum_radius > 0))
+    return RS_ERROR(RS_ERR_INPUT, "nip.drum.radius must be > 0 (got %g m)", cfg->drum_radius);
+  if (!(cfg->drum_core_radius > 0 && cfg->drum_core_radius < cfg->drum_radius))
+    return RS_ERROR(RS_ERR_INPUT, "nip.drum.core_radius must lie in (0, nip.drum.radius = %g m) "
+                    "(got %g m)", cfg->drum_radius, cfg->drum_core_radius);
+  if (cfg->nodes < 4 || cfg->nodes > 4096)
+    return RS_ERROR(RS_ERR_INPUT, "nip.nodes must lie in [4, 4096] (got %d)", cfg->nodes);
+  if (cfg->winder == RS_WINDER_CENTER_SURFACE &&
+      !(cfg->torque_share >= 0 && cfg->torque_share <= 1))
+    return RS_ERROR(RS_ERR_INPUT, "nip.torque_share must lie in [0, 1] (got %g)", cfg->torque_share);
+  if (!(cfg->sheet.h > 0 && isfinite(cfg->sheet.c11) && isfinite(cfg->sheet.c12) &&
+        isfinite(cfg->sheet.c22)))
+    return RS_ERROR(RS_ERR_INPUT, "sheet: half-thickness and compliances must be finite, h > 0");
+
+  rs_nip_contact *nc = calloc(1, sizeof *nc);
+  if (!nc) return RS_ERROR(RS_ERR_MEMORY, "nip contact");
+  nc->cfg = *cfg;
+  if (nc->cfg.max_iterations <= 0) nc->cfg.max_iterations = 4 * cfg->nodes + 40;
+  if (!(nc->cfg.load_rtol > 0)) nc->cfg.load_rtol = 1e-9;
+  /* Default series: 256 accelerated terms (docs/cylinder.md: ~1e-6 on the kernels; the
+   * half-width moves by 5e-7 against a 1e-7 automatic series). The automatic mode doubles
+   * terms to meet its tolerance and overshoots to thousands of terms at every new roll
+   * radius: 7x slower for the same T0. nip.terms sets it; the accuracy study measures it. */
+  if (nc->cfg.series.terms <= 0 && !(nc->cfg.series.tol > 0)) {
+    nc->cfg.series.terms = 256;
+    nc->cfg.series.accelerate = 1;
+  }
+  const int M = cfg->nodes, n = 3 * M, E = M - 1;
+  nc->M = M;
+  nc->n = n;
+  nc->R[1] = cfg->drum_radius;
+  nc->R0[1] = cfg->drum_core_radius;
+  rs_status st = rs_cylinder_create(&cfg->drum, cfg->drum_radius, cfg->drum_core_radius, &nc->body[1]);
+  if (st) {
+    free(nc);
+    return rs_error_wrap("nip.drum");
+  }
+  nc->state = calloc((size_t)2 * E, 1);
+  nc->A = malloc((size_t)n * n * sizeof(double));
+  nc->rhs = malloc((size_t)n * sizeof(double));
+  nc->rs = malloc((size_t)n * sizeof(double));
+  nc->cs = malloc((size_t)n * sizeof(double));
+  nc->z = malloc((size_t)n * sizeof(double));
+  nc->ipiv = malloc((size_t)n * sizeof(lapack_int));
+  nc->visited = malloc((size_t)nc->cfg.max_iterations * 2 * E);
+  nc->eps_sheet = malloc((size_t)4 * E * sizeof(double));
+  if (!nc->state || !nc->A || !nc->rhs || !nc->rs || !nc->cs || !nc->z || !nc->ipiv ||
+      !nc->visited || !nc->eps_sheet) {
+    rs_nip_contact_destroy(&nc);
+    return RS_ERROR(RS_ERR_MEMORY, "nip contact work space (M = %d)", M);
+  }
+  nc->eps_body[0] = nc->eps_sheet + E;
+  nc->eps_body[1] = nc->eps_sheet + 2 * E;
+  nc->pbar = nc->eps_sheet + 3 * E;
+  *out = nc;
+  return RS_OK;
+}
+
+void rs_nip_contact_destroy(rs_nip_contact **pnc)
+{
+  if (!pnc || !*pnc) return;
+  rs_nip_contact *nc = *pnc;
+  for (int b = 0; b < 2; ++b) {
+    rs_cylinder_destroy(&nc->body[b]);
+    for (int k = 0; k < NKER; ++k) rs_kernels_free(&nc->ker[b][k]);
+  }
+  free(nc->state);
+  free(nc->A);
+  free(nc->rhs);
+  free(nc->rs);
+  free(nc->cs);
+  free(nc->z);
+  free(nc->ipiv);
+  free(nc->visited);
+  free(nc->eps_sheet);
+  free(nc);
+  *pnc = NULL;
+}
+
+rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, double R, double R0)
+{
+  if (!nc || !roll) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  if (nc->have_roll && R == nc->R[0] && R0 == nc->R0[0] && !memcmp(roll, &nc->roll_c, sizeof *roll))
+    return RS_OK;
+  rs_cylinder *c = NULL;
+  rs_status st = rs_cylinder_create(roll, R, R0, &c);
+  if (st) return rs_error_wrap("roll (radius %g m, core %g m)", R, R0);
+  rs_cylinder_destroy(&nc->body[0]);
+  nc->body[0] = c;
+  nc->roll_c = *roll;
+  nc->R[0] = R;
+  nc->R0[0] = R0;
+  nc->have_roll = 1;
+  ++nc->roll_version;
+  return RS_OK;
+}
+
+void rs_nip_contact_forget(rs_nip_contact *nc)
+{
+  if (!nc) return;
+  nc->have_warm = 0;
+  nc->warm_a = 0;
+  nc->k_a = 0; /* also drop the kernels: a cold solve recomputes everything */
+}
+
+/* Kernels of eq. (19) for both bodies at half-width a (see contact_internal.h). The
+ * pressure kernels set the number of series terms (automatic, to the configured
+ * tolerance); the shear kernels then use the same number, which keeps the error of the
+ * slowly converging coupling kernel qu (box edges) at the tolerance relative to pu. */
+rs_status rs_nipc_kernels(rs_nip_contact *nc, double a)
+{
+  if (!nc->have_roll) return RS_ERROR(RS_ERR_INPUT, "nip contact: the roll is not set");
+  const int M = nc->M;
+  const double dx = 2 * a / (M - 1);
+  int roll_ok = nc->k_a == a && nc->k_roll_version == nc->roll_version;
+  int drum_ok = nc->k_a == a;
+  for (int b = 0; b < 2; ++b) {
+    if (b == 0 ? roll_ok : drum_ok) continue;
+    rs_cylinder *c = nc->body[b];
+    rs_kernels *k = nc->ker[b];
+    rs_series_opts o = nc->cfg.series;
+    rs_status st = rs_cylinder_kernels(c, RS_BASIS_HAT, dx, 0.0, M, RS_KERNEL_PU | RS_KERNEL_PE, &o, &k[KP]);
+    if (!st) {
+      if (o.terms <= 0) o.terms = k[KP].terms;
+      st = rs_cylinder_kernels(c, RS_BASIS_BOX, dx, -0.5 * dx, M, RS_KERNEL_QU, &o, &k[KQU]);
+    }
+    if (!st) st = rs_cylinder_kernels(c, RS_BASIS_HAT, dx, -0.5 * dx, M, RS_KERNEL_QE, &o, &k[KQE]);
+    if (st) {
+      nc->k_a = 0;
+      return rs_error_wrap("%s kernels at half-width a = %g m (M = %d)", b ? "drum" : "roll", a, M);
+    }
+  }
+  nc->k_a = a;
+  nc->k_roll_version = nc->roll_version;
+  return RS_OK;
+}

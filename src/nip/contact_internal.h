@@ -1,0 +1,70 @@
+/* Private parts of the nip contact solver (reelsim/nip_contact.h). */
+#ifndef RS_NIP_CONTACT_INTERNAL_H
+#define RS_NIP_CONTACT_INTERNAL_H
+
+#include <lapacke.h>
+
+#include "reelsim/nip_contact.h"
+
+/* per body: [KP] hat pressure -> w and eps at the nodes (pu, pe, shift 0);
+ * [KQU] box shear -> w at the nodes (shift -dx/2); [KQE] box shear -> eps averaged over
+ * the dual cell [x_i - dx/2, x_i + dx/2] = eps of a hat centred at the element midpoint,
+ * evaluated at the node (HAT, shift -dx/2). */
+enum { KP, KQU, KQE, NKER };
+
+struct rs_nip_contact {
+  rs_nip_contact_config cfg;
+  int M, n;                  /* nodes, unknowns (3M) */
+  rs_cylinder *body[2];      /* 0 = roll (upper), 1 = drum (lower) */
+  rs_ortho roll_c;
+  double R[2], R0[2];
+  int have_roll;
+  long roll_version;         /* bumped when the roll changes */
+  /* kernels of the current half-width */
+  double k_a;                /* a of the kernels, 0 = none */
+  long k_roll_version;
+  rs_kernels ker[2][NKER];
+  /* active set: per contact (0 upper, 1 lower) and element: 0 stick, +1 / -1 slip with
+   * the sign of the friction traction on the cylinder */
+  signed char *state;        /* 2 (M-1) */
+  int have_warm;             /* state holds a converged set */
+  double warm_a, warm_P, warm_Rs, warm_slope;
+  /* linear algebra work space (column-major) */
+  double *A, *rhs, *rs, *cs, *z;
+  lapack_int *ipiv;
+  signed char *visited;      /* max_iterations states of 2(M-1) */
+  double *eps_sheet, *eps_body[2], *pbar; /* M-1 each: at the upstream node of element e
+                                             (pbar: element mean pressure) */
+  /* scene glue (create_from_spec) */
+  int from_spec;
+  rs_material mat;
+  rs_nip_spec spec;
+};
+
+/* contact_kernels.c: the eight kernel arrays for half-width a (cached). */
+rs_status rs_nipc_kernels(rs_nip_contact *nc, double a);
+
+/* contact_solve.c: the stick/slip iteration at a fixed half-width; fills out. */
+rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
+
+/* contact_solve.c: allocates the solution arrays for M nodes. */
+rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M);
+
+/* 1/R* = 1/R1 + 1/R2 */
+static inline double rs_nipc_rstar(const rs_nip_contact *nc)
+{
+  return 1.0 / (1.0 / nc->R[0] + 1.0 / nc->R[1]);
+}
+
+/* M1/R1 = share * Ti (eq. (20)): share of the incoming tension the roll's drive carries. */
+static inline double rs_nipc_share(const rs_nip_contact *nc)
+{
+  switch (nc->cfg.winder) {
+  case RS_WINDER_CENTER: return 1.0;
+  case RS_WINDER_SURFACE: return 0.0;
+  case RS_WINDER_CENTER_SURFACE: return nc->cfg.torque_share;
+  }
+  return 1.0;
+}
+
+#endif

@@ -1,0 +1,432 @@
+/* The discretised nip at a fixed half-width: assembly of eqs. (12)-(15), (20) for one
+ * stick/slip active set, and the active-set (Panagiotopoulos-type) iteration over it.
+ *
+ * Unknowns z (column index):  p_1..p_{M-2}         [0, M-2)
+ *                             q1_0..q1_{M-2}        [M-2, 2M-3)   roll traction, +x
+ *                             q2_0..q2_{M-2}        [2M-3, 3M-4)  drum traction, +x
+ *                             delta0, eps0, xi2, T0 [3M-4, 3M)
+ * q1 = -tau+, q2 = +tau- are the friction tractions on the cylinders (reelsim/nip_contact.h).
+ * Rows: indentation at node i [0, M); upper contact at midpoint e [M, 2M-1); lower
+ * [2M-1, 3M-2); sheet equilibrium; winder torque. */
+#include "nip/contact_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void rs_nip_solution_free(rs_nip_solution *s)
+{
+  if (!s) return;
+  free(s->x);
+  free(s->pressure);
+  free(s->x_shear);
+  free(s->shear_upper);
+  free(s->shear_lower);
+  free(s->slip_rate_upper);
+  free(s->slip_rate_lower);
+  free(s->slip_upper);
+  free(s->slip_lower);
+  memset(s, 0, sizeof *s);
+}
+
+rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M)
+{
+  if (s->capacity >= M && s->x) return RS_OK;
+  rs_nip_solution_free(s);
+  s->x = calloc((size_t)M, sizeof(double));
+  s->pressure = calloc((size_t)M, sizeof(double));
+  s->x_shear = calloc((size_t)M, sizeof(double));
+  s->shear_upper = calloc((size_t)M, sizeof(double));
+  s->shear_lower = calloc((size_t)M, sizeof(double));
+  s->slip_rate_upper = calloc((size_t)M, sizeof(double));
+  s->slip_rate_lower = calloc((size_t)M, sizeof(double));
+  s->slip_upper = calloc((size_t)M, 1);
+  s->slip_lower = calloc((size_t)M, 1);
+  if (!s->x || !s->pressure || !s->x_shear || !s->shear_upper || !s->shear_lower ||
+      !s->slip_rate_upper || !s->slip_rate_lower || !s->slip_upper || !s->slip_lower) {
+    rs_nip_solution_free(s);
+    return RS_ERROR(RS_ERR_MEMORY, "nip solution of %d nodes", M);
+  }
+  s->capacity = M;
+  return RS_OK;
+}
+
+#define COL_P(j) ((j) - 1)
+#define COL_Q(k, e) ((M - 2) + (k) * (M - 1) + (e))
+#define ROW_STICK(k, e) (M + (k) * (M - 1) + (e))
+
+/* Assembles A z = rhs (column-major) for the current active set. */
+static void assemble(rs_nip_contact *nc, double a, double Ti)
+{
+  const int M = nc->M, n = nc->n, E = M - 1;
+  const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
+  const rs_sheet *sh = &nc->cfg.sheet;
+  const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
+  double *A = nc->A, *b = nc->rhs;
+  const int cD = 3 * M - 4, cE = 3 * M - 3, cX = 3 * M - 2, cT = 3 * M - 1;
+  memset(A, 0, (size_t)n * n * sizeof *A);
+#define AT(r, c) A[(size_t)(c) * n + (r)]
+  /* indentation (12) at node i, with v_k = -w_k, the corrected eq. (11) and
+   * N(x_i) = Ti + dx sum_{e < i} (q1 + q2):
+   *   w1 + w2 + 2h c22 p - c12 N - delta0 - eps0 x / R* = -x^2 / (2 R*) */
+  for (int i = 0; i < M; ++i) {
+    double x = -a + i * dx;
+    for (int j = 1; j < M - 1; ++j) {
+      int d = rs_kernel_index(M, i - j);
+      AT(i, COL_P(j)) = nc->ker[0][KP].pu[d] + nc->ker[1][KP].pu[d];
+    }
+    if (i > 0 && i < M - 1) AT(i, COL_P(i)) += 2 * sh->h * sh->c22;
+    for (int k = 0; k < 2; ++k)
+      for (int e = 0; e < E; ++e) {
+        int d = rs_kernel_index(M, i - e);
+        AT(i, COL_Q(k, e)) = nc->ker[k][KQU].qu[d] - (e < i ? sh->c12 * dx : 0.0);
+      }
+    AT(i, cD) = -1.0;
+    AT(i, cE) = -x / Rs;
+    b[i] = -x * x / (2 * Rs) + sh->c12 * Ti;
+  }
+  /* contact k, element e: stick (13)/(14), imposed at the element's upstream node x_e
+   * (staggered by half a cell from the shear, Kalker-style upwind; docs/nip.md):
+   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,  xi_1 = 0 (wound-on, (22)),
+   * <N>_e the mean of N over the dual cell [x_e - dx/2, x_e + dx/2] (exact):
+   *   N(x_e) + dx/8 (Q_e - Q_{e-1}), Q = q1 + q2;
+   * or slip (15): q_k,e = mu_k sigma pbar_e, pbar_e = (p_e + p_{e+1})/2 */
+  for (int k = 0; k < 2; ++k)
+    for (int e = 0; e < E; ++e) {
+      int r = ROW_STICK(k, e);
+      signed char s = nc->state[k * E + e];
+      if (s == 0) {
+        for (int j = 1; j < M - 1; ++j) AT(r, COL_P(j)) = -nc->ker[k][KP].pe[rs_kernel_index(M, e - j)];
+        if (e >= 1) AT(r, COL_P(e)) -= sh->c12;
+        double f = sh->c11 / (2 * sh->h);
+        for (int kk = 0; kk < 2; ++kk)
+          for (int ee = 0; ee <= e; ++ee)
+            AT(r, COL_Q(kk, ee)) = f * dx * (ee == e ? 0.125 : ee == e - 1 ? 0.875 : 1.0);
+        for (int ee = 0; ee < E; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
+        if (k == 1) AT(r, cX) = 1.0;
+        b[r] = -f * Ti;
+      } else {
+        AT(r, COL_Q(k, e)) = 1.0;
+        double m = -0.5 * mu[k] * s;
+        if (e >= 1) AT(r, COL_P(e)) = m;
+        if (e + 1 <= M - 2) AT(r, COL_P(e + 1)) = m;
+        b[r] = 0.0;
+      }
+    }
+  /* (20): sheet equilibrium T0 - int (q1 + q2) = Ti; winder torque T0 - int q1 = share Ti */
+  int r1 = 3 * M - 2, r2 = 3 * M - 1;
+  for (int e = 0; e < E; ++e) {
+    AT(r1, COL_Q(0, e)) = -dx;
+    AT(r1, COL_Q(1, e)) = -dx;
+    AT(r2, COL_Q(0, e)) = -dx;
+  }
+  AT(r1, cT) = 1.0;
+  AT(r2, cT) = 1.0;
+  b[r1] = Ti;
+  b[r2] = rs_nipc_share(nc) * Ti;
+#undef AT
+}
+
+/* Physical scales of the unknowns and rows: the raw entries mix m/Pa (~1e-11), 1/Pa,
+ * m/m and N/m, so plain equilibration (dgeequ) can let the pressure vanish against the
+ * delta0 column. Reference values: indentation w_ref = a^2/(2R*), pressure p_ref giving
+ * w_ref through the local compliance, strain s_ref = p_ref * the largest local strain
+ * compliance, load P_ref = 2 a p_ref. */
+static void scales(const rs_nip_contact *nc, double a, double *col, double *row)
+{
+  const int M = nc->M, n = nc->n, E = M - 1;
+  const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
+  const rs_sheet *sh = &nc->cfg.sheet;
+  const int d0 = rs_kernel_index(M, 0), d1 = rs_kernel_index(M, 1);
+  double w_ref = a * a / (2 * Rs);
+  double c_loc = fabs(nc->ker[0][KP].pu[d0]) + fabs(nc->ker[1][KP].pu[d0]) + 2 * sh->h * sh->c22;
+  double p_ref = w_ref / c_loc;
+  double e_loc = fmax(fmax(fabs(nc->ker[0][KP].pe[d0]), fabs(nc->ker[1][KP].pe[d0])),
+                      fmax(fabs(nc->ker[0][KQE].qe[d1]), fabs(nc->ker[1][KQE].qe[d1])));
+  e_loc = fmax(e_loc, fmax(sh->c11 * dx / (2 * sh->h), fabs(sh->c12)));
+  double s_ref = p_ref * e_loc, P_ref = 2 * a * p_ref;
+  for (int c = 0; c < n - 4; ++c) col[c] = p_ref;
+  col[n - 4] = w_ref;
+  col[n - 3] = w_ref * Rs / a;
+  col[n - 2] = s_ref;
+  col[n - 1] = P_ref;
+  for (int r = 0; r < M; ++r) row[r] = w_ref;
+  for (int r = M; r < M + 2 * E; ++r) row[r] = nc->state[r - M] ? p_ref : s_ref;
+  row[n - 2] = row[n - 1] = P_ref;
+}
+
+/* Scale physically, equilibrate (dgeequ), factor (dgetrf), estimate the condition number
+ * of the scaled matrix (dgecon), solve. The solution lands in nc->z. */
+static rs_status factor_solve(rs_nip_contact *nc, double a, double *cond)
+{
+  const int n = nc->n;
+  lapack_int N = (lapack_int)n, info;
+  double *col = nc->cs, *row = nc->rs;
+  scales(nc, a, col, row);
+  for (int c = 0; c < n; ++c)
+    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= col[c] / row[r];
+  for (int r = 0; r < n; ++r) nc->z[r] = nc->rhs[r] / row[r];
+  double *er = nc->rhs, *ec = malloc((size_t)n * sizeof *ec); /* rhs is consumed above */
+  if (!ec) return RS_ERROR(RS_ERR_MEMORY, "nip work space");
+  double rowcnd, colcnd, amax;
+  info = LAPACKE_dgeequ(LAPACK_COL_MAJOR, N, N, nc->A, N, er, ec, &rowcnd, &colcnd, &amax);
+  if (info != 0) {
+    free(ec);
+    return RS_ERROR(RS_ERR_SOLVER, "nip system has an empty %s %d (dgeequ info %d)",
+                    info <= N ? "row" : "column", (int)(info <= N ? info : info - N), (int)info);
+  }
+  for (int c = 0; c < n; ++c)
+    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= er[r] * ec[c];
+  for (int r = 0; r < n; ++r) nc->z[r] *= er[r];
+  double anorm = LAPACKE_dlange(LAPACK_COL_MAJOR, '1', N, N, nc->A, N);
+  info = LAPACKE_dgetrf(LAPACK_COL_MAJOR, N, N, nc->A, N, nc->ipiv);
+  rs_status st = RS_OK;
+  double rcond = 0;
+  if (info > 0) {
+    *cond = INFINITY;
+    st = RS_ERROR(RS_ERR_SOLVER, "nip system is singular (dgetrf: zero pivot %d of %d)", (int)info, n);
+  } else if (info < 0) {
+    st = RS_ERROR(RS_ERR_INTERNAL, "dgetrf argument %d", (int)-info);
+  } else {
+    info = LAPACKE_dgecon(LAPACK_COL_MAJOR, '1', N, nc->A, N, anorm, &rcond);
+    *cond = rcond > 0 ? 1.0 / rcond : INFINITY;
+    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgecon info %d", (int)info);
+    else if (!(rcond > 1e3 * 2.2e-16))
+      st = RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
+  }
+  if (!st) {
+    info = LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'N', N, 1, nc->A, N, nc->ipiv, nc->z, N);
+    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgetrs info %d", (int)info);
+  }
+  if (!st)
+    for (int c = 0; c < n; ++c) {
+      nc->z[c] *= ec[c] * col[c];
+      if (!isfinite(nc->z[c])) st = RS_ERROR(RS_ERR_SOLVER, "nip solution is not finite");
+    }
+  free(ec);
+  return st;
+}
+
+/* nodal pressure p_j (Pa) from the solution vector (0 at both ends) */
+static double pnode(const rs_nip_contact *nc, int j)
+{
+  const int M = nc->M;
+  return (j <= 0 || j >= M - 1) ? 0.0 : nc->z[COL_P(j)];
+}
+
+/* Strains at the upstream nodes x_e of the elements and the slip rates of the solved
+ * state (the stick rows of assemble()): pbar_e = (p_e + p_{e+1})/2 is the element mean
+ * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k (xi_1 = 0). */
+static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
+{
+  const int M = nc->M, E = M - 1;
+  const double dx = 2 * a / (M - 1);
+  const rs_sheet *sh = &nc->cfg.sheet;
+  const double xi[2] = {0.0, nc->z[3 * M - 2]};
+  double N = Ti, Qprev = 0;
+  for (int e = 0; e < E; ++e) {
+    double Q = nc->z[COL_Q(0, e)] + nc->z[COL_Q(1, e)];
+    nc->pbar[e] = 0.5 * (pnode(nc, e) + pnode(nc, e + 1));
+    nc->eps_sheet[e] = rs_sheet_strain(sh, N + 0.125 * dx * (Q - Qprev), pnode(nc, e));
+    N += dx * Q;
+    Qprev = Q;
+    for (int k = 0; k < 2; ++k) {
+      double eps = 0;
+      for (int j = 1; j < M - 1; ++j) eps += nc->ker[k][KP].pe[rs_kernel_index(M, e - j)] * nc->z[COL_P(j)];
+      for (int ee = 0; ee < E; ++ee) eps += nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)] * nc->z[COL_Q(k, ee)];
+      nc->eps_body[k][e] = eps;
+      srate[k * E + e] = nc->eps_sheet[e] - eps + xi[k];
+    }
+  }
+}
+
+/* The lower contact needs one stick element, or xi2 is undetermined (its column empty).
+ * A free rider (center winder) slips forward on part of the contact and backward on the
+ * rest with one element stuck between, where the slip direction changes: keep that one
+ * (the neighbour closer to sticking); without a change of direction keep the element
+ * closest to sticking (the iteration then reports that no state fits). */
+static void keep_lower_stick(const rs_nip_contact *nc, const double *srate, signed char *next)
+{
+  const int M = nc->M, E = M - 1;
+  for (int e = 0; e < E; ++e)
+    if (next[E + e] == 0) return;
+  const signed char *cur = nc->state + E;
+  const double *s = srate + E;
+#define CLOSENESS(e) (cur[e] == 0 ? 0.0 : fabs(s[e]))
+  int keep = -1;
+  for (int e = 0; e + 1 < E && keep < 0; ++e)
+    if (next[E + e] != next[E + e + 1]) keep = CLOSENESS(e) <= CLOSENESS(e + 1) ? e : e + 1;
+  if (keep < 0) {
+    double best = INFINITY;
+    for (int e = 0; e < E; ++e)
+      if (CLOSENESS(e) < best) {
+        best = CLOSENESS(e);
+        keep = e;
+      }
+  }
+#undef CLOSENESS
+  next[E + keep] = 0;
+}
+
+static int same_state(const signed char *a, const signed char *b, int n)
+{
+  return memcmp(a, b, (size_t)n) == 0;
+}
+
+/* Steps 2-9 of the seed paper with the normal and tangential problems solved together
+ * (the paper alternates them; the coupled solve has the same fixed point and needs no
+ * outer loop). Start: full stick, or the previous converged set (warm). Each pass:
+ *   stick element with |q| > mu pbar           -> slip, sign of q     (steps 3, 5)
+ *   slip element whose slip rate opposes q      -> stick              (step 7)
+ * until nothing changes (step 9). Terminates: every visited set is remembered; on a
+ * repeat the iteration changes only the worst violation per pass, and a second repeat
+ * (or max_iterations) is RS_ERR_SOLVER. */
+rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out)
+{
+  const int M = nc->M, E = M - 1, S = 2 * E;
+  const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
+  const double dx = 2 * a / (M - 1);
+  rs_status st = rs_nipc_kernels(nc, a);
+  if (st) return st;
+  st = rs_nipc_solution_reserve(out, M);
+  if (st) return st;
+  if (!nc->have_warm) memset(nc->state, 0, (size_t)S);
+  /* the lower contact needs a stick element to define xi2 */
+  int nstick_low = 0;
+  for (int e = 0; e < E; ++e) nstick_low += nc->state[E + e] == 0;
+  if (!nstick_low) nc->state[E + E / 2] = 0;
+
+  double *srate_all = malloc((size_t)S * sizeof *srate_all);
+  signed char *next = malloc((size_t)S);
+  if (!srate_all || !next) {
+    free(srate_all);
+    free(next);
+    return RS_ERROR(RS_ERR_MEMORY, "nip iteration work space");
+  }
+  int nvis = 0, single = 0, it, changes = 0, converged = 0;
+  double cond = 0, worst = 0;
+  for (it = 1; it <= nc->cfg.max_iterations; ++it) {
+    assemble(nc, a, Ti);
+    st = factor_solve(nc, a, &cond);
+    if (st) {
+      rs_error_wrap("stick/slip pass %d at a = %g m", it, a);
+      break;
+    }
+    evaluate(nc, a, Ti, srate_all);
+    double pmax = 0, smax = fabs(nc->cfg.sheet.c11 * Ti / (2 * nc->cfg.sheet.h));
+    for (int e = 0; e < E; ++e) {
+      pmax = fmax(pmax, fabs(nc->pbar[e]));
+      smax = fmax(smax, fmax(fabs(nc->eps_sheet[e]), fmax(fabs(nc->eps_body[0][e]), fabs(nc->eps_body[1][e]))));
+    }
+    const double rtol = 1e-8;
+    memcpy(next, nc->state, (size_t)S);
+    changes = 0;
+    worst = 0;
+    int iworst = -1;
+    signed char sworst = 0;
+    for (int k = 0; k < 2; ++k)
+      for (int e = 0; e < E; ++e) {
+        int idx = k * E + e;
+        double q = nc->z[COL_Q(k, e)], lim = mu[k] * nc->pbar[e];
+        double v = 0;
+        signed char ns = nc->state[idx];
+        if (nc->state[idx] == 0) {
+          double over = fabs(q) - lim;
+          double qscale = mu[k] * pmax + 1e-6 * pmax + 1e-300; /* mu = 0: round-off of q */
+          if (over > rtol * qscale) {
+            ns = q > 0 ? 1 : -1;
+            v = over / qscale;
+          }
+        } else if (lim > 0) {
+          double back = -nc->state[idx] * srate_all[idx];
+          if (back > rtol * smax) {
+            ns = 0;
+            v = back / smax;
+          }
+        }
+        if (ns != nc->state[idx]) {
+          next[idx] = ns;
+          ++changes;
+          if (v > worst) {
+            worst = v;
+            iworst = idx;
+            sworst = ns;
+          }
+        }
+      }
+    if (!changes) {
+      converged = 1;
+      break;
+    }
+    if (single) {
+      memcpy(next, nc->state, (size_t)S);
+      next[iworst] = sworst;
+    }
+    int seen = 0;
+    for (int v = 0; v < nvis && !seen; ++v) seen = same_state(nc->visited + (size_t)v * S, next, S);
+    if (seen) {
+      if (single) {
+        st = RS_ERROR(RS_ERR_SOLVER, "stick/slip iteration cycles at a = %g m after %d passes, "
+                      "also when changing one element at a time (last change: %d elements, "
+                      "worst violation %.3g relative)", a, it, changes, worst);
+        break;
+      }
+      single = 1;
+      memcpy(next, nc->state, (size_t)S);
+      next[iworst] = sworst;
+    }
+    keep_lower_stick(nc, srate_all, next);
+    if (same_state(next, nc->state, S)) {
+      st = RS_ERROR(RS_ERR_SOLVER, "no consistent stick/slip state at a = %g m after %d passes: "
+                    "the drum contact would slip everywhere (worst violation %.3g relative)",
+                    a, it, worst);
+      break;
+    }
+    if (nvis < nc->cfg.max_iterations) memcpy(nc->visited + (size_t)nvis++ * S, nc->state, (size_t)S);
+    memcpy(nc->state, next, (size_t)S);
+  }
+  if (!st && !converged)
+    st = RS_ERROR(RS_ERR_SOLVER, "stick/slip iteration did not settle at a = %g m in %d passes "
+                  "(last pass changed %d elements, worst violation %.3g relative)",
+                  a, nc->cfg.max_iterations, changes, worst);
+  if (st) {
+    nc->have_warm = 0;
+    free(srate_all);
+    free(next);
+    return st;
+  }
+  /* fill the solution */
+  out->M = M;
+  out->a = a;
+  out->dx = dx;
+  out->Ti = Ti;
+  out->delta0 = nc->z[3 * M - 4];
+  out->eps0 = nc->z[3 * M - 3];
+  out->xi2 = nc->z[3 * M - 2];
+  out->T0 = nc->z[3 * M - 1];
+  out->condition_number = cond;
+  out->iterations = it;
+  double P = 0, diss = 0;
+  for (int i = 0; i < M; ++i) {
+    out->x[i] = -a + i * dx;
+    out->pressure[i] = pnode(nc, i);
+    P += out->pressure[i] * dx;
+  }
+  for (int e = 0; e < E; ++e) {
+    out->x_shear[e] = -a + (e + 0.5) * dx;
+    out->shear_upper[e] = -nc->z[COL_Q(0, e)];
+    out->shear_lower[e] = nc->z[COL_Q(1, e)];
+    out->slip_upper[e] = nc->state[e] != 0;
+    out->slip_lower[e] = nc->state[E + e] != 0;
+    out->slip_rate_upper[e] = nc->state[e] ? srate_all[e] : 0.0;
+    out->slip_rate_lower[e] = nc->state[E + e] ? srate_all[E + e] : 0.0;
+    diss += dx * (nc->z[COL_Q(0, e)] * out->slip_rate_upper[e] + nc->z[COL_Q(1, e)] * out->slip_rate_lower[e]);
+  }
+  out->load = P;
+  out->dissipation = diss;
+  nc->have_warm = 1;
+  free(srate_all);
+  free(next);
+  if (!isfinite(P) || !isfinite(out->T0)) return RS_ERROR(RS_ERR_SOLVER, "non-finite nip solution at a = %g m", a);
+  return RS_OK;
+}
