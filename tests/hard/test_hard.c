@@ -630,7 +630,7 @@ static void failure_keeps_finished(void)
       "  E_theta: 4.0e9\n"
       "  radial: {law: hakiel, C: [1.0e6, 0, -1.0]}\n"
       "core: {radius: 0.05}\n"
-      "winding: {final_radius: %s, tension: 200}\n";
+      "winding: {final_radius: %s, tension: 8}\n";
   char text[512];
   rs_scene *sc = NULL;
   rs_reel_result *res = NULL, *again = NULL;
