@@ -21,6 +21,16 @@ typedef struct rs_reel_result {
   double core_radius;        /* m */
   long increments, cvode_steps, rhs_evals;
   double wall_seconds;
+  /* Stress history, when the scene's output.history_every > 0 (else n_stages = 0 and
+   * the arrays are NULL). Stage s is the roll after stage_layers[s] layers: stored at
+   * the first increment boundary at or after each multiple of history_every, and the
+   * last stage is always the final state. The stage arrays are n_stages x n_layers,
+   * row-major, NaN for the layers not yet wound at that stage. */
+  int n_stages;
+  int *stage_layers;         /* layers wound at each stage, increasing */
+  double *stage_radius;      /* m, outer radius of the roll at each stage */
+  double *stage_sigma_r;     /* Pa, compression negative */
+  double *stage_sigma_theta; /* Pa, compression negative */
 } rs_reel_result;
 
 /* Optional observer: called after each increment with the layers wound so far.

@@ -58,6 +58,15 @@ int cli_parse(int argc, char **argv, int first, cli_args *a)
       a->output = argv[++i];
     } else if (strncmp(arg, "--output=", 9) == 0) {
       a->output = arg + 9;
+    } else if (strcmp(arg, "--csv") == 0 || strncmp(arg, "--csv=", 6) == 0) {
+      if (strcmp(a->cmd, "run") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "%s: --csv only applies to run", a->cmd);
+      if (arg[5] == '=')
+        a->csv_dir = arg + 6;
+      else if (i + 1 < argc)
+        a->csv_dir = argv[++i];
+      if (!a->csv_dir || !a->csv_dir[0])
+        return cli_fail(CLI_EXIT_USAGE, "%s: --csv needs a directory", a->cmd);
     } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
       a->quiet = 1;
     } else if (strcmp(arg, "--keep-partial") == 0 && strcmp(a->cmd, "run") == 0) {

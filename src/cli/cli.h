@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 
+#include "reelsim/defects.h"
 #include "reelsim/status.h"
 
 enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER = 3,
@@ -17,6 +18,7 @@ typedef struct cli_args {
   const char *output;   /* -o FILE, or NULL */
   int quiet;
   int keep_partial;     /* run --keep-partial: write what finished when the run stops early */
+  const char *csv_dir;  /* run --csv DIR, or NULL */
   int n_sets;           /* --set key.path=value, in order; -o adds output.file=FILE last */
   const char **sets;
   char *owned;          /* the "output.file=FILE" made from -o */
@@ -39,5 +41,10 @@ int cli_usage(FILE *out, const char *cmd);
 int cli_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* Prints the recorded library error and returns the exit status for it. */
 int cli_fail_status(rs_status st);
+
+/* summary_defects.c: Pa as "12.34 kPa" below 1 MPa, else "1.234 MPa"; the defect-risk
+ * lines of the run summary. */
+void cli_fmt_stress(char *buf, size_t size, double pa);
+void cli_print_defects(FILE *out, const rs_defect_report *rep);
 
 #endif

@@ -45,6 +45,10 @@ rs_status rs_h5_write_scalar(hid_t loc, const char *name, double value, const ch
 rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t n,
                          const char *units, const char *description);
 
+/* The same for 64-bit integers (counts); `units` may be "". */
+rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *data, size_t n,
+                               const char *units, const char *description);
+
 /* A rows x cols row-major array as a chunked, shuffled, deflate-compressed dataset
  * (fill value NaN, both dimensions extendable, so a history can grow stage by stage).
  * `data` may hold NaN (e.g. layers not yet wound); rows or cols may be 0. */

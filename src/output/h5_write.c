@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "output/h5_defects.h"
 #include "output/h5_util.h"
 #include "output/staging.h"
 #include "reelsim_version.h"
@@ -105,6 +106,41 @@ static rs_status write_final(hid_t file, const rs_reel_result *res)
   return st;
 }
 
+/* /history: the roll's stresses at stages of the winding (output.history_every > 0).
+ * NaN marks the layers not yet wound at a stage; the last stage is /final. */
+static rs_status write_history(hid_t file, const rs_scene *scene, const rs_reel_result *res)
+{
+  size_t S = (size_t)res->n_stages, n = (size_t)res->n_layers;
+  long long *layers = malloc((S ? S : 1) * sizeof *layers);
+  if (!layers) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %zu history stages", S);
+  for (size_t s = 0; s < S; ++s) layers[s] = res->stage_layers[s];
+  hid_t g;
+  rs_status st = rs_h5_group_create(file, "history", &g);
+  if (st != RS_OK) {
+    free(layers);
+    return st;
+  }
+  st = rs_h5_attr_int64(g, "every", scene->output.history_every);
+  if (st == RS_OK) st = rs_h5_attr_int64(g, "stages", (long long)S);
+  if (st == RS_OK)
+    st = rs_h5_write_1d(g, "outer_radius", res->stage_radius, S, "m",
+                        "outer radius of the roll at each stage");
+  if (st == RS_OK)
+    st = rs_h5_write_1d_int64(g, "layers", layers, S, "",
+                              "layers wound at each stage; the last stage is the final reel");
+  if (st == RS_OK)
+    st = rs_h5_write_2d_chunked(g, "sigma_r", res->stage_sigma_r, S, n, "Pa",
+                                "radial stress of each layer (columns) at each stage (rows); "
+                                "compression negative; NaN for layers not yet wound");
+  if (st == RS_OK)
+    st = rs_h5_write_2d_chunked(g, "sigma_theta", res->stage_sigma_theta, S, n, "Pa",
+                                "hoop stress of each layer (columns) at each stage (rows); "
+                                "compression negative; NaN for layers not yet wound");
+  H5Gclose(g);
+  free(layers);
+  return st;
+}
+
 static rs_status check_result(const rs_reel_result *res)
 {
   if (res->n_layers < 0)
@@ -113,6 +149,11 @@ static rs_status check_result(const rs_reel_result *res)
       (!res->radius || !res->wound_on_tension || !res->web_tension || !res->nip_load ||
        !res->sigma_r || !res->sigma_theta))
     return RS_ERROR(RS_ERR_INTERNAL, "result with %d layers lacks an array", res->n_layers);
+  if (res->n_stages < 0 ||
+      (res->n_stages > 0 && (!res->stage_layers || !res->stage_radius || !res->stage_sigma_r ||
+                             !res->stage_sigma_theta)))
+    return RS_ERROR(RS_ERR_INTERNAL, "result with %d history stages lacks an array",
+                    res->n_stages);
   return RS_OK;
 }
 
@@ -126,6 +167,8 @@ static rs_status build_image(const rs_scene *scene, const rs_reel_result *res, v
   st = write_root_attributes(file, scene, res);
   if (st == RS_OK) st = write_layers(file, res);
   if (st == RS_OK) st = write_final(file, res);
+  if (st == RS_OK && scene->output.history_every > 0) st = write_history(file, scene, res);
+  if (st == RS_OK) st = rs_h5_write_defects(file, scene, res);
   if (st == RS_OK) st = rs_h5_memfile_image(file, image, size);
   if (H5Fclose(file) < 0 && st == RS_OK) {
     char detail[512];
