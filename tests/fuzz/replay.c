@@ -63,7 +63,7 @@ int main(int argc, char **argv)
     ++count;
   }
   closedir(d);
-  qsort(names, count, sizeof *names, by_name);
+  if (count > 1) qsort(names, count, sizeof *names, by_name);
   int bad = 0;
   for (size_t i = 0; i < count; ++i) {
     snprintf(path, sizeof path, "%s/%s", dir, names[i]);
