@@ -14,6 +14,7 @@
 
 static char *slurp(const char *path, size_t *len)
 {
+  *len = 0;
   FILE *f = fopen(path, "rb");
   CHECK(f != NULL);
   if (!f) return NULL;
