@@ -28,6 +28,28 @@ rs_status rs_output_check_csv_dir(const char *dir);
 rs_status rs_output_csv_path(const char *dir, const char *name, const char *which, char *buf,
                              size_t size);
 
+/* The check every writer starts with, for callers that want it before a long run:
+ * RS_ERR_IO naming `path` when its directory is missing, not a directory or not
+ * writable, or `path` is a directory or a device. */
+rs_status rs_output_check_target(const char *path);
+
+/* One run of a comparison (`reelsim compare`): a scene and what winding it gave. */
+typedef struct rs_output_run {
+  const rs_scene *scene;
+  const rs_reel_result *result;
+} rs_output_run;
+
+/* Writes n >= 1 runs to one file, staged like rs_output_write (docs/output.md, "Comparison
+ * files"): run i's layout (what rs_output_write puts on the root) under
+ * /runs/<rs_output_run_name(i, n)>, and /summary with the key figures of every run, in
+ * order. */
+rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *runs);
+
+/* The group name of run i (0-based) of n: "<i+1>-<scene file name without directory and
+ * extension>", the number zero-padded to the width of n ("01-rider" .. "12-taper") so
+ * that the groups sort in run order. */
+void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -13,8 +13,10 @@ enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER 
        CLI_EXIT_INTERRUPTED = 130, CLI_EXIT_TERMINATED = 143 };
 
 typedef struct cli_args {
-  const char *cmd;      /* "run" or "check" */
-  const char *scene;
+  const char *cmd;      /* "run", "check" or "compare" */
+  const char *scene;    /* the first scene */
+  int n_scenes;         /* compare: every scene, in order (others: 1) */
+  const char **scenes;
   const char *output;   /* -o FILE, or NULL */
   int quiet;
   int keep_partial;     /* run --keep-partial: write what finished when the run stops early */
@@ -33,6 +35,9 @@ int cli_check(const cli_args *a);
 /* reelsim nip SCENE --radius R [--json] [--set k=v]...: one contact nip (cmd_nip.c). */
 int cli_nip(int argc, char **argv, int first);
 int cli_run(const cli_args *a);
+int cli_compare(const cli_args *a);
+/* reelsim plot parses its own arguments (argv[0] is the program, argv[1] "plot"). */
+int cli_plot(int argc, char **argv);
 
 /* Help: the general text (cmd NULL) or one command's. 0 if cmd is known, else 2. */
 int cli_usage(FILE *out, const char *cmd);

@@ -163,8 +163,9 @@ rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *s, 
 {
   if (!nc || !s || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
   if (!nc->from_spec) return RS_ERROR(RS_ERR_INPUT, "nip contact was not made from a scene");
-  if (!(s->roll_radius > 0 && s->core_radius > 0 && s->core_radius < s->roll_radius))
-    return RS_ERROR(RS_ERR_INPUT, "roll radius %g m must exceed the core radius %g m",
+  /* equal radii: the bare core, before the first layer (modelled as the thinnest roll) */
+  if (!(s->roll_radius > 0 && s->core_radius > 0 && s->core_radius <= s->roll_radius))
+    return RS_ERROR(RS_ERR_INPUT, "roll radius %g m must not be below the core radius %g m",
                     s->roll_radius, s->core_radius);
   if (!(isfinite(s->nip_load) && s->nip_load > 0))
     return RS_ERROR(RS_ERR_INPUT, "nip.load must be > 0 (got %g N/m)", s->nip_load);
@@ -211,7 +212,23 @@ static void seam_destroy(void *ctx)
   free(c);
 }
 
-static const rs_nip_ops contact_ops = {"contact", seam_wot, seam_destroy};
+static void seam_report(void *ctx, rs_nip_report *rep)
+{
+  const seam_ctx *c = ctx;
+  rep->a = c->sol.a;
+  rep->load = c->sol.load;
+  rep->iterations = c->sol.iterations;
+}
+
+static const rs_nip_solution *seam_solution(void *ctx)
+{
+  const seam_ctx *c = ctx;
+  return c->sol.M > 0 ? &c->sol : NULL;
+}
+
+static const rs_nip_ops contact_ops = {.name = "contact", .wound_on_tension = seam_wot,
+                                       .destroy = seam_destroy, .report = seam_report,
+                                       .solution = seam_solution};
 
 rs_status rs_nip_contact_nip_create(const rs_nip_spec *spec, const rs_material *mat, rs_nip **out)
 {

@@ -198,3 +198,19 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
   if (space >= 0) H5Sclose(space);
   return st;
 }
+
+rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const *strings,
+                                 size_t n, const char *description)
+{
+  hsize_t dims[1] = {n};
+  hid_t type = H5Tcopy(H5T_C_S1), space = -1;
+  rs_status st = RS_OK;
+  if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
+      (space = H5Screate_simple(1, dims, NULL)) < 0)
+    st = H5_FAIL(loc, name, "make the string type or dataspace for");
+  if (st == RS_OK)
+    st = write_typed(loc, name, type, type, space, H5P_DEFAULT, strings, "", description);
+  if (space >= 0) H5Sclose(space);
+  if (type >= 0) H5Tclose(type);
+  return st;
+}

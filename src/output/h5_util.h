@@ -59,4 +59,8 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
  * about 256 KiB per chunk, so reading one stage or one layer touches few chunks. */
 void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2]);
 
+/* A 1-D dataset of variable-length UTF-8 strings (h5py reads str), `units` "". */
+rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const *strings,
+                                 size_t n, const char *description);
+
 #endif
