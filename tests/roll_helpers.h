@@ -10,7 +10,8 @@
 
 #include "reelsim/roll.h"
 
-static inline rs_roll_params linear_params(double rc, double t, double Et, double Er, double Ec, int n)
+static inline rs_roll_params linear_params(double rc, double t, double Et, double Er, double Ec,
+                                           int n)
 {
   rs_roll_params p = {0};
   p.core_radius = rc;
@@ -68,8 +69,8 @@ static inline void altmann_increment(double g, double kc, double rc, double s, d
 }
 
 /* sigma_r, sigma_theta per layer and core pressure from the closed form, accumulated. */
-static inline void altmann_roll(double g, double kc, double rc, double t, int n, double T, double *sr,
-                         double *st, double *core_p)
+static inline void altmann_roll(double g, double kc, double rc, double t, int n, double T,
+                                double *sr, double *st, double *core_p)
 {
   double core = 0.0;
   for (int j = 0; j < n; ++j) {

@@ -88,7 +88,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   rs_error_clear();
   rs_status st = rs_scene_load_text("fuzz.yaml", text, size, n_sets, sets, &scene);
   if (st != RS_OK) {
-    if (st != RS_ERR_INPUT) fuzz_fail("the loader failed with a status other than RS_ERR_INPUT", st);
+    if (st != RS_ERR_INPUT) fuzz_fail("a failure other than RS_ERR_INPUT", st);
     if (!rs_error_message()[0]) fuzz_fail("an input error without a message", st);
     if (scene) fuzz_fail("a failed load left a scene behind", st);
     return 0;

@@ -2,19 +2,19 @@
  * numerics, each with a stated expectation that does not come from the engine itself
  * (docs/robustness.md has the table with the measured values).
  *
- *   soft_linear_g2_1e6, soft_linear_g2_1e8   g^2 = E_theta/E_r = 1e6, 1e8: Altmann's closed form
- *   soft_pfeiffer_g2_1e8                     Pfeiffer, K1 = 1 Pa: bounds, rtol convergence, equilibrium
- *   core_very_soft_limit                     E_c -> 0: core pressure ~ E_c -> 0 (closed form, limit)
- *   core_stiff_soft_web                      E_c sweep 1e3..1e13 Pa, soft web: monotone, rigid limit
- *   thin_film_100k                           100,000 layers of 6 um (lumped increments): closed form
- *   ratio_20                                 roll/core radius 20: closed form (linear), bounds (Pfeiffer)
- *   tension_scaling_linear                   T from 1e-9 to 1e6 N/m: sigma/T the same (linear law)
- *   tension_limits_pfeiffer                  T -> 0: the linear law of modulus K1 K2; T huge: bounds
- *   taper_through_zero                       loader refuses T < 0, runs a taper ending at exactly 0
- *   hakiel_vs_table                          a strongly varying Hakiel law = its dense table
- *   table_steep                              E_r over 5 decades in a table: bounds, rtol convergence
- *   equilibrium_increment                    sigma_theta = d(r sigma_r)/dr, one increment, 4th-order FD
- *   failure_keeps_finished                   a failing run keeps the finished layers, bit for bit
+ *   soft_linear_g2_1e6, _1e8   g^2 = E_theta/E_r = 1e6, 1e8: Altmann's closed form
+ *   soft_pfeiffer_g2_1e8       Pfeiffer, K1 = 1 Pa (g^2 = 1e9 at rest): bounds, rtol
+ *   core_very_soft_limit       E_c -> 0: core pressure ~ E_c -> 0 (closed form, limit)
+ *   core_stiff_soft_web        E_c 1e3..1e13 Pa under a soft web: monotone, rigid limit
+ *   thin_film_100k             100,000 layers of 6 um (lumped increments): closed form
+ *   ratio_20                   roll/core radius 20: closed form (linear), bounds (Pfeiffer)
+ *   tension_scaling_linear     T from 1e-9 to 1e6 N/m: sigma/T the same (linear law)
+ *   tension_limits_pfeiffer    T -> 0: the linear law of modulus K1 K2; T huge: bounds
+ *   taper_through_zero         the loader refuses T < 0; a taper ending at exactly 0 runs
+ *   hakiel_vs_table            a strongly varying Hakiel law = its dense table
+ *   table_steep                E_r over 5 decades in a table: bounds, rtol convergence
+ *   equilibrium_increment      sigma_theta = d(r sigma_r)/dr, one increment, 4th-order FD
+ *   failure_keeps_finished     a failing run keeps the finished layers, bit for bit
  */
 #include <math.h>
 #include <stdlib.h>
@@ -411,7 +411,8 @@ static void tension_limits_pfeiffer(void)
   double *sr = malloc(n * sizeof(double)), *st = malloc(n * sizeof(double)), core;
   altmann_roll(sqrt(Et / (K1 * K2)), -1.0, rc, t, n, 1e-4, sr, st, &core);
   double worst = 0.0;
-  for (int j = 0; j < n; ++j) worst = fmax(worst, fabs(rs_roll_sigma_r(low)[j] - sr[j]) / fabs(sr[j]));
+  for (int j = 0; j < n; ++j)
+    worst = fmax(worst, fabs(rs_roll_sigma_r(low)[j] - sr[j]) / fabs(sr[j]));
   CHECK_LOG("T = 1e-4: max P / K1", -rs_roll_sigma_r(low)[0] / K1);
   CHECK_LOG("T = 1e-4: max rel diff from linear (K1 K2)", worst);
   CHECK_LT(worst, 1e-5);
@@ -424,7 +425,8 @@ static void tension_limits_pfeiffer(void)
   CHECK(all_finite(high));
   CHECK_LOG("T = 1e5: core pressure (Pa)", rs_roll_core_pressure(high));
   CHECK_LOG("T = 1e5: core pressure / sum T/s", check_bounds(high, t, 1e5, 0));
-  CHECK_LOG("T = 1e5: g at the core", sqrt(Et / rs_radial_modulus(&p.radial, rs_roll_core_pressure(high))));
+  double E_core = rs_radial_modulus(&p.radial, rs_roll_core_pressure(high));
+  CHECK_LOG("T = 1e5: g at the core", sqrt(Et / E_core));
   /* stiffer under pressure than at rest: more pressure than the rest-modulus roll */
   CHECK_LT(core * 1e9, rs_roll_core_pressure(high));
   free(sr);
@@ -530,7 +532,8 @@ static void hakiel_vs_table(void)
   if (!tb) return;
   double d = profile_diff(tb, hk);
   CHECK_LOG("E_r at rest / at the core pressure",
-            rs_radial_modulus(&p.radial, 0) / rs_radial_modulus(&p.radial, rs_roll_core_pressure(hk)));
+            rs_radial_modulus(&p.radial, 0) /
+                rs_radial_modulus(&p.radial, rs_roll_core_pressure(hk)));
   CHECK_LOG("core pressure, hakiel (Pa)", rs_roll_core_pressure(hk));
   CHECK_LOG("core pressure, table (Pa)", rs_roll_core_pressure(tb));
   CHECK_LOG("max |sigma_r diff| / max|sigma_r|", d);
