@@ -90,7 +90,34 @@ static void empty_and_null(void)
   printf("  %s\n", rs_error_message());
 }
 
+/* A name only the API can give: a 600-byte stem still loads (the default title is cut to
+ * the 511 bytes a title may have, at a character boundary); a 4093-byte one cannot name
+ * the output file after itself, so it is an input error, not an internal one. */
+static void long_names(void)
+{
+  static const char scene[] = "material: {caliper: 1.0e-4, E_theta: 4.0e9, "
+                              "radial: {law: linear, E_r: 2.0e7}}\n"
+                              "core: {radius: 0.05}\n"
+                              "winding: {final_radius: 0.07, tension: 200}\n";
+  static char name[4200];
+  rs_scene *s = NULL;
+  memset(name, 'a', 510);
+  strcpy(name + 510, "\xc3\xa9\xc3\xa9.yaml"); /* two 2-byte characters across byte 511 */
+  CHECK(rs_scene_load_text(name, scene, strlen(scene), 0, NULL, &s) == RS_OK);
+  if (s) {
+    CHECK(strlen(s->title) == 510); /* not 511: that would split the first character */
+    CHECK(s->title[509] == 'a');
+  }
+  rs_scene_destroy(&s);
+  memset(name, 'b', 4093);
+  strcpy(name + 4093, ".y"); /* 4095 bytes: the longest path there is */
+  CHECK(rs_scene_load_text(name, scene, strlen(scene), 0, NULL, &s) == RS_ERR_INPUT);
+  CHECK(strstr(rs_error_message(), "give output.file") != NULL);
+  printf("  %.60s\n", rs_error_message() + 70);
+}
+
 static const check_case cases[] = {
+    {"long_names", long_names},
     {"matches_file", matches_file},
     {"reads_len_bytes", reads_len_bytes},
     {"empty_and_null", empty_and_null},
