@@ -2,7 +2,8 @@
 # Quick start, command 2: set up, build, and pass the whole test suite (ctest).
 # .ci/run runs exactly this. Three passes:
 #   1. the normal build (build/): every test, plus the unit tests again under valgrind;
-#   2. an AddressSanitizer + UBSan build (build-asan/): every test, any report fails it.
+#   2. an AddressSanitizer + UBSan build (build-asan/): every test, any report fails it;
+#   3. the scene loader fuzzed with libFuzzer for 60 s (build-fuzz/, clang; scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -15,3 +16,6 @@ RS_BUILD_DIR=build-asan RS_BUILD_TYPE=Debug \
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 (cd build-asan && ctest --output-on-failure -j "$(nproc)")
+
+echo "== fuzzing the scene loader (build-fuzz/) =="
+bash scripts/fuzz.sh "${RS_FUZZ_SECONDS:-60}"

@@ -33,6 +33,12 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->stage_radius);
   free(res->stage_sigma_r);
   free(res->stage_sigma_theta);
+  free(res->nip_radius);
+  free(res->nip_T0);
+  free(res->nip_Ti);
+  free(res->nip_a);
+  free(res->nip_solve_load);
+  free(res->nip_iterations);
   free(res);
   *resp = NULL;
 }
@@ -221,7 +227,8 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   rs_roll_params params;
   reel_params(sc, &params);
   rs_reel_result *res = reel_result_new(N);
-  double *block = malloc((size_t)per_step * sizeof(double));
+  /* an increment never holds more than the roll's layers (layers_per_step may exceed N) */
+  double *block = malloc((size_t)(per_step < N ? per_step : N) * sizeof(double));
   rs_roll *roll = NULL;
   rs_nip *nip = NULL;
   rs_status st = RS_OK;
