@@ -10,34 +10,26 @@
 
 #include <math.h>
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "cli/cli.h"
+#include "cli/signals.h"
 #include "reelsim/output.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 
 static const char default_output[] = "compare.h5";
 
-/* Lock-free, so the handler may set it and every worker thread may read it. */
-static atomic_int interrupted;
-
-static void on_sigint(int sig)
-{
-  (void)sig;
-  atomic_store(&interrupted, 1);
-}
 
 static int on_progress(void *user, int layers_done, int layers_total)
 {
   (void)user;
   (void)layers_done;
   (void)layers_total;
-  return atomic_load(&interrupted) != 0;
+  return cli_signal_caught() != 0;
 }
 
 static double now_seconds(void)
@@ -149,15 +141,8 @@ int cli_compare(const cli_args *a)
   const char **sets = calloc((size_t)a->n_sets + 1, sizeof *sets);
   char *out_set = NULL;
   int n_sets = a->n_sets, code = CLI_EXIT_OK, threads = 0;
-  struct sigaction sa, old;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_sigint;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &sa, &old);
-  /* a shell starts background jobs with SIGINT ignored: keep it that way for them */
-  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
-  atomic_store(&interrupted, 0);
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
 
   if (!c.scenes || !c.jobs || !c.sums || !c.names || !sets) {
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
@@ -194,8 +179,10 @@ int cli_compare(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (atomic_load(&interrupted)) {
-    code = cli_fail(CLI_EXIT_INTERRUPTED, "compare: interrupted (no output written)");
+  if (cli_signal_caught()) {
+    int sig = cli_signal_caught();
+    code = cli_fail(cli_signal_exit_code(sig), "compare: %s (no output written)",
+                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
     goto done;
   }
 
@@ -221,6 +208,6 @@ done:
   free_state(&c);
   free(sets);
   free(out_set);
-  sigaction(SIGINT, &old, NULL);
+  cli_signals_restore(&sig_saved);
   return code;
 }

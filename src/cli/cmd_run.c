@@ -22,12 +22,10 @@
 
 #include "cli/cli.h"
 #include "reelsim/output.h"
+#include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 
-static volatile sig_atomic_t interrupted = 0; /* the signal number, 0 if none */
-
-static void on_signal(int sig) { interrupted = sig; }
 
 static double now_seconds(void)
 {
@@ -80,7 +78,7 @@ static int on_progress(void *user, int layers_done, int layers_total)
       p->t_last = now;
     }
   }
-  return interrupted != 0;
+  return cli_signal_caught() != 0;
 }
 
 /* "cases/newsprint-rider.yaml" -> "newsprint-rider": the name of the CSV files */
@@ -93,29 +91,6 @@ static void scene_stem(const char *path, char *out, size_t size)
   snprintf(out, size, "%.*s", (int)n, base);
 }
 
-/* A figure a user reads must be a number: anything else is a broken solution. */
-static int summary_finite(const rs_reel_summary *s, const char **what)
-{
-  const struct {
-    const char *name;
-    double v;
-  } f[] = {
-      {"final radius", s->final_radius},
-      {"core pressure", s->core_pressure},
-      {"peak pressure", s->peak_pressure},
-      {"radius of the peak pressure", s->peak_pressure_radius},
-      {"minimum hoop stress", s->min_hoop},
-      {"radius of the minimum hoop stress", s->min_hoop_radius},
-      {"least wound-on tension", s->wot_min},
-      {"greatest wound-on tension", s->wot_max},
-  };
-  for (size_t i = 0; i < sizeof f / sizeof f[0]; ++i)
-    if (!isfinite(f[i].v)) {
-      *what = f[i].name;
-      return 0;
-    }
-  return 1;
-}
 
 static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const rs_reel_summary *s, const rs_defect_report *defects,
@@ -156,7 +131,7 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
   rs_reel_summarize(res, &sum);
   for (int j = 0; j < res->n_layers; ++j)
     if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j])) what = "a layer's stress";
-  if (what || !summary_finite(&sum, &what)) {
+  if (what || !rs_reel_summary_finite(&sum, &what)) {
     fprintf(stderr, "reelsim:   --keep-partial: not written, the %s is not a finite number\n",
             what);
     return 0;
@@ -171,20 +146,8 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
 int cli_run(const cli_args *a)
 {
   double t0 = now_seconds();
-  struct sigaction sa, old_int, old_term, old_xfsz, ign;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &sa, &old_int);
-  sigaction(SIGTERM, &sa, &old_term);
-  /* a shell starts background jobs with SIGINT ignored: keep it that way for them */
-  if (old_int.sa_handler == SIG_IGN) sigaction(SIGINT, &old_int, NULL);
-  if (old_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &old_term, NULL);
-  memset(&ign, 0, sizeof ign);
-  ign.sa_handler = SIG_IGN;
-  sigemptyset(&ign.sa_mask);
-  sigaction(SIGXFSZ, &ign, &old_xfsz);
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
 
   rs_scene *scene = NULL;
   rs_reel_result *res = NULL;
@@ -204,15 +167,15 @@ int cli_run(const cli_args *a)
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
   st = rs_reel_wind(scene, &opts, &res);
   progress_clear(&prog);
-  if (st == RS_ERR_INTERRUPTED || (st == RS_OK && interrupted)) {
-    int k = res ? res->n_layers : prog.done, sig = interrupted;
+  if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
+    int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
     const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
                scene->n_layers, scene->output.file);
     else
       cli_fail(0, "%s at layer %d of %d (no output written)", how, k, scene->n_layers);
-    code = sig == SIGTERM ? CLI_EXIT_TERMINATED : CLI_EXIT_INTERRUPTED;
+    code = cli_signal_exit_code(sig);
     goto done;
   }
   if (st != RS_OK) {
@@ -234,7 +197,7 @@ int cli_run(const cli_args *a)
   rs_reel_summary sum;
   const char *what = NULL;
   rs_reel_summarize(res, &sum);
-  if (!summary_finite(&sum, &what)) {
+  if (!rs_reel_summary_finite(&sum, &what)) {
     code = cli_fail(CLI_EXIT_SOLVER,
                     "solver failure: the %s is not a finite number; no output written", what);
     goto done;
@@ -259,8 +222,6 @@ done:
   rs_defect_report_destroy(&defects);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
-  sigaction(SIGINT, &old_int, NULL);
-  sigaction(SIGTERM, &old_term, NULL);
-  sigaction(SIGXFSZ, &old_xfsz, NULL);
+  cli_signals_restore(&sig_saved);
   return code;
 }
