@@ -1,6 +1,6 @@
 /* The winding nip as a contact problem (seed paper, eqs. (12)-(22)): wound roll (upper
  * cylinder 1), sheet, drum or rider (lower cylinder 2), stick/slip friction on both faces
- * of the sheet, and the wound-on tension T0 from the wound-on condition xi1 = 0.
+ * of the sheet, and the wound-on tension T0 from the wound-on condition (22).
  *
  * SIGN CONVENTIONS (docs/nip.md)
  *   x        along the sheet, in the direction of travel; the sheet enters at x = -a with
@@ -10,7 +10,13 @@
  *            The roll feels -tau+ in +x, the drum +tau-. Sheet equilibrium:
  *            N(x) = Ti - int_{-a}^{x} (tau+ - tau-) dx, N(a) = T0.
  *   slip     velocity of the sheet face relative to the cylinder surface, per unit speed:
- *            s+ = eps_sheet - eps_1 + xi1 (xi1 = 0), s- = eps_sheet - eps_2 + xi2.
+ *            s+ = eps_sheet - eps_1 + xi1, s- = eps_sheet - eps_2 + xi2, with eps_sheet the
+ *            sheet's strain from its unstressed state and eps_k the cylinder's from its state
+ *            without the nip. Wound-on condition (22), read with these references
+ *            (docs/nip.md): the wound sheet moves with the roll, so
+ *            xi1 = eps1_mean - c11 T0 / (2h), eps1_mean = -C0_11 P / (2 pi R1^2) the mean
+ *            circumferential strain of the roll surface (n = 0 mode). The paper's xi1 = 0
+ *            holds for strains measured from the far-field (wound) states.
  *            In slip the friction on the cylinder (-tau+ resp. +tau-) has the sign of s and
  *            magnitude mu p; stick: s = 0 and |tau| <= mu p. Dissipation is >= 0.
  *   winder   M1/R1 = int tau+ + T0 = share * Ti with share = 1 (center: undriven rider,
@@ -61,6 +67,7 @@ typedef struct rs_nip_solution {
   double dx;                /* m */
   double load;              /* N/m, int p dx (eq. (21)) of the returned state */
   double Ti, T0;            /* N/m, incoming and wound-on tension */
+  double xi1;               /* creep of the upper contact (wound-on condition, see above) */
   double xi2;               /* creep of the lower contact */
   double delta0;            /* m, approach of the cylinder centres */
   double eps0;              /* m, shift of the nip centre */

@@ -102,8 +102,17 @@ rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, doub
   rs_cylinder *c = NULL;
   rs_status st = rs_cylinder_create(roll, R, R0, &c);
   if (st) return rs_error_wrap("roll (radius %g m, core %g m)", R, R0);
+  double C0[2][2];
+  st = rs_cylinder_mode_compliance(c, 0, C0);
+  if (st) {
+    rs_cylinder_destroy(&c);
+    return rs_error_wrap("roll (radius %g m, core %g m)", R, R0);
+  }
   rs_cylinder_destroy(&nc->body[0]);
   nc->body[0] = c;
+  /* the n = 0 part of the nip pressure, P / (2 pi R), shrinks the roll's circumference:
+   * mean surface strain -C0_11 P / (2 pi R^2) (the wound-on condition uses it) */
+  nc->roll_mean_strain = -C0[0][0] / (2 * 3.14159265358979323846 * R * R);
   nc->roll_c = *roll;
   nc->R[0] = R;
   nc->R0[0] = R0;

@@ -18,6 +18,8 @@ struct rs_nip_contact {
   rs_cylinder *body[2];      /* 0 = roll (upper), 1 = drum (lower) */
   rs_ortho roll_c;
   double R[2], R0[2];
+  double roll_mean_strain;   /* mean circumferential strain of the roll surface per unit nip
+                                load, -C0_11 / (2 pi R^2) (m/N), C0 the n = 0 compliance */
   int have_roll;
   long roll_version;         /* bumped when the roll changes */
   /* kernels of the current half-width */

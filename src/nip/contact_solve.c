@@ -87,7 +87,13 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
   }
   /* contact k, element e: stick (13)/(14), imposed at the element's upstream node x_e
    * (staggered by half a cell from the shear, Kalker-style upwind; docs/nip.md):
-   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,  xi_1 = 0 (wound-on, (22)),
+   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,
+   * xi_2 an unknown, xi_1 from the wound-on condition (22): the wound sheet (tension T0,
+   * strain c11 T0/(2h) from its unstressed state) moves with the roll surface, whose
+   * circumference the nip shrinks by the mean strain eps1_mean = m P (mass balance over a
+   * revolution), so xi_1 = m dx sum p_j - c11 T0/(2h). (xi_1 = 0 would make the sheet on the
+   * roll run c11 T0/(2h) faster than the roll: forward slip everywhere, NIT = mu P even for
+   * rigid cylinders; docs/nip.md, "Wound-on condition".)
    * <N>_e the mean of N over the dual cell [x_e - dx/2, x_e + dx/2] (exact):
    *   N(x_e) + dx/8 (Q_e - Q_{e-1}), Q = q1 + q2;
    * or slip (15): q_k,e = mu_k sigma pbar_e, pbar_e = (p_e + p_{e+1})/2 */
@@ -104,6 +110,10 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
             AT(r, COL_Q(kk, ee)) = f * dx * (ee == e ? 0.125 : ee == e - 1 ? 0.875 : 1.0);
         for (int ee = 0; ee < E; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
         if (k == 1) AT(r, cX) = 1.0;
+        if (k == 0) {
+          AT(r, cT) = -f;
+          for (int j = 1; j < M - 1; ++j) AT(r, COL_P(j)) += nc->roll_mean_strain * dx;
+        }
         b[r] = -f * Ti;
       } else {
         AT(r, COL_Q(k, e)) = 1.0;
@@ -214,15 +224,24 @@ static double pnode(const rs_nip_contact *nc, int j)
   return (j <= 0 || j >= M - 1) ? 0.0 : nc->z[COL_P(j)];
 }
 
+/* The wound-on creep xi_1 = eps1_mean - c11 T0/(2h) of the solved state (assemble()). */
+static double xi_upper(const rs_nip_contact *nc, double dx)
+{
+  const int M = nc->M;
+  double P = 0;
+  for (int j = 1; j < M - 1; ++j) P += dx * nc->z[COL_P(j)];
+  return nc->roll_mean_strain * P - nc->cfg.sheet.c11 / (2 * nc->cfg.sheet.h) * nc->z[3 * M - 1];
+}
+
 /* Strains at the upstream nodes x_e of the elements and the slip rates of the solved
  * state (the stick rows of assemble()): pbar_e = (p_e + p_{e+1})/2 is the element mean
- * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k (xi_1 = 0). */
+ * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k. */
 static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
 {
   const int M = nc->M, E = M - 1;
   const double dx = 2 * a / (M - 1);
   const rs_sheet *sh = &nc->cfg.sheet;
-  const double xi[2] = {0.0, nc->z[3 * M - 2]};
+  const double xi[2] = {xi_upper(nc, dx), nc->z[3 * M - 2]};
   double N = Ti, Qprev = 0;
   for (int e = 0; e < E; ++e) {
     double Q = nc->z[COL_Q(0, e)] + nc->z[COL_Q(1, e)];
@@ -402,6 +421,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   out->Ti = Ti;
   out->delta0 = nc->z[3 * M - 4];
   out->eps0 = nc->z[3 * M - 3];
+  out->xi1 = xi_upper(nc, dx);
   out->xi2 = nc->z[3 * M - 2];
   out->T0 = nc->z[3 * M - 1];
   out->condition_number = cond;

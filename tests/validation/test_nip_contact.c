@@ -17,19 +17,35 @@ typedef struct setup {
   double share;
   int M;
   double caliper, E_zd;     /* sheet */
+  double E_drum;            /* isotropic drum, nu = 0.3 */
+  double E_iso;             /* > 0: isotropic roll (nu = 0.3) instead of the paper roll */
 } setup;
 
 /* a paper roll (soft radially) on a steel drum, 100 um sheet */
 static setup paper_roll(void)
 {
-  setup s = {3e7, 5e9, 3e7, 0.01, 0.5, 0.1, 0.3, 0.05, 0.19, 0.35, RS_WINDER_CENTER, 0.5, 64, 100e-6, 3e7};
+  setup s = {3e7, 5e9, 3e7, 0.01, 0.5, 0.1, 0.3, 0.05, 0.19, 0.35, RS_WINDER_CENTER, 0.5, 64, 100e-6, 3e7,
+             2.1e11, 0};
   return s;
+}
+
+/* the roll's plane-strain constants */
+static rs_ortho roll_of(const setup *s)
+{
+  rs_ortho ro;
+  if (s->E_iso > 0) {
+    CHECK(rs_ortho_isotropic(s->E_iso, 0.3, 1, &ro) == RS_OK);
+  } else {
+    rs_ortho_engineering e = {s->E_r, s->E_t, s->E_t, s->nu * s->E_r / s->E_t, s->nu * s->E_r / s->E_t, 0.3, s->G};
+    CHECK(rs_ortho_from_engineering(&e, 1, &ro) == RS_OK);
+  }
+  return ro;
 }
 
 static rs_nip_contact *make(const setup *s)
 {
   rs_nip_contact_config c = {0};
-  CHECK(rs_ortho_isotropic(2.1e11, 0.3, 1, &c.drum) == RS_OK);
+  CHECK(rs_ortho_isotropic(s->E_drum, 0.3, 1, &c.drum) == RS_OK);
   c.drum_radius = s->Rd;
   c.drum_core_radius = s->Rd0;
   rs_sheet_constants k = {s->caliper, s->E_t, s->E_zd, s->E_t, s->nu, 0.3, s->nu, s->G, 1};
@@ -44,9 +60,7 @@ static rs_nip_contact *make(const setup *s)
     fprintf(stderr, "create: %s\n", rs_error_message());
     return NULL;
   }
-  rs_ortho_engineering e = {s->E_r, s->E_t, s->E_t, s->nu * s->E_r / s->E_t, s->nu * s->E_r / s->E_t, 0.3, s->G};
-  rs_ortho ro;
-  CHECK(rs_ortho_from_engineering(&e, 1, &ro) == RS_OK);
+  rs_ortho ro = roll_of(s);
   CHECK(rs_nip_contact_set_roll(nc, &ro, s->R, s->R0) == RS_OK);
   return nc;
 }
@@ -173,9 +187,20 @@ static void check_friction_law(const rs_nip_solution *r, double mu_u, double mu_
   }
 }
 
+static void print_pattern(const char *label, const unsigned char *slip, const double *rate, int E)
+{
+  printf("  %-6s ", label);
+  for (int e = 0; e < E; ++e) putchar(!slip[e] ? '.' : rate[e] > 0 ? '+' : '-');
+  putchar('\n');
+}
+
 /* Partial slip on both contacts (stiffer roll, higher load): the friction law holds point
- * by point; the stick zones lie at the entry (leading edge, Carter 1926) and the slip
- * zones reach the exit, where the sheet leaves with T0. */
+ * by point. On the roll side the sheet enters with Ti < T0, i.e. stretched less than it
+ * will be on the roll, while the roll surface there is nearly at its far-field strain:
+ * s+ ~ c11 (Ti - T0)/(2h) < 0, and p -> 0 at the edge cannot hold it, so the entry
+ * element slips BACKWARD (sheet slower than the roll); the tension is built up by forward
+ * slip over the roll surface that the nip shortens, towards the exit, with one stick zone
+ * between. (The first version, with xi1 = 0, had the sheet slip forward at the entry.) */
 static void friction_law_and_slip_zones(void)
 {
   setup s = paper_roll();
@@ -190,17 +215,16 @@ static void friction_law_and_slip_zones(void)
   CHECK_LOG("upper slip / stick elements", su * 1000 + tu);
   CHECK_LOG("lower slip / stick elements", sl * 1000 + tl);
   int E = r.M - 1;
-  for (int k = 0; k < 2; ++k) {
-    const unsigned char *f = k ? r.slip_lower : r.slip_upper;
-    int st = k ? tl : tu, sp = k ? sl : su;
-    if (st == 0 || sp == 0) continue;
-    /* one stick zone, and the last element (exit) slips */
-    int zones = 0;
-    for (int e = 0; e < E; ++e) zones += !f[e] && (e == 0 || f[e - 1]);
-    CHECK(zones == 1);
-    CHECK(f[E - 1] == 1);
-  }
+  print_pattern("upper", r.slip_upper, r.slip_rate_upper, E);
+  print_pattern("lower", r.slip_lower, r.slip_rate_lower, E);
+  CHECK(r.T0 > r.Ti);
+  CHECK(r.slip_upper[0] && r.slip_rate_upper[0] < 0); /* backward at the entry */
+  CHECK(r.slip_upper[E - 1] && r.slip_rate_upper[E - 1] > 0); /* forward at the exit */
+  int zones = 0;
+  for (int e = 0; e < E; ++e) zones += !r.slip_upper[e] && (e == 0 || r.slip_upper[e - 1]);
+  CHECK(zones == 1);
   CHECK(tu > 0 && su > 0); /* both kinds present on the roll side: the case tests something */
+  CHECK(tl > 0 && sl > 0);
   rs_nip_solution_free(&r);
 }
 
@@ -260,35 +284,165 @@ static void thin_sheet_frictionless(void)
   rs_nip_contact_destroy(&nc);
 }
 
-/* NIT = T0 - Ti with a center-driven roll and a rider: |NIT| <= mu+ P always, equal
- * exactly when every upper element slips (in one direction). */
+/* NIT = T0 - Ti with a center-driven roll and a rider: NIT = int q1 and |q1| <= mu+ pbar
+ * element by element, so |NIT| <= mu+ P, with equality only if every upper element slips
+ * forward. That never happens with an extensible sheet (the entry slips backward, see
+ * friction_law_and_slip_zones), so the bound is strict; as mu+ -> 0 the roll side cannot
+ * close any strain mismatch and slips forward almost everywhere: NIT / (mu+ P) -> 1. */
 static void nit_bound(void)
 {
   setup s = paper_roll();
   const double loads[] = {500, 1750, 6000, 20000};
-  int seen_eq = 0, seen_lt = 0;
-  for (int i = 0; i < 4; ++i) {
-    rs_nip_solution r = {0};
-    s.E_r = s.G = s.E_zd = 3e8;
-    s.mu_roll = loads[i] < 5000 ? 0.3 : 0.5;
-    CHECK(solve(&s, loads[i], 350, &r));
-    double nit = r.T0 - r.Ti, bound = s.mu_roll * r.load;
-    int all = 1; /* every upper element slips, all in one direction */
-    for (int e = 0; e < r.M - 1; ++e)
-      all &= r.slip_upper[e] && r.slip_rate_upper[e] * r.slip_rate_upper[0] > 0;
-    printf("  P = %-8g mu+ = %g NIT = %.17g  mu P = %.17g  all upper slip: %d\n", loads[i],
-           s.mu_roll, nit, bound, all);
-    CHECK(fabs(nit) <= bound * (1 + 1e-12));
-    if (all) {
-      CHECK_CLOSE(fabs(nit), bound, 1e-10);
-      ++seen_eq;
-    } else {
+  const double mus[] = {0.3, 0.01};
+  for (int m = 0; m < 2; ++m)
+    for (int i = 0; i < 4; ++i) {
+      rs_nip_solution r = {0};
+      s.E_r = s.G = s.E_zd = 3e8;
+      s.mu_roll = mus[m];
+      CHECK(solve(&s, loads[i], 350, &r));
+      double nit = r.T0 - r.Ti, bound = s.mu_roll * r.load;
+      printf("  P = %-8g mu+ = %-5g NIT = %.17g  NIT / (mu P) = %.17g\n", loads[i], s.mu_roll, nit,
+             nit / bound);
       CHECK_LT(fabs(nit), bound * (1 - 1e-6));
-      ++seen_lt;
+      CHECK(nit > 0);
+      if (m == 1) CHECK(nit / bound > 0.99);
+      rs_nip_solution_free(&r);
+    }
+}
+
+/* Rigid cylinders and an extensible sheet (belt creep, Reynolds 1876): without body
+ * deformation the sheet can stick on both faces with a constant tension (the tension
+ * changes only in slip zones, and none is needed), so NIT -> 0 and the roll contact sticks
+ * everywhere as both cylinders stiffen. A wound-on condition xi1 = 0 on the sheet's strain
+ * from its unstressed state fails this: the sheet then runs c11 T0/(2h) faster than the
+ * rigid roll and slips forward everywhere, NIT = mu P (the first version did). */
+static void rigid_cylinders_no_nit(void)
+{
+  setup s = paper_roll();
+  s.mu_roll = 0.3;
+  const double Es[] = {1e9, 1e10, 1e11, 1e12};
+  double prev = INFINITY;
+  for (int i = 0; i < 4; ++i) {
+    s.E_iso = s.E_drum = Es[i];
+    rs_nip_solution r = {0};
+    CHECK(solve(&s, 3000, 350, &r));
+    double ratio = (r.T0 - r.Ti) / (s.mu_roll * r.load);
+    int su = 0;
+    for (int e = 0; e < r.M - 1; ++e) su += r.slip_upper[e];
+    printf("  E_cyl = %-8g NIT / (mu P) = %-24.17g roll slip elements %d\n", Es[i], ratio, su);
+    if (i <= 2) CHECK_LT(fabs(ratio), prev); /* then a floor of ~3e-5 (discretisation) */
+    prev = fabs(ratio);
+    if (i >= 2) {
+      CHECK_LT(fabs(ratio), 1e-3);
+      CHECK(su == 0);
     }
     rs_nip_solution_free(&r);
   }
-  CHECK(seen_eq > 0 && seen_lt > 0); /* both branches exercised */
+}
+
+/* w (inward) and eps of one cylinder at the nodes, from the returned pressures and
+ * tractions, with kernels built here through the public cylinder API (the solver's default
+ * series: 256 accelerated terms). q: traction on the cylinder in +x per element. */
+static void body_fields(rs_cylinder *c, const rs_nip_solution *r, const double *q, double *w, double *eps)
+{
+  const int M = r->M;
+  rs_series_opts o = {256, 0, 0, 1};
+  rs_kernels kp = {0}, ku = {0}, ke = {0};
+  CHECK(rs_cylinder_kernels(c, RS_BASIS_HAT, r->dx, 0, M, RS_KERNEL_PU | RS_KERNEL_PE, &o, &kp) == RS_OK);
+  CHECK(rs_cylinder_kernels(c, RS_BASIS_BOX, r->dx, -0.5 * r->dx, M, RS_KERNEL_QU, &o, &ku) == RS_OK);
+  CHECK(rs_cylinder_kernels(c, RS_BASIS_HAT, r->dx, -0.5 * r->dx, M, RS_KERNEL_QE, &o, &ke) == RS_OK);
+  for (int i = 0; i < M; ++i) {
+    w[i] = eps[i] = 0;
+    for (int j = 0; j < M; ++j) {
+      w[i] += kp.pu[rs_kernel_index(M, i - j)] * r->pressure[j];
+      eps[i] += kp.pe[rs_kernel_index(M, i - j)] * r->pressure[j];
+    }
+    for (int e = 0; e < M - 1; ++e) {
+      w[i] += ku.qu[rs_kernel_index(M, i - e)] * q[e];
+      eps[i] += ke.qe[rs_kernel_index(M, i - e)] * q[e];
+    }
+  }
+  rs_kernels_free(&kp);
+  rs_kernels_free(&ku);
+  rs_kernels_free(&ke);
+}
+
+/* The power balance of the steady nip, per unit speed V, to second order in the loads
+ * (docs/nip.md, "Power balance"). Drive power with the torques of eq. (20) and the shaft
+ * speeds w_k R_k = V (1 - xi_k), work of the web tensions at the entry (-Ti (1 + eps_in)),
+ * the exit (+T0 (1 + eps_out)) and where the wound sheet pulls the roll (-T0 (1 - xi1 +
+ * eps1_mean)), minus the elastic energy the sheet carries out, (T0 eps_out - Ti eps_in)/2:
+ *   L = Q1 xi1 + Q2 xi2 + c11 (T0^2 - Ti^2)/(4h) - T0 eps1_mean,   Q_k = int q_k.
+ * It equals the dissipation D = int (q1 s+ + q2 s-) only once the two torques that eq. (20)
+ * (like the paper) drops are added: the moment of the pressure about the centres
+ * (rolling resistance, (eps0 P - int p x)/R*) and the traction acting at the deformed
+ * radius R - w (sum_k int q_k w_k / R_k). Both are ~1e-4 of the forces in (20), so they do
+ * not matter for T0, but they are of the order of D. Checked: (1) per cylinder, steady
+ * rolling conserves energy: int q eps + int p w' + int q w / R = 0 (Betti); (2) the whole
+ * balance closes as M grows. It does not test xi1: xi1 cancels between L and D, so the
+ * balance holds for any wound-on condition (the rigid limit tests that). */
+static void power_balance(void)
+{
+  setup s = paper_roll();
+  rs_sheet_constants k = {s.caliper, s.E_t, s.E_zd, s.E_t, s.nu, 0.3, s.nu, s.G, 1};
+  rs_sheet sh;
+  CHECK(rs_sheet_from_constants(&k, &sh) == RS_OK);
+  rs_ortho ro = roll_of(&s), rd;
+  CHECK(rs_ortho_isotropic(s.E_drum, 0.3, 1, &rd) == RS_OK);
+  rs_cylinder *cyl[2] = {NULL, NULL};
+  CHECK(rs_cylinder_create(&ro, s.R, s.R0, &cyl[0]) == RS_OK);
+  CHECK(rs_cylinder_create(&rd, s.Rd, s.Rd0, &cyl[1]) == RS_OK);
+  double C0[2][2];
+  CHECK(rs_cylinder_mode_compliance(cyl[0], 0, C0) == RS_OK);
+  const double Rb[2] = {s.R, s.Rd}, Rs = 1 / (1 / s.R + 1 / s.Rd), f = sh.c11 / (2 * sh.h);
+  double prev = INFINITY;
+  for (int pass = 0; pass < 2; ++pass) {
+    s.M = pass ? 128 : 64;
+    rs_nip_solution r = {0};
+    CHECK(solve(&s, 1750, 350, &r));
+    const int M = r.M, E = M - 1;
+    double *q = malloc(2 * (size_t)E * sizeof *q), *w = malloc((size_t)M * sizeof *w);
+    double *eps = malloc((size_t)M * sizeof *eps);
+    for (int e = 0; e < E; ++e) {
+      q[e] = -r.shear_upper[e];
+      q[E + e] = r.shear_lower[e];
+    }
+    double lever = 0, Q[2] = {0, 0};
+    for (int b = 0; b < 2; ++b) {
+      body_fields(cyl[b], &r, q + b * E, w, eps);
+      double qe = 0, pw = 0, qw = 0;
+      for (int e = 0; e < E; ++e) {
+        Q[b] += r.dx * q[b * E + e];
+        qe += r.dx * q[b * E + e] * 0.5 * (eps[e] + eps[e + 1]);
+        qw += r.dx * q[b * E + e] * 0.5 * (w[e] + w[e + 1]) / Rb[b];
+      }
+      for (int i = 1; i < M - 1; ++i) pw += r.pressure[i] * 0.5 * (w[i + 1] - w[i - 1]);
+      printf("  M = %d body %d: int q eps %.6e  int p w' %.6e  int q w/R %.6e\n", M, b, qe, pw, qw);
+      CHECK_LT(fabs(qe + pw + qw), 1e-3 * fabs(qe + pw)); /* energy of one cylinder */
+      lever += qw;
+    }
+    double ebar = -C0[0][0] * r.load / (2 * PI * s.R * s.R);
+    CHECK_CLOSE(r.xi1, ebar - f * r.T0, 1e-12); /* the reported creep is the wound-on one */
+    double L = Q[0] * r.xi1 + Q[1] * r.xi2 + f * (r.T0 * r.T0 - r.Ti * r.Ti) / 2 - r.T0 * ebar;
+    double px = 0;
+    for (int i = 0; i < M; ++i) px += r.pressure[i] * r.x[i] * r.dx; /* exact for hats */
+    double roll_res = (r.eps0 * r.load - px) / Rs;
+    double res = (r.dissipation - L - roll_res - lever) / r.dissipation;
+    CHECK_LOG("dissipation D (N/m)", r.dissipation);
+    CHECK_LOG("(D - L) / D", (r.dissipation - L) / r.dissipation);
+    CHECK_LOG("rolling resistance / D", roll_res / r.dissipation);
+    CHECK_LOG("lever arm / D", lever / r.dissipation);
+    CHECK_LOG("balance residual / D", res);
+    CHECK_LT(fabs(res), fabs(prev)); /* closes as M grows */
+    prev = res;
+    if (pass) CHECK_LT(fabs(res), 0.03);
+    free(q);
+    free(w);
+    free(eps);
+    rs_nip_solution_free(&r);
+  }
+  rs_cylinder_destroy(&cyl[0]);
+  rs_cylinder_destroy(&cyl[1]);
 }
 
 /* The staggered discretisation: no node-to-node oscillation in the converged shear (the
@@ -434,9 +588,7 @@ static void warm_equals_cold(void)
   rs_nip_contact *nc = make(&s);
   rs_nip_solution w = {0}, c = {0};
   CHECK(rs_nip_contact_solve_load(nc, 1750, 350, &w) == RS_OK);
-  rs_ortho_engineering e = {s.E_r, s.E_t, s.E_t, s.nu * s.E_r / s.E_t, s.nu * s.E_r / s.E_t, 0.3, s.G};
-  rs_ortho ro;
-  CHECK(rs_ortho_from_engineering(&e, 1, &ro) == RS_OK);
+  rs_ortho ro = roll_of(&s);
   CHECK(rs_nip_contact_set_roll(nc, &ro, s.R + 1e-4, s.R0) == RS_OK);
   CHECK(rs_nip_contact_solve_load(nc, 1750, 350, &w) == RS_OK);
   int warm_tries = w.width_iterations;
@@ -461,6 +613,8 @@ static const check_case cases[] = {
     {"friction_law_and_slip_zones", friction_law_and_slip_zones},
     {"thin_sheet_frictionless", thin_sheet_frictionless},
     {"nit_bound", nit_bound},
+    {"rigid_cylinders_no_nit", rigid_cylinders_no_nit},
+    {"power_balance", power_balance},
     {"no_checkerboard", no_checkerboard},
     {"convergence_in_M", convergence_in_M},
     {"bad_input", bad_input},
