@@ -13,6 +13,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "nip/contact_internal.h" /* factorization / GMRES counters only */
 #include "reelsim/nip_contact.h"
 
 static double now(void)
@@ -90,6 +91,7 @@ int main(int argc, char **argv)
   double *tr = calloc((size_t)rep * REEL_LAYERS, sizeof *tr);
   rs_nip_solution s = {0};
   int widths_cold = 0, solves_cold = 0, widths_layer = 0, solves_layer = 0, nreel = 0;
+  long lu_cold = 0, gm_cold = 0, lu_layer = 0, gm_layer = 0, lu_reel = 0, gm_reel = 0;
   long widths_reel = 0, solves_reel = 0;
   double T0_cold = 0, a_cold = 0, cond = 0, R_last = 0;
   for (int r = 0; r < rep; ++r) {
@@ -101,24 +103,32 @@ int main(int argc, char **argv)
     double t1 = now();
     widths_cold = s.width_iterations;
     solves_cold = s.total_solves;
+    lu_cold = nc->stats_lu;
+    gm_cold = nc->stats_gmres_it;
     T0_cold = s.T0;
     a_cold = s.a;
     cond = s.condition_number;
     if (all) phase_same(nc, &st, &s);
     double t2 = now();
+    long lu0 = nc->stats_lu, gm0 = nc->stats_gmres_it;
     if (all || !strcmp(phase, "layer")) phase_layer(nc, &st, &s);
     double t3 = now();
     widths_layer = s.width_iterations;
     solves_layer = s.total_solves;
+    lu_layer = nc->stats_lu - lu0;
+    gm_layer = nc->stats_gmres_it - gm0;
     tc[r] = t1 - t0;
     ts[r] = t2 - t1;
     tl[r] = t3 - t2;
     if (all || !strcmp(phase, "reel"))
       for (int l = 0; l < REEL_LAYERS; ++l) {
         double t4 = now();
+        long lu1 = nc->stats_lu, gm1 = nc->stats_gmres_it;
         phase_reel(nc, &st, &s);
         double t5 = now();
         if (l >= 2) {
+          lu_reel += nc->stats_lu - lu1;
+          gm_reel += nc->stats_gmres_it - gm1;
           tr[nreel++] = t5 - t4;
           widths_reel += s.width_iterations;
           solves_reel += s.total_solves;
@@ -132,15 +142,16 @@ int main(int argc, char **argv)
   qsort(tl, (size_t)rep, sizeof *tl, cmp);
   qsort(tr, (size_t)nreel, sizeof *tr, cmp);
   printf("nip contact, M = 64, center winder, P = 1750 N/m, R = 0.5 m (median of %d)\n", rep);
-  printf("  cold                 %8.3f ms  (half-widths %d, linear solves %d)\n", 1e3 * tc[rep / 2],
-         widths_cold, solves_cold);
+  printf("  cold                 %8.3f ms  (half-widths %d, linear solves %d: LU %ld, GMRES it %ld)\n",
+         1e3 * tc[rep / 2], widths_cold, solves_cold, lu_cold, gm_cold);
   if (all) printf("  warm, same nip       %8.3f ms\n", 1e3 * ts[rep / 2]);
   if (all || !strcmp(phase, "layer"))
-    printf("  warm, next layer     %8.3f ms  (half-widths %d, linear solves %d)\n", 1e3 * tl[rep / 2],
-           widths_layer, solves_layer);
+    printf("  warm, next layer     %8.3f ms  (half-widths %d, linear solves %d: LU %ld, GMRES it %ld)\n",
+           1e3 * tl[rep / 2], widths_layer, solves_layer, lu_layer, gm_layer);
   if (nreel)
-    printf("  reel, per layer      %8.3f ms  (mean half-widths %.2f, linear solves %.2f; %d layers)\n",
-           1e3 * tr[nreel / 2], (double)widths_reel / nreel, (double)solves_reel / nreel, nreel);
+    printf("  reel, per layer      %8.3f ms  (mean half-widths %.2f, linear solves %.2f: LU %.2f, "
+           "GMRES it %.2f; %d layers)\n", 1e3 * tr[nreel / 2], (double)widths_reel / nreel,
+           (double)solves_reel / nreel, (double)lu_reel / nreel, (double)gm_reel / nreel, nreel);
   printf("  cold: T0 = %.9f N/m, a = %.9f mm, condition number %.3g\n", T0_cold, 1e3 * a_cold, cond);
   printf("  last: T0 = %.9f N/m, a = %.9f mm, R = %.6f m\n", s.T0, 1e3 * s.a, R_last);
   rs_nip_solution_free(&s);

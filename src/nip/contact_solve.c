@@ -142,7 +142,7 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
  * delta0 column. Reference values: indentation w_ref = a^2/(2R*), pressure p_ref giving
  * w_ref through the local compliance, strain s_ref = p_ref * the largest local strain
  * compliance, load P_ref = 2 a p_ref. */
-static void scales(const rs_nip_contact *nc, double a, double *col, double *row)
+void rs_nipc_scales(const rs_nip_contact *nc, double a, double *col, double *row)
 {
   const int M = nc->M, n = nc->n, E = M - 1;
   const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
@@ -163,58 +163,6 @@ static void scales(const rs_nip_contact *nc, double a, double *col, double *row)
   for (int r = 0; r < M; ++r) row[r] = w_ref;
   for (int r = M; r < M + 2 * E; ++r) row[r] = nc->state[r - M] ? p_ref : s_ref;
   row[n - 2] = row[n - 1] = P_ref;
-}
-
-/* Scale physically, equilibrate (dgeequ), factor (dgetrf), estimate the condition number
- * of the scaled matrix (dgecon), solve. The solution lands in nc->z. */
-static rs_status factor_solve(rs_nip_contact *nc, double a, double *cond)
-{
-  const int n = nc->n;
-  lapack_int N = (lapack_int)n, info;
-  double *col = nc->cs, *row = nc->rs;
-  scales(nc, a, col, row);
-  for (int c = 0; c < n; ++c)
-    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= col[c] / row[r];
-  for (int r = 0; r < n; ++r) nc->z[r] = nc->rhs[r] / row[r];
-  double *er = nc->rhs, *ec = malloc((size_t)n * sizeof *ec); /* rhs is consumed above */
-  if (!ec) return RS_ERROR(RS_ERR_MEMORY, "nip work space");
-  double rowcnd, colcnd, amax;
-  info = LAPACKE_dgeequ(LAPACK_COL_MAJOR, N, N, nc->A, N, er, ec, &rowcnd, &colcnd, &amax);
-  if (info != 0) {
-    free(ec);
-    return RS_ERROR(RS_ERR_SOLVER, "nip system has an empty %s %d (dgeequ info %d)",
-                    info <= N ? "row" : "column", (int)(info <= N ? info : info - N), (int)info);
-  }
-  for (int c = 0; c < n; ++c)
-    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= er[r] * ec[c];
-  for (int r = 0; r < n; ++r) nc->z[r] *= er[r];
-  double anorm = LAPACKE_dlange(LAPACK_COL_MAJOR, '1', N, N, nc->A, N);
-  info = LAPACKE_dgetrf(LAPACK_COL_MAJOR, N, N, nc->A, N, nc->ipiv);
-  rs_status st = RS_OK;
-  double rcond = 0;
-  if (info > 0) {
-    *cond = INFINITY;
-    st = RS_ERROR(RS_ERR_SOLVER, "nip system is singular (dgetrf: zero pivot %d of %d)", (int)info, n);
-  } else if (info < 0) {
-    st = RS_ERROR(RS_ERR_INTERNAL, "dgetrf argument %d", (int)-info);
-  } else {
-    info = LAPACKE_dgecon(LAPACK_COL_MAJOR, '1', N, nc->A, N, anorm, &rcond);
-    *cond = rcond > 0 ? 1.0 / rcond : INFINITY;
-    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgecon info %d", (int)info);
-    else if (!(rcond > 1e3 * 2.2e-16))
-      st = RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
-  }
-  if (!st) {
-    info = LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'N', N, 1, nc->A, N, nc->ipiv, nc->z, N);
-    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgetrs info %d", (int)info);
-  }
-  if (!st)
-    for (int c = 0; c < n; ++c) {
-      nc->z[c] *= ec[c] * col[c];
-      if (!isfinite(nc->z[c])) st = RS_ERROR(RS_ERR_SOLVER, "nip solution is not finite");
-    }
-  free(ec);
-  return st;
 }
 
 /* nodal pressure p_j (Pa) from the solution vector (0 at both ends) */
@@ -326,7 +274,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   double cond = 0, worst = 0;
   for (it = 1; it <= nc->cfg.max_iterations; ++it) {
     assemble(nc, a, Ti);
-    st = factor_solve(nc, a, &cond);
+    st = rs_nipc_lin_solve(nc, a);
     if (st) {
       rs_error_wrap("stick/slip pass %d at a = %g m", it, a);
       break;
@@ -408,6 +356,10 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
     st = RS_ERROR(RS_ERR_SOLVER, "stick/slip iteration did not settle at a = %g m in %d passes "
                   "(last pass changed %d elements, worst violation %.3g relative)",
                   a, nc->cfg.max_iterations, changes, worst);
+  if (!st) {
+    st = rs_nipc_lin_cond(nc, a, &cond);
+    if (st) rs_error_wrap("converged stick/slip state at a = %g m", a);
+  }
   if (st) {
     nc->have_warm = 0;
     free(srate_all);
