@@ -74,6 +74,8 @@ typedef struct rs_nip_solution {
   double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
   double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix */
   int iterations;           /* active-set solves at the final half-width */
+  int lcp_pivots;           /* Lemke pivots at the final half-width (0: the active-set
+                               iteration found the state without the LCP) */
   int width_iterations;     /* half-widths tried by the load search (1 for a given a) */
   int total_solves;         /* linear solves in all */
   double dissipation;       /* int (q+ s+ + q- s-) dx >= 0, N/m per unit speed */
@@ -101,6 +103,10 @@ void rs_nip_contact_destroy(rs_nip_contact **nc);
  * Keeps the previous solution for a warm start; rebuilds the roll kernels only when
  * something changed. */
 rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, double R, double R0);
+
+/* Changes the friction coefficients (>= 0; RS_ERR_INPUT naming nip.friction.roll or
+ * .drum otherwise), keeping the warm-start state: continuation in mu. */
+rs_status rs_nip_contact_set_friction(rs_nip_contact *nc, double mu_roll, double mu_drum);
 
 /* Forgets the warm-start state (the next solve starts cold). */
 void rs_nip_contact_forget(rs_nip_contact *nc);

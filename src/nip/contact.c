@@ -120,6 +120,18 @@ rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, doub
   return RS_OK;
 }
 
+rs_status rs_nip_contact_set_friction(rs_nip_contact *nc, double mu_roll, double mu_drum)
+{
+  if (!nc) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  if (!finite_nonneg(mu_roll))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.roll must be >= 0 (got %g)", mu_roll);
+  if (!finite_nonneg(mu_drum))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.drum must be >= 0 (got %g)", mu_drum);
+  nc->cfg.mu_roll = mu_roll;
+  nc->cfg.mu_drum = mu_drum;
+  return RS_OK;
+}
+
 void rs_nip_contact_forget(rs_nip_contact *nc)
 {
   if (!nc) return;

@@ -55,6 +55,7 @@ struct rs_nip_contact {
   double *A, *rhs, *z;
   rs_nipc_lin lin;
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
+  long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
   signed char *visited;      /* max_iterations states of 2(M-1) */
   double *eps_sheet, *eps_body[2], *pbar; /* M-1 each: at the upstream node of element e
                                              (pbar: element mean pressure) */
@@ -78,6 +79,14 @@ rs_status rs_nipc_lin_alloc(rs_nip_contact *nc);
 void rs_nipc_lin_free(rs_nip_contact *nc);
 rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
+rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
+
+/* contact_solve.c: assembles A z = rhs for the active set in nc->state. */
+void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);
+
+/* contact_lcp.c: the stick/slip LCP at half-width a by Lemke's method; the active set of
+ * its solution in state_out (2 (M-1)), or RS_ERR_SOLVER (ray or pivot cap). */
+rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *state_out, int *pivots);
 
 /* contact_solve.c: allocates the solution arrays for M nodes. */
 rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M);

@@ -98,7 +98,7 @@ static double norm2(int n, const double *x)
 }
 
 /* A new factorization of the current matrix: scales, equilibration, dgetrf. */
-static rs_status refactor(rs_nip_contact *nc, double a)
+rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
 {
   const int n = nc->n;
   rs_nipc_lin *L = &nc->lin;
@@ -279,7 +279,7 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
       return RS_OK;
     }
   }
-  rs_status st = refactor(nc, a);
+  rs_status st = rs_nipc_lin_refactor(nc, a);
   if (st) return st;
   double *x = nc->z;
   for (int r = 0; r < n; ++r) x[r] = L->rs[r] * nc->rhs[r];
@@ -302,7 +302,7 @@ rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond)
 {
   rs_nipc_lin *L = &nc->lin;
   if (!L->valid || L->solved_state_differs) {
-    rs_status st = refactor(nc, a);
+    rs_status st = rs_nipc_lin_refactor(nc, a);
     if (st) return st;
     L->solved_state_differs = 0;
   }

@@ -35,7 +35,29 @@ static double hertz(double P, double Rs, double Es)
   return sqrt(4 * P * Rs / (3.14159265358979323846 * Es));
 }
 
-/* First half-width to try. Cold: Hertz. Warm: the ratio phi = a / a_Hertz of the last
+/* Cold start: the cylinders (Hertz, P_H = pi a^2 E* / (4 R*)) in series with the sheet's
+ * through-thickness compliance C = 2h c22 as a Winkler layer (rigid cylinders: p = (a^2 -
+ * x^2) / (2 R* C), P_W = 2 a^3 / (3 R* C)): 1/P = 1/P_H(a) + 1/P_W(a), solved for a by
+ * Newton on ln a. A guess only (the layer and the cylinders do not share the same a); it
+ * matters when the sheet is the softer part (stiff cylinders), where Hertz alone is far
+ * too narrow and may not even carry the drum's traction. */
+static double cold_guess(const rs_nip_contact *nc, double P, double Rs, double Es)
+{
+  double aH = hertz(P, Rs, Es), C = 2 * nc->cfg.sheet.h * nc->cfg.sheet.c22;
+  if (!(C > 0)) return aH;
+  double aW = cbrt(1.5 * P * Rs * C), x = log(fmax(aH, aW));
+  for (int it = 0; it < 30; ++it) {
+    double a = exp(x), PH = 3.14159265358979323846 * a * a * Es / (4 * Rs);
+    double PW = 2 * a * a * a / (3 * Rs * C);
+    double g = 1 / PH + 1 / PW - 1 / P, dg = -2 / PH - 3 / PW; /* d/d ln a */
+    double step = -g / dg;
+    x += fmax(fmin(step, 0.7), -0.7);
+    if (fabs(step) < 1e-12) break;
+  }
+  return exp(x);
+}
+
+/* First half-width to try. Cold: cold_guess. Warm: the ratio phi = a / a_Hertz of the last
  * converged searches, extrapolated in R* (polynomial through up to three, Lagrange) and
  * times the Hertz half-width now; a reel calls with R growing by one caliper per layer,
  * where phi is smooth, so the prediction usually meets the load to load_rtol at once.
@@ -45,7 +67,7 @@ static double predict(const rs_nip_contact *nc, double P, double Rs, double Es)
 {
   if (!(Es > 0)) return 1e-3 * fmin(nc->R[0], nc->R[1]);
   double aH = hertz(P, Rs, Es);
-  if (nc->hist_n == 0) return aH;
+  if (nc->hist_n == 0) return cold_guess(nc, P, Rs, Es);
   if (P == nc->hist_P[0] && Rs == nc->hist_Rs[0] && Es == nc->hist_Es[0]) return nc->last_a;
   double phi[3], x[3];
   int m = 0;
@@ -107,10 +129,24 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
     rs_status st = rs_nipc_solve_fixed(nc, exp(x), Ti, out);
     ++evals;
     solves += out->iterations;
-    if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
-    if (!(out->load > 0))
-      return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
-    double f = log(out->load) - lnP;
+    double f;
+    if (st == RS_ERR_SOLVER && carried > 0 && !have_hi) {
+      /* No stick/slip state at this a: if the load it carries (the pressures of the last
+       * linear solve) is too small for the drum's traction, no state can exist there; that
+       * says the half-width is too small, so widen instead of failing. */
+      double Pa = 0, dx = 2 * exp(x) / (nc->M - 1);
+      for (int j = 1; j < nc->M - 1; ++j) Pa += dx * nc->z[j - 1];
+      if (!(Pa > 0 && nc->cfg.mu_drum * Pa < 1.5 * carried))
+        return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
+      rs_error_clear();
+      nc->have_warm = 0;
+      f = fmin(log(Pa) - lnP, -1e-3);
+    } else {
+      if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
+      if (!(out->load > 0))
+        return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
+      f = log(out->load) - lnP;
+    }
     flast = f;
     if (fabs(f) <= tol) break;
     if (evals >= 80)

@@ -11,6 +11,7 @@
 #include "nip/contact_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,7 +57,7 @@ rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M)
 #define ROW_STICK(k, e) (M + (k) * (M - 1) + (e))
 
 /* Assembles A z = rhs (column-major) for the current active set. */
-static void assemble(rs_nip_contact *nc, double a, double Ti)
+void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
 {
   const int M = nc->M, n = nc->n, E = M - 1;
   const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
@@ -242,38 +243,26 @@ static int same_state(const signed char *a, const signed char *b, int n)
 
 /* Steps 2-9 of the seed paper with the normal and tangential problems solved together
  * (the paper alternates them; the coupled solve has the same fixed point and needs no
- * outer loop). Start: full stick, or the previous converged set (warm). Each pass:
+ * outer loop), from the active set in nc->state. Each pass:
  *   stick element with |q| > mu pbar           -> slip, sign of q     (steps 3, 5)
  *   slip element whose slip rate opposes q      -> stick              (step 7)
  * until nothing changes (step 9). Terminates: every visited set is remembered; on a
  * repeat the iteration changes only the worst violation per pass, and a second repeat
- * (or max_iterations) is RS_ERR_SOLVER. */
-rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out)
+ * (or the pass budget) is RS_ERR_SOLVER. On success nc->z and srate hold the state. */
+static rs_status iterate(rs_nip_contact *nc, double a, double Ti, int budget, double *srate_all,
+                         signed char *next, int *passes)
 {
   const int M = nc->M, E = M - 1, S = 2 * E;
   const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
-  const double dx = 2 * a / (M - 1);
-  rs_status st = rs_nipc_kernels(nc, a);
-  if (st) return st;
-  st = rs_nipc_solution_reserve(out, M);
-  if (st) return st;
-  if (!nc->have_warm) memset(nc->state, 0, (size_t)S);
   /* the lower contact needs a stick element to define xi2 */
   int nstick_low = 0;
   for (int e = 0; e < E; ++e) nstick_low += nc->state[E + e] == 0;
   if (!nstick_low) nc->state[E + E / 2] = 0;
-
-  double *srate_all = malloc((size_t)S * sizeof *srate_all);
-  signed char *next = malloc((size_t)S);
-  if (!srate_all || !next) {
-    free(srate_all);
-    free(next);
-    return RS_ERROR(RS_ERR_MEMORY, "nip iteration work space");
-  }
-  int nvis = 0, single = 0, it, changes = 0, converged = 0;
-  double cond = 0, worst = 0;
-  for (it = 1; it <= nc->cfg.max_iterations; ++it) {
-    assemble(nc, a, Ti);
+  int nvis = 0, single = 0, it, changes = 0;
+  double worst = 0;
+  rs_status st = RS_OK;
+  for (it = 1; it <= budget; ++it) {
+    rs_nipc_assemble(nc, a, Ti);
     st = rs_nipc_lin_solve(nc, a);
     if (st) {
       rs_error_wrap("stick/slip pass %d at a = %g m", it, a);
@@ -321,10 +310,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
           }
         }
       }
-    if (!changes) {
-      converged = 1;
-      break;
-    }
+    if (!changes) break;
     if (single) {
       memcpy(next, nc->state, (size_t)S);
       next[iworst] = sworst;
@@ -352,18 +338,67 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
     if (nvis < nc->cfg.max_iterations) memcpy(nc->visited + (size_t)nvis++ * S, nc->state, (size_t)S);
     memcpy(nc->state, next, (size_t)S);
   }
-  if (!st && !converged)
+  *passes = it > budget ? budget : it;
+  if (!st && it > budget)
     st = RS_ERROR(RS_ERR_SOLVER, "stick/slip iteration did not settle at a = %g m in %d passes "
                   "(last pass changed %d elements, worst violation %.3g relative)",
-                  a, nc->cfg.max_iterations, changes, worst);
+                  a, budget, changes, worst);
+  return st;
+}
+
+/* The stick/slip state at half-width a: the active-set iteration from the warm set (or
+ * full stick); if it fails (cycles, or no state with a stuck rider element), the LCP of
+ * the friction conditions solved by Lemke's method (contact_lcp.c) gives the set to
+ * iterate from again, within the same pass budget (max_iterations). */
+rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out)
+{
+  const int M = nc->M, E = M - 1, S = 2 * E;
+  const double dx = 2 * a / (M - 1);
+  rs_status st = rs_nipc_kernels(nc, a);
+  if (st) return st;
+  st = rs_nipc_solution_reserve(out, M);
+  if (st) return st;
+  if (!nc->have_warm) memset(nc->state, 0, (size_t)S);
+  double *srate_all = malloc((size_t)S * sizeof *srate_all);
+  signed char *next = malloc((size_t)S), *lcp = malloc((size_t)S);
+  if (!srate_all || !next || !lcp) {
+    free(srate_all);
+    free(next);
+    free(lcp);
+    return RS_ERROR(RS_ERR_MEMORY, "nip iteration work space");
+  }
+  int it = 0, it2 = 0, pivots = 0;
+  double cond = 0;
+  st = iterate(nc, a, Ti, nc->cfg.max_iterations, srate_all, next, &it);
+  if (st == RS_ERR_SOLVER && it < nc->cfg.max_iterations) {
+    char first[512];
+    snprintf(first, sizeof first, "%s", rs_error_message());
+    rs_status sl = rs_nipc_lcp(nc, a, Ti, lcp, &pivots);
+    nc->stats_lcp_pivots += pivots;
+    if (!sl) {
+      memcpy(nc->state, lcp, (size_t)S);
+      sl = iterate(nc, a, Ti, nc->cfg.max_iterations - it, srate_all, next, &it2);
+    }
+    if (!sl) {
+      rs_error_clear();
+      st = RS_OK;
+      it += it2;
+    } else {
+      char second[512];
+      snprintf(second, sizeof second, "%s", rs_error_message());
+      st = RS_ERROR(RS_ERR_SOLVER, "%s; then from the LCP solution (Lemke, %d pivots): %s", first,
+                    pivots, second);
+    }
+  }
   if (!st) {
     st = rs_nipc_lin_cond(nc, a, &cond);
     if (st) rs_error_wrap("converged stick/slip state at a = %g m", a);
   }
+  free(next);
+  free(lcp);
   if (st) {
     nc->have_warm = 0;
     free(srate_all);
-    free(next);
     return st;
   }
   /* fill the solution */
@@ -378,6 +413,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   out->T0 = nc->z[3 * M - 1];
   out->condition_number = cond;
   out->iterations = it;
+  out->lcp_pivots = pivots;
   double P = 0, diss = 0;
   for (int i = 0; i < M; ++i) {
     out->x[i] = -a + i * dx;
@@ -398,7 +434,6 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   out->dissipation = diss;
   nc->have_warm = 1;
   free(srate_all);
-  free(next);
   if (!isfinite(P) || !isfinite(out->T0)) return RS_ERROR(RS_ERR_SOLVER, "non-finite nip solution at a = %g m", a);
   return RS_OK;
 }

@@ -16,6 +16,10 @@ rs_cli_test(nip_needs_radius 2 [[need SCENE and --radius]]
             nip ${NSC}/contact.yaml)
 rs_cli_test(nip_center 0 [[NIT = 307\.5[0-9]* N/m, mu_roll P = 332\.5 N/m]]
             nip ${NSC}/nip-center.yaml --radius 0.15)
-# a known failure of the active-set iteration (docs/nip.md, limitations): exit 3, says why
-rs_cli_test(nip_solver_failure 3 [[solver failure: .*no consistent stick/slip state.*after [0-9]+ passes]]
+# the rider cases the first version could not solve (docs/nip.md, "The rider"): the
+# brief's mu_roll = 1.0 at low load (after the wound-on fix the iteration finds it), and a
+# slippery rider that needs the LCP (Lemke) fallback
+rs_cli_test(nip_rider_high_mu_roll 0 [[NIT = 245\.9[0-9]* N/m, mu_roll P = 500 N/m]]
+            nip ${NSC}/nip-center.yaml --radius 0.15 --set nip.friction.roll=1.0 --set nip.load=500)
+rs_cli_test(nip_rider_slippery 0 [[NIT = 183\.3[0-9]* N/m, mu_roll P = 190 N/m]]
             nip ${NSC}/nip-center.yaml --radius 0.15 --set nip.friction.drum=0.1 --set nip.load=1000)

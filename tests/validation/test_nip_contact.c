@@ -312,31 +312,41 @@ static void nit_bound(void)
 
 /* Rigid cylinders and an extensible sheet (belt creep, Reynolds 1876): without body
  * deformation the sheet can stick on both faces with a constant tension (the tension
- * changes only in slip zones, and none is needed), so NIT -> 0 and the roll contact sticks
- * everywhere as both cylinders stiffen. A wound-on condition xi1 = 0 on the sheet's strain
- * from its unstressed state fails this: the sheet then runs c11 T0/(2h) faster than the
- * rigid roll and slips forward everywhere, NIT = mu P (the first version did). */
+ * changes only in slip zones, and none is needed; a surface or center-surface winder
+ * passes the drum's torque to the roll through the sheet as opposite shears, q1 = -q2),
+ * so NIT -> 0 as both cylinders stiffen, for every winder; with a center winder the roll
+ * contact also sticks everywhere. A wound-on condition xi1 = 0 on the sheet's strain from
+ * its unstressed state fails this: the sheet then runs c11 T0/(2h) faster than the rigid
+ * roll and slips forward everywhere, NIT = mu P (the first version did). The surface
+ * winders also need the load search to start wide enough: Hertz alone, without the
+ * sheet's compliance, is far too narrow to carry the drum's traction. */
 static void rigid_cylinders_no_nit(void)
 {
-  setup s = paper_roll();
-  s.mu_roll = 0.3;
+  const rs_winder_kind winders[3] = {RS_WINDER_CENTER, RS_WINDER_SURFACE, RS_WINDER_CENTER_SURFACE};
   const double Es[] = {1e9, 1e10, 1e11, 1e12};
-  double prev = INFINITY;
-  for (int i = 0; i < 4; ++i) {
-    s.E_iso = s.E_drum = Es[i];
-    rs_nip_solution r = {0};
-    CHECK(solve(&s, 3000, 350, &r));
-    double ratio = (r.T0 - r.Ti) / (s.mu_roll * r.load);
-    int su = 0;
-    for (int e = 0; e < r.M - 1; ++e) su += r.slip_upper[e];
-    printf("  E_cyl = %-8g NIT / (mu P) = %-24.17g roll slip elements %d\n", Es[i], ratio, su);
-    if (i <= 2) CHECK_LT(fabs(ratio), prev); /* then a floor of ~3e-5 (discretisation) */
-    prev = fabs(ratio);
-    if (i >= 2) {
-      CHECK_LT(fabs(ratio), 1e-3);
-      CHECK(su == 0);
+  for (int w = 0; w < 3; ++w) {
+    setup s = paper_roll();
+    s.mu_roll = 0.3;
+    s.winder = winders[w];
+    double prev = INFINITY;
+    for (int i = 0; i < 4; ++i) {
+      s.E_iso = s.E_drum = Es[i];
+      rs_nip_solution r = {0};
+      CHECK(solve(&s, 3000, 350, &r));
+      double ratio = (r.T0 - r.Ti) / (s.mu_roll * r.load);
+      int su = 0;
+      for (int e = 0; e < r.M - 1; ++e) su += r.slip_upper[e];
+      printf("  winder %d E_cyl = %-8g NIT / (mu P) = %-24.17g roll slip elements %d\n", w, Es[i],
+             ratio, su);
+      if (i <= 2) CHECK_LT(fabs(ratio), prev); /* then a floor of ~3e-5 (discretisation) */
+      prev = fabs(ratio);
+      if (i == 3) CHECK_LT(fabs(ratio), 1e-3);
+      if (i >= 2 && w == 0) {
+        CHECK_LT(fabs(ratio), 1e-3);
+        CHECK(su == 0);
+      }
+      rs_nip_solution_free(&r);
     }
-    rs_nip_solution_free(&r);
   }
 }
 
@@ -443,6 +453,74 @@ static void power_balance(void)
   }
   rs_cylinder_destroy(&cyl[0]);
   rs_cylinder_destroy(&cyl[1]);
+}
+
+static void print_state(const rs_nip_solution *r)
+{
+  print_pattern("upper", r->slip_upper, r->slip_rate_upper, r->M - 1);
+  print_pattern("lower", r->slip_lower, r->slip_rate_lower, r->M - 1);
+}
+
+/* A slippery free rider (mu_drum = 0.05) at a fixed half-width, cold: the active-set
+ * iteration from full stick does not settle (the rider's slip reverses more than once and
+ * each reversal needs a stuck element), so the LCP of the friction conditions (Lemke)
+ * supplies the set. Checked against the definition of a solution, not against the method:
+ * Coulomb's law element by element with the slip opposing the friction, the rider's zero
+ * torque int tau- = 0 and the sheet's equilibrium; and against another route, continuation
+ * in mu_drum from 0.35 down in steps of 0.01 on one warm handle, which reaches the same
+ * state (the same T0 and slip pattern). */
+static void rider_lcp(void)
+{
+  setup s = paper_roll();
+  s.mu_drum = 0.05;
+  const double a = 1.5e-3;
+  rs_nip_contact *nc = make(&s);
+  rs_nip_solution r = {0}, c = {0};
+  CHECK(rs_nip_contact_solve_width(nc, a, 350, &r) == RS_OK);
+  CHECK_LOG("Lemke pivots", r.lcp_pivots);
+  CHECK_LOG("T0 (N/m)", r.T0);
+  print_state(&r);
+  CHECK(r.lcp_pivots > 0); /* the fallback was needed */
+  int su, tu, sl, tl;
+  check_friction_law(&r, s.mu_roll, s.mu_drum, &su, &tu, &sl, &tl);
+  CHECK(tl > 0 && sl > 0);
+  double Iu = integral(r.shear_upper, r.M - 1, r.dx), Il = integral(r.shear_lower, r.M - 1, r.dx);
+  CHECK_ABS(Il, 0, 1e-12 * (r.Ti + r.load));
+  CHECK_ABS(Iu - Il + r.T0, r.Ti, 1e-12 * (r.Ti + r.load));
+  rs_nip_contact_destroy(&nc);
+  /* continuation in mu_drum on one warm handle */
+  s.mu_drum = 0.35;
+  nc = make(&s);
+  for (int i = 0; i <= 30; ++i) {
+    CHECK(rs_nip_contact_set_friction(nc, s.mu_roll, 0.35 - 0.01 * i) == RS_OK);
+    CHECK(rs_nip_contact_solve_width(nc, a, 350, &c) == RS_OK);
+  }
+  rs_nip_contact_destroy(&nc);
+  const int E = r.M - 1;
+  CHECK_LOG("T0 by continuation (N/m)", c.T0);
+  print_state(&c);
+  CHECK_CLOSE(c.T0, r.T0, 1e-9);
+  for (int e = 0; e < E; ++e) CHECK(c.slip_lower[e] == r.slip_lower[e] && c.slip_upper[e] == r.slip_upper[e]);
+  rs_nip_solution_free(&r);
+  rs_nip_solution_free(&c);
+}
+
+/* A half-width that cannot carry the drum's traction (surface winder, mu_drum P(a) < Ti):
+ * no stick/slip state exists there, and Lemke's method says so by ending on a secondary
+ * ray; the error names both attempts. (The load search widens past such widths.) */
+static void lcp_ray_when_infeasible(void)
+{
+  setup s = paper_roll();
+  s.winder = RS_WINDER_SURFACE;
+  rs_nip_contact *nc = make(&s);
+  rs_nip_solution r = {0};
+  rs_status st = rs_nip_contact_solve_width(nc, 2e-4, 350, &r);
+  printf("  message: %s\n", rs_error_message());
+  CHECK(st == RS_ERR_SOLVER);
+  CHECK(strstr(rs_error_message(), "Lemke") != NULL);
+  CHECK(strstr(rs_error_message(), "secondary ray") != NULL);
+  rs_nip_solution_free(&r);
+  rs_nip_contact_destroy(&nc);
 }
 
 /* The staggered discretisation: no node-to-node oscillation in the converged shear (the
@@ -615,6 +693,8 @@ static const check_case cases[] = {
     {"nit_bound", nit_bound},
     {"rigid_cylinders_no_nit", rigid_cylinders_no_nit},
     {"power_balance", power_balance},
+    {"rider_lcp", rider_lcp},
+    {"lcp_ray_when_infeasible", lcp_ray_when_infeasible},
     {"no_checkerboard", no_checkerboard},
     {"convergence_in_M", convergence_in_M},
     {"bad_input", bad_input},
