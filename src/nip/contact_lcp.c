@@ -33,6 +33,13 @@ static double pbar_of(int M, const double *y, int e)
   return 0.5 * s;
 }
 
+/* x -= f y over a padded row (n a multiple of 4: -O2 vectorises it) */
+static void row_update(int n, double *restrict x, double f, const double *restrict y)
+{
+  n &= ~3;
+  for (int j = 0; j < n; ++j) x[j] -= f * y[j];
+}
+
 rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *state_out, int *pivots)
 {
   const int M = nc->M, n = nc->n, E = M - 1, S = 2 * E, m = 2 * S;
@@ -54,7 +61,8 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
   st = rs_nipc_lin_refactor(nc, a);
   if (st) return rs_error_wrap("LCP: full-stick system at a = %g m", a);
   double *Z = calloc((size_t)n * S, sizeof *Z);
-  double *T = malloc((size_t)m * (2 * m + 2) * sizeof *T);
+  const int W = (m + S + 2 + 3) & ~3; /* tableau row length, padded (see row_update) */
+  double *T = malloc((size_t)m * W * sizeof *T);
   int *basis = malloc((size_t)m * sizeof *basis);
   double *zz = malloc((size_t)n * sizeof *zz);
   if (!Z || !T || !basis || !zz) {
@@ -81,8 +89,11 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
     for (int e = 0; e < E; ++e)
       qs = fmax(qs, fmax(mu[k] * fabs(pbar_of(M, zz, e)), fabs(zz[COL_Q(k, e)])));
   if (!(qs > 0)) qs = 1;
-  /* tableau rows i = 0..m-1: w_i - sum_j Mt_ij u_j - t = c_i; columns: w (m), u (m), t, rhs */
-  const int W = 2 * m + 2, CT = 2 * m, CR = 2 * m + 1;
+  /* Tableau rows i = 0..m-1: w_i - sum_j Mt_ij u_j - t = c_i. Variables: w_i (i < m),
+   * s+_j (m + j), s-_j (m + S + j), t (VT). Stored columns: w (m), s+ (S), t, rhs; the
+   * column of s-_j is minus that of s+_j in any basis (row operations keep the linear
+   * relation), so it is not stored. */
+  const int VT = 2 * m, CT = m + S, CR = m + S + 1;
 #define TT(i, j) T[(size_t)(i) * W + (j)]
   memset(T, 0, (size_t)m * W * sizeof *T);
   double us = 0; /* u scale: the slip that changes a margin by qs */
@@ -109,36 +120,37 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
       for (int j = 0; j < S; ++j) {
         const double *Zj = Z + (size_t)j * n;
         double pw = mu[k] * pbar_of(M, Zj, e), qw = Zj[COL_Q(k, e)];
-        double wp = (pw - qw) * us / qs, wm = (pw + qw) * us / qs; /* d w / d s_j, scaled */
-        /* w = c + Mt u: columns of s+_j (m + j) and s-_j (m + S + j), moved to the left */
-        TT(ip, m + j) = -wp;
-        TT(ip, m + S + j) = wp;
-        TT(im, m + j) = -wm;
-        TT(im, m + S + j) = wm;
+        /* d w / d s+_j, scaled, moved to the left of w = c + Mt u */
+        TT(ip, m + j) = -(pw - qw) * us / qs;
+        TT(im, m + j) = -(pw + qw) * us / qs;
       }
     }
   for (int i = 0; i < m; ++i) basis[i] = i;
+  /* stored column and sign of a variable */
+#define COLOF(v) ((v) == VT ? CT : (v) < m ? (v) : (v) < m + S ? (v) : (v) - S)
+#define SGNOF(v) ((v) >= m + S && (v) < VT ? -1.0 : 1.0)
   /* start: c >= 0 is the full-stick solution */
   int r = 0;
   for (int i = 1; i < m; ++i)
     if (TT(i, CR) < TT(r, CR)) r = i;
   int found = TT(r, CR) >= 0;
-  int enter = CT, cap = 20 * m;
+  int enter = VT, cap = 20 * m;
   while (!found) {
     /* pivot on (r, enter) */
-    double pv = TT(r, enter);
+    const int ce = COLOF(enter);
+    const double se = SGNOF(enter);
+    double pv = se * TT(r, ce);
     for (int j = 0; j < W; ++j) TT(r, j) /= pv;
     for (int i = 0; i < m; ++i) {
       if (i == r) continue;
-      double f = TT(i, enter);
+      double f = se * TT(i, ce);
       if (f == 0) continue;
-      double *Ti_ = T + (size_t)i * W, *Tr = T + (size_t)r * W;
-      for (int j = 0; j < W; ++j) Ti_[j] -= f * Tr[j];
+      row_update(W, T + (size_t)i * W, f, T + (size_t)r * W);
     }
     int leaving = basis[r];
     basis[r] = enter;
     if (++*pivots > cap) break;
-    if (leaving == CT) {
+    if (leaving == VT) {
       found = 1;
       break;
     }
@@ -146,25 +158,29 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
     enter = leaving < m ? leaving + m : leaving - m;
     /* ratio test: rows where the entering column is positive (rhs stays >= 0); ties: the
      * row of t first (ends), then the smallest index */
+    const int cn = COLOF(enter);
+    const double sn = SGNOF(enter);
     r = -1;
     double best = INFINITY;
     for (int i = 0; i < m; ++i) {
-      double col = TT(i, enter);
+      double col = sn * TT(i, cn);
       if (!(col > 1e-12)) continue;
       double ratio = fmax(TT(i, CR), 0.0) / col, tie = 1e-12 * fmax(1.0, best);
-      if (r < 0 || ratio < best - tie || (ratio <= best + tie && basis[i] == CT)) {
+      if (r < 0 || ratio < best - tie || (ratio <= best + tie && basis[i] == VT)) {
         best = ratio;
         r = i;
       }
     }
     if (r < 0) break; /* secondary ray */
   }
+#undef COLOF
+#undef SGNOF
 #undef TT
   if (found) {
     memset(state_out, 0, (size_t)S);
     for (int i = 0; i < m; ++i) {
       int v = basis[i];
-      if (v < m || v == CT) continue;
+      if (v < m || v == 2 * m) continue; /* w or t */
       double val = T[(size_t)i * W + CR];
       if (!(val > 0)) continue;
       int j = v - m; /* u index: s+ for j < S, s- otherwise */
