@@ -15,6 +15,7 @@ typedef struct rs_core {
   double bore;       /* m, tube: inner radius a */
   double modulus;    /* Pa, tube: E */
   double poisson;    /* tube: nu */
+  double rating;     /* Pa, external pressure the core is rated for (defect check); 0 = none */
 } rs_core;
 
 /* Effective core stiffness E_c (Pa) for the Hakiel core condition; INFINITY if rigid.

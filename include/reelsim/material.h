@@ -51,6 +51,8 @@ typedef struct rs_material {
   double nu_md_cd;   /* MD stress -> CD strain Poisson ratio (plane strain); the scene's
                         default is 0.3, a value given here is used as is (0 is 0) */
   double density;    /* kg/m^3; 0 = not given */
+  double pressure_limit; /* Pa: crushing/blocking pressure (defect check); 0 = not given */
+  double friction_layer; /* web-on-web friction coefficient (slip check); 0 = not given */
 } rs_material;
 
 #ifdef __cplusplus

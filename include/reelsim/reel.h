@@ -21,6 +21,16 @@ typedef struct rs_reel_result {
   double core_radius;        /* m */
   long increments, cvode_steps, rhs_evals;
   double wall_seconds;
+  /* Stress history, when the scene's output.history_every > 0 (else n_stages = 0 and
+   * the arrays are NULL). Stage s is the roll after stage_layers[s] layers: stored at
+   * the first increment boundary at or after each multiple of history_every, and the
+   * last stage is always the final state. The stage arrays are n_stages x n_layers,
+   * row-major, NaN for the layers not yet wound at that stage. */
+  int n_stages;
+  int *stage_layers;         /* layers wound at each stage, increasing */
+  double *stage_radius;      /* m, outer radius of the roll at each stage */
+  double *stage_sigma_r;     /* Pa, compression negative */
+  double *stage_sigma_theta; /* Pa, compression negative */
 } rs_reel_result;
 
 /* Optional observer: called after each increment with the layers wound so far.
@@ -51,6 +61,32 @@ typedef struct rs_reel_summary {
 } rs_reel_summary;
 
 void rs_reel_summarize(const rs_reel_result *res, rs_reel_summary *sum);
+
+/* 1 when every figure of the summary is a finite number; else 0 and *what names the first
+ * that is not ("peak pressure"): a figure a user reads must be a number. */
+int rs_reel_summary_finite(const rs_reel_summary *sum, const char **what);
+
+/* Several reels wound at once (reelsim compare). A job is one rs_reel_wind: the scene
+ * and options go in; the result (the caller's, as rs_reel_wind's *out), the status and a
+ * copy of the job's error record come out. */
+typedef struct rs_reel_job {
+  const rs_scene *scene;
+  rs_reel_options opts;      /* progress is called on the job's worker thread */
+  rs_reel_result *result;
+  rs_status status;
+  char message[2048];        /* rs_error_message() of the failed job, "" when it succeeded */
+  char where[256];           /* rs_error_where() likewise */
+  double wall_seconds;       /* wall-clock time of the job, s */
+} rs_reel_job;
+
+/* Winds jobs[0..n-1] on up to `threads` POSIX threads (<= 0: one per online processor;
+ * never more than n), the calling thread being one of them. Jobs are handed out in
+ * order; each runs exactly as rs_reel_wind would on its own (every rs_roll owns its CVODE
+ * context and the error record is per thread), so the results do not depend on the
+ * number of threads. A failed job does not stop the others. Returns RS_ERR_INTERNAL for
+ * bad arguments, otherwise RS_OK: look at each job's status. Reports in *used (may be
+ * NULL) how many threads ran. */
+rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
 
 #ifdef __cplusplus
 }

@@ -58,6 +58,16 @@ double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression po
 double rs_roll_surface_modulus(const rs_roll *roll);
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats);
 
+/* A saved state of the roll, to wind again from (the reel's adaptive nip policy rewinds
+ * when a predicted wound-on tension proves wrong). Owned by the caller; a state can be
+ * saved into again and again (its arrays grow as needed). */
+typedef struct rs_roll_state rs_roll_state;
+rs_status rs_roll_state_create(rs_roll_state **out);
+void rs_roll_state_destroy(rs_roll_state **state); /* accepts NULL and *state == NULL */
+rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *state);
+/* Restores a state saved from this roll (same parameters). */
+rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *state);
+
 #ifdef __cplusplus
 }
 #endif

@@ -75,6 +75,7 @@ typedef struct rs_scene {
   double web_length;                /* m (0 when final_radius was given) */
   int n_layers;                     /* round((final_radius - core radius) / caliper) */
   rs_recipe tension;                /* N/m */
+  double accel_torque;              /* N m/m, winding.accel_torque (slip check); 0 = not given */
   rs_nip_spec nip;
   rs_numerics numerics;
   rs_output_spec output;

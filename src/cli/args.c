@@ -30,8 +30,10 @@ int cli_fail_status(rs_status st)
 void cli_args_free(cli_args *a)
 {
   free(a->sets);
+  free(a->scenes);
   free(a->owned);
   a->sets = NULL;
+  a->scenes = NULL;
   a->owned = NULL;
 }
 
@@ -41,7 +43,9 @@ int cli_parse(int argc, char **argv, int first, cli_args *a)
   a->cmd = argv[first - 1];
   /* room for every argument as a --set, plus -o's output.file */
   a->sets = calloc((size_t)argc + 1, sizeof *a->sets);
-  if (!a->sets) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  a->scenes = calloc((size_t)argc + 1, sizeof *a->scenes);
+  if (!a->sets || !a->scenes) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  const int many = strcmp(a->cmd, "compare") == 0;
   for (int i = first; i < argc; ++i) {
     const char *arg = argv[i];
     if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
@@ -58,16 +62,26 @@ int cli_parse(int argc, char **argv, int first, cli_args *a)
       a->output = argv[++i];
     } else if (strncmp(arg, "--output=", 9) == 0) {
       a->output = arg + 9;
+    } else if (strcmp(arg, "--csv") == 0 || strncmp(arg, "--csv=", 6) == 0) {
+      if (strcmp(a->cmd, "run") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "%s: --csv only applies to run", a->cmd);
+      if (arg[5] == '=')
+        a->csv_dir = arg + 6;
+      else if (i + 1 < argc)
+        a->csv_dir = argv[++i];
+      if (!a->csv_dir || !a->csv_dir[0])
+        return cli_fail(CLI_EXIT_USAGE, "%s: --csv needs a directory", a->cmd);
     } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
       a->quiet = 1;
     } else if (arg[0] == '-' && arg[1] != '\0') {
       return cli_fail(CLI_EXIT_USAGE, "%s: unknown option '%s' (see reelsim %s --help)", a->cmd,
                       arg, a->cmd);
-    } else if (a->scene) {
+    } else if (a->scene && !many) {
       return cli_fail(CLI_EXIT_USAGE, "%s: one scene file at a time (got '%s' and '%s')", a->cmd,
                       a->scene, arg);
     } else {
-      a->scene = arg;
+      if (!a->scene) a->scene = arg;
+      a->scenes[a->n_scenes++] = arg;
     }
   }
   if (!a->scene)

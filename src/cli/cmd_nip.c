@@ -83,6 +83,7 @@ int cli_nip(int argc, char **argv, int first)
   if (!st) st = rs_nip_contact_solve_state(nc, &ns, &sol);
   if (st) {
     rs_error_wrap("%s", scene_path);
+    rs_nip_solution_free(&sol); /* a failed solve may have sized it already */
     rs_nip_contact_destroy(&nc);
     rs_scene_destroy(&scene);
     return cli_fail_status(st);

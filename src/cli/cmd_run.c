@@ -2,13 +2,18 @@
  *
  * Ctrl-C sets a flag that the engine's progress callback returns, so the run stops
  * after the current step; nothing is written and the exit status is 130. A second
- * Ctrl-C kills the program the usual way (SA_RESETHAND). */
+ * Ctrl-C kills the program the usual way (SA_RESETHAND).
+ *
+ * The same callback draws a progress bar on stderr once a run has taken a second, at
+ * most ten times a second, and only when stderr is a terminal and --quiet is off: logs
+ * and test output never see it. */
 
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "cli/cli.h"
 #include "reelsim/output.h"
@@ -23,18 +28,6 @@ static void on_sigint(int sig)
   interrupted = 1;
 }
 
-typedef struct progress {
-  int done, total;
-} progress;
-
-static int on_progress(void *user, int layers_done, int layers_total)
-{
-  progress *p = user;
-  p->done = layers_done;
-  p->total = layers_total;
-  return interrupted != 0;
-}
-
 static double now_seconds(void)
 {
   struct timespec ts;
@@ -42,13 +35,61 @@ static double now_seconds(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* Pa as kPa below 1 MPa, else MPa */
-static void fmt_stress(char *buf, size_t size, double pa)
+typedef struct progress {
+  int done, total;
+  int bar;               /* draw a bar: stderr is a terminal and not --quiet */
+  int drawn;             /* a bar is on the screen */
+  double t_start, t_last;
+} progress;
+
+static void progress_draw(progress *p, double now)
 {
-  if (fabs(pa) < 1e6)
-    snprintf(buf, size, "%.2f kPa", pa / 1e3);
-  else
-    snprintf(buf, size, "%.3f MPa", pa / 1e6);
+  enum { WIDTH = 30 };
+  char cells[WIDTH + 1];
+  double frac = p->total > 0 ? (double)p->done / p->total : 1.0;
+  int full = (int)(frac * WIDTH);
+  for (int i = 0; i < WIDTH; ++i) cells[i] = i < full ? '#' : '.';
+  cells[WIDTH] = '\0';
+  double elapsed = now - p->t_start;
+  double left = p->done > 0 ? elapsed * (p->total - p->done) / p->done : 0.0;
+  fprintf(stderr, "\rreelsim: [%s] %3d%%  layer %d of %d  %.0f s, about %.0f s left ", cells,
+          (int)(100.0 * frac), p->done, p->total, elapsed, left);
+  fflush(stderr);
+  p->drawn = 1;
+}
+
+/* Wipes the bar so messages and the summary start on a clean line. */
+static void progress_clear(progress *p)
+{
+  if (!p->drawn) return;
+  fputs("\r\033[K", stderr);
+  fflush(stderr);
+  p->drawn = 0;
+}
+
+static int on_progress(void *user, int layers_done, int layers_total)
+{
+  progress *p = user;
+  p->done = layers_done;
+  p->total = layers_total;
+  if (p->bar) {
+    double now = now_seconds();
+    if (now - p->t_start >= 1.0 && now - p->t_last >= 0.1) {
+      progress_draw(p, now);
+      p->t_last = now;
+    }
+  }
+  return interrupted != 0;
+}
+
+/* "cases/newsprint-rider.yaml" -> "newsprint-rider": the name of the CSV files */
+static void scene_stem(const char *path, char *out, size_t size)
+{
+  const char *base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  const char *dot = strrchr(base, '.');
+  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+  snprintf(out, size, "%.*s", (int)n, base);
 }
 
 /* A figure a user reads must be a number: anything else is a broken solution. */
@@ -76,7 +117,8 @@ static int summary_finite(const rs_reel_summary *s, const char **what)
 }
 
 static void print_summary(const rs_scene *scene, const rs_reel_result *res,
-                          const rs_reel_summary *s, double wall)
+                          const rs_reel_summary *s, const rs_defect_report *defects,
+                          const char *csv_dir, double wall)
 {
   char a[64], b[64];
   printf("%s\n", scene->title);
@@ -85,16 +127,23 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("result:\n");
   printf("  final radius       %.1f mm\n", s->final_radius * 1e3);
   printf("  layers             %d\n", s->layers);
-  fmt_stress(a, sizeof a, s->core_pressure);
+  cli_fmt_stress(a, sizeof a, s->core_pressure);
   printf("  core pressure      %s\n", a);
-  fmt_stress(a, sizeof a, s->peak_pressure);
+  cli_fmt_stress(a, sizeof a, s->peak_pressure);
   printf("  peak pressure      %s at r = %.1f mm\n", a, s->peak_pressure_radius * 1e3);
-  fmt_stress(b, sizeof b, s->min_hoop);
+  cli_fmt_stress(b, sizeof b, s->min_hoop);
   printf("  min hoop stress    %s at r = %.1f mm\n", b, s->min_hoop_radius * 1e3);
   printf("  wound-on tension   %.1f .. %.1f N/m\n", s->wot_min, s->wot_max);
   printf("  wall time          %.2f s (solver %.2f s, %ld increments, %ld CVODE steps)\n", wall,
          res->wall_seconds, res->increments, res->cvode_steps);
   printf("  output             %s\n", scene->output.file);
+  if (csv_dir) {
+    char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
+    scene_stem(scene->path, stem, sizeof stem);
+    if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
+      printf("  csv                %s\n", path);
+  }
+  cli_print_defects(stdout, defects);
 }
 
 int cli_run(const cli_args *a)
@@ -111,16 +160,22 @@ int cli_run(const cli_args *a)
 
   rs_scene *scene = NULL;
   rs_reel_result *res = NULL;
+  rs_defect_report *defects = NULL;
   int code = CLI_EXIT_OK;
-  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
+  /* a mistyped --csv directory must not cost a whole winding */
+  rs_status st = a->csv_dir ? rs_output_check_csv_dir(a->csv_dir) : RS_OK;
+  if (st == RS_OK) st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
 
-  progress prog = {0, scene->n_layers};
+  progress prog = {.total = scene->n_layers,
+                   .bar = !a->quiet && isatty(STDERR_FILENO),
+                   .t_start = t0};
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
   st = rs_reel_wind(scene, &opts, &res);
+  progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && interrupted)) {
     int k = res ? res->n_layers : prog.done;
     code = cli_fail(CLI_EXIT_INTERRUPTED, "interrupted at layer %d of %d (no output written)", k,
@@ -145,14 +200,23 @@ int cli_run(const cli_args *a)
     goto done;
   }
 
-  st = rs_output_write(scene->output.file, scene, res);
+  rs_defect_limits limits;
+  rs_defect_limits_from_scene(scene, &limits);
+  st = rs_defects_assess(res, &limits, &defects);
+  if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
+  if (st == RS_OK && a->csv_dir) {
+    char stem[RS_PATH_MAX];
+    scene_stem(scene->path, stem, sizeof stem);
+    st = rs_output_write_csv(a->csv_dir, stem, res);
+  }
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet) print_summary(scene, res, &sum, now_seconds() - t0);
+  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, now_seconds() - t0);
 
 done:
+  rs_defect_report_destroy(&defects);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
   sigaction(SIGINT, &old, NULL);

@@ -21,15 +21,20 @@ int main(int argc, char **argv)
     return cli_usage(stdout, NULL);
   }
   if (strcmp(cmd, "nip") == 0) return cli_nip(argc, argv, 2);
-  if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0) {
+  if (strcmp(cmd, "plot") == 0) return cli_plot(argc, argv);
+  if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0 && strcmp(cmd, "compare") != 0) {
     if (cmd[0] == '-')
       return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
-    return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (commands: run, check, nip, help)", cmd);
+    return cli_fail(CLI_EXIT_USAGE,
+                    "unknown command '%s' (commands: run, check, compare, plot, nip, help)", cmd);
   }
 
   cli_args a;
   int code = cli_parse(argc, argv, 2, &a);
-  if (code < 0) code = strcmp(cmd, "run") == 0 ? cli_run(&a) : cli_check(&a);
+  if (code < 0)
+    code = strcmp(cmd, "run") == 0       ? cli_run(&a)
+           : strcmp(cmd, "compare") == 0 ? cli_compare(&a)
+                                         : cli_check(&a);
   cli_args_free(&a);
   return code;
 }

@@ -13,6 +13,10 @@ static const char general[] =
     "                 and print a summary\n"
     "  check SCENE    load and check a scene; print its active effects and the\n"
     "                 resolved scene (defaults filled, overrides applied)\n"
+    "  compare SCENE1 SCENE2 ...\n"
+    "                 wind several scenes in parallel, print their key figures side\n"
+    "                 by side and write them all to one HDF5 file (compare.h5)\n"
+    "  plot FILE.h5   PNG plots of a run or compare file (needs gnuplot)\n"
     "  help [CMD]     this text, or one command's\n"
     "\n"
     "options:\n"
@@ -30,18 +34,20 @@ static const char set_help[] =
     "                      --set material=pet-film --set nip.friction.roll=0.25\n";
 
 static const char run_help[] =
-    "usage: reelsim run SCENE [-o FILE] [--set key.path=value ...] [--quiet]\n"
+    "usage: reelsim run SCENE [-o FILE] [--csv DIR] [--set key.path=value ...] [--quiet]\n"
     "\n"
     "Winds the reel SCENE describes layer by layer, writes the result to an HDF5 file\n"
     "(output.file of the scene, or FILE) and prints a summary: active effects, final\n"
     "radius, layers, core pressure, peak pressure, least hoop stress, wound-on tension\n"
-    "range, wall time.\n"
+    "range, wall time, and the defect-risk indicators (docs/defects.md).\n"
     "\n"
     "options:\n"
     "  -o, --output FILE\n"
     "                 write the result here (same as --set output.file=FILE)\n"
+    "  --csv DIR      also write DIR/<scene>-profile.csv and DIR/<scene>-wot.csv\n"
+    "                 (DIR must exist)\n"
     "%s"
-    "  -q, --quiet    print nothing but errors\n"
+    "  -q, --quiet    print nothing but errors (no summary, no progress bar)\n"
     "\n"
     "Ctrl-C stops the run after the current step: no file is written, exit status 130.\n"
     "exit status: 0 ok, 2 bad input, 3 the solver failed, 130 interrupted, 1 other\n";
@@ -58,6 +64,43 @@ static const char check_help[] =
     "\n"
     "exit status: 0 the scene is good, 2 bad input\n";
 
+static const char compare_help[] =
+    "usage: reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]\n"
+    "\n"
+    "Loads and checks every scene first (bad input in any: exit 2, nothing wound), winds\n"
+    "them in parallel (one thread per core), prints a table of their key figures (layers,\n"
+    "final radius, core pressure, peak pressure, least hoop stress, wound-on tension\n"
+    "range, wall time) and writes all of them to one HDF5 file: /runs/<n>-<scene>/ per\n"
+    "scene (the layout of a run file) and /summary (docs/output.md).\n"
+    "\n"
+    "options:\n"
+    "  -o, --output FILE\n"
+    "                 write the comparison here (default compare.h5)\n"
+    "%s"
+    "                 (applied to every scene)\n"
+    "  -q, --quiet    print nothing but errors\n"
+    "\n"
+    "If a run fails the others still finish and are reported, but no file is written.\n"
+    "exit status: 0 ok, 2 bad input in any scene, 3 a run's solver failed,\n"
+    "             130 interrupted, 1 other\n";
+
+static const char plot_help[] =
+    "usage: reelsim plot FILE.h5 [-o DIR] [--quiet]\n"
+    "\n"
+    "Draws PNG plots of a reelsim file with gnuplot into DIR (default: the current\n"
+    "directory), named <file name>-<plot>.png: interlayer pressure and hoop stress\n"
+    "against radius (with history stages and defect ranges when the file has them),\n"
+    "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
+    "file has /nip/profiles; for a compare file the runs overlaid, one plot each.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output DIR\n"
+    "                 write the PNG files here (must exist)\n"
+    "  -q, --quiet    print nothing but errors\n"
+    "\n"
+    "exit status: 0 ok, 2 FILE is not a reelsim file or DIR is missing,\n"
+    "             1 gnuplot missing or failed, other errors\n";
+
 int cli_usage(FILE *out, const char *cmd)
 {
   if (!cmd) {
@@ -72,9 +115,18 @@ int cli_usage(FILE *out, const char *cmd)
     fprintf(out, check_help, set_help);
     return CLI_EXIT_OK;
   }
+  if (strcmp(cmd, "compare") == 0) {
+    fprintf(out, compare_help, set_help);
+    return CLI_EXIT_OK;
+  }
+  if (strcmp(cmd, "plot") == 0) {
+    fputs(plot_help, out);
+    return CLI_EXIT_OK;
+  }
   if (strcmp(cmd, "help") == 0) {
     fputs(general, out);
     return CLI_EXIT_OK;
   }
-  return cli_fail(CLI_EXIT_USAGE, "help: unknown command '%s' (commands: run, check, help)", cmd);
+  return cli_fail(CLI_EXIT_USAGE,
+                  "help: unknown command '%s' (commands: run, check, compare, plot, help)", cmd);
 }

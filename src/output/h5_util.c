@@ -105,20 +105,29 @@ rs_status rs_h5_group_create(hid_t loc, const char *name, hid_t *out)
   return *out < 0 ? H5_FAIL(loc, name, "create group") : RS_OK;
 }
 
-/* Creates and fills one dataset of doubles and gives it units and description. */
-static rs_status write_doubles(hid_t loc, const char *name, hid_t space, hid_t dcpl,
-                               const double *data, const char *units, const char *description)
+/* Creates and fills one dataset (file type ftype, memory type mtype) and gives it units
+ * and description. */
+static rs_status write_typed(hid_t loc, const char *name, hid_t ftype, hid_t mtype, hid_t space,
+                             hid_t dcpl, const void *data, const char *units,
+                             const char *description)
 {
   rs_status st = RS_OK;
-  hid_t dset = H5Dcreate2(loc, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  hid_t dset = H5Dcreate2(loc, name, ftype, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
   if (dset < 0) return H5_FAIL(loc, name, "create dataset");
   if (H5Sget_simple_extent_npoints(space) > 0 &&
-      H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+      H5Dwrite(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     st = H5_FAIL(loc, name, "write dataset");
   if (st == RS_OK) st = rs_h5_attr_string(dset, "units", units);
   if (st == RS_OK) st = rs_h5_attr_string(dset, "description", description);
   if (H5Dclose(dset) < 0 && st == RS_OK) st = H5_FAIL(loc, name, "close dataset");
   return st;
+}
+
+static rs_status write_doubles(hid_t loc, const char *name, hid_t space, hid_t dcpl,
+                               const double *data, const char *units, const char *description)
+{
+  return write_typed(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space, dcpl, data, units,
+                     description);
 }
 
 rs_status rs_h5_write_scalar(hid_t loc, const char *name, double value, const char *units,
@@ -138,6 +147,18 @@ rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t
   hid_t space = H5Screate_simple(1, dims, NULL);
   if (space < 0) return H5_FAIL(loc, name, "make the dataspace for");
   rs_status st = write_doubles(loc, name, space, H5P_DEFAULT, data, units, description);
+  H5Sclose(space);
+  return st;
+}
+
+rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *data, size_t n,
+                               const char *units, const char *description)
+{
+  hsize_t dims[1] = {n};
+  hid_t space = H5Screate_simple(1, dims, NULL);
+  if (space < 0) return H5_FAIL(loc, name, "make the dataspace for");
+  rs_status st = write_typed(loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, space, H5P_DEFAULT, data,
+                             units, description);
   H5Sclose(space);
   return st;
 }
@@ -175,5 +196,21 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
   if (st == RS_OK) st = write_doubles(loc, name, space, dcpl, data, units, description);
   if (dcpl >= 0) H5Pclose(dcpl);
   if (space >= 0) H5Sclose(space);
+  return st;
+}
+
+rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const *strings,
+                                 size_t n, const char *description)
+{
+  hsize_t dims[1] = {n};
+  hid_t type = H5Tcopy(H5T_C_S1), space = -1;
+  rs_status st = RS_OK;
+  if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
+      (space = H5Screate_simple(1, dims, NULL)) < 0)
+    st = H5_FAIL(loc, name, "make the string type or dataspace for");
+  if (st == RS_OK)
+    st = write_typed(loc, name, type, type, space, H5P_DEFAULT, strings, "", description);
+  if (space >= 0) H5Sclose(space);
+  if (type >= 0) H5Tclose(type);
   return st;
 }

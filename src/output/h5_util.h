@@ -45,6 +45,10 @@ rs_status rs_h5_write_scalar(hid_t loc, const char *name, double value, const ch
 rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t n,
                          const char *units, const char *description);
 
+/* The same for 64-bit integers (counts); `units` may be "". */
+rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *data, size_t n,
+                               const char *units, const char *description);
+
 /* A rows x cols row-major array as a chunked, shuffled, deflate-compressed dataset
  * (fill value NaN, both dimensions extendable, so a history can grow stage by stage).
  * `data` may hold NaN (e.g. layers not yet wound); rows or cols may be 0. */
@@ -54,5 +58,9 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
 /* The chunk shape rs_h5_write_2d_chunked picks: whole rows up to 4096 columns and
  * about 256 KiB per chunk, so reading one stage or one layer touches few chunks. */
 void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2]);
+
+/* A 1-D dataset of variable-length UTF-8 strings (h5py reads str), `units` "". */
+rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const *strings,
+                                 size_t n, const char *description);
 
 #endif

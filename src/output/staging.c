@@ -132,11 +132,11 @@ static void sync_dir_of(const char *path)
   free(dir);
 }
 
-rs_status rs_staging_write(const char *path, const void *data, size_t size)
+rs_status rs_staging_prepare(const char *path, const void *data, size_t size, char **tmp)
 {
-  char *tmp, why[256];
+  char why[256];
   int fd;
-  rs_status st = create_temp(path, &tmp, &fd);
+  rs_status st = create_temp(path, tmp, &fd);
   if (st != RS_OK) return st;
   /* fsync before rename: otherwise a crash soon after can leave the new name on a file
    * whose data never reached the disk. close() can report a late error (NFS). */
@@ -151,18 +151,44 @@ rs_status rs_staging_write(const char *path, const void *data, size_t size)
     failed = "close";
     err = errno;
   }
-  if (!failed && rename(tmp, path) != 0) {
-    failed = "rename the temporary onto";
-    err = errno;
-  }
   if (failed) {
     errno_text(err, why, sizeof why);
     st = RS_ERROR(RS_ERR_IO, "cannot %s output file '%s' (temporary '%s'): %s", failed, path,
-                  tmp, why);
-    unlink(tmp);
-  } else {
-    sync_dir_of(path);
+                  *tmp, why);
+    rs_staging_abort(tmp);
   }
-  free(tmp);
+  return st;
+}
+
+rs_status rs_staging_commit(const char *path, char **tmp)
+{
+  char why[256];
+  rs_status st = RS_OK;
+  if (rename(*tmp, path) != 0) {
+    errno_text(errno, why, sizeof why);
+    st = RS_ERROR(RS_ERR_IO, "cannot rename the temporary onto output file '%s' (temporary '%s'): %s",
+                  path, *tmp, why);
+    rs_staging_abort(tmp);
+    return st;
+  }
+  sync_dir_of(path);
+  free(*tmp);
+  *tmp = NULL;
+  return st;
+}
+
+void rs_staging_abort(char **tmp)
+{
+  if (!tmp || !*tmp) return;
+  unlink(*tmp);
+  free(*tmp);
+  *tmp = NULL;
+}
+
+rs_status rs_staging_write(const char *path, const void *data, size_t size)
+{
+  char *tmp = NULL;
+  rs_status st = rs_staging_prepare(path, data, size, &tmp);
+  if (st == RS_OK) st = rs_staging_commit(path, &tmp);
   return st;
 }

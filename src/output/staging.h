@@ -19,4 +19,12 @@ rs_status rs_staging_check_target(const char *path);
  * the error (RS_ERR_IO) names the path and gives the system's reason. */
 rs_status rs_staging_write(const char *path, const void *data, size_t size);
 
+/* The same in two steps, for several files that should appear together: prepare writes
+ * the bytes to a flushed temporary beside `path` (*tmp, malloc'd); commit renames it onto
+ * `path` and frees *tmp; abort removes the temporary and frees *tmp (NULL is fine).
+ * Preparing every file before committing any keeps a failure from leaving a mix. */
+rs_status rs_staging_prepare(const char *path, const void *data, size_t size, char **tmp);
+rs_status rs_staging_commit(const char *path, char **tmp);
+void rs_staging_abort(char **tmp);
+
 #endif

@@ -27,6 +27,10 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->nip_load);
   free(res->sigma_r);
   free(res->sigma_theta);
+  free(res->stage_layers);
+  free(res->stage_radius);
+  free(res->stage_sigma_r);
+  free(res->stage_sigma_theta);
   free(res);
   *resp = NULL;
 }
@@ -63,6 +67,87 @@ static void reel_params(const rs_scene *sc, rs_roll_params *p)
   p->max_steps = sc->numerics.max_steps;
 }
 
+/* ---- stress history -------------------------------------------------------------------
+ * A stage is stored at the first increment boundary at or after each multiple of
+ * `every` layers, and the final state always closes the history. The stage arrays are
+ * sized for the whole reel up front (rows of N values), so a stage costs one copy. */
+
+/* Stress history allowed in memory: beyond this a user almost surely mistyped the
+ * interval, and the HDF5 file (built in memory too) would need as much again. */
+static const double history_max_bytes = 2147483648.0; /* 2 GiB */
+
+/* How many stages a full run of N layers stores, per_step layers per increment. */
+static long history_stages(int N, int per_step, int every)
+{
+  long count = 0, next = every, last = 0;
+  for (long done = 0; done < N;) {
+    done += N - done < per_step ? N - done : per_step;
+    if (done >= next) {
+      ++count;
+      last = done;
+      next = (done / every + 1) * (long)every;
+    }
+  }
+  return count + (last != N);
+}
+
+static rs_status history_alloc(rs_reel_result *res, int N, int per_step, int every, long *cap)
+{
+  long S = history_stages(N, per_step, every);
+  double bytes = (double)S * N * 2.0 * sizeof(double);
+  *cap = 0;
+  if (bytes > history_max_bytes) {
+    /* at most N/e + 1 stages: the least interval whose bound fits */
+    long max_stages = (long)(history_max_bytes / (2.0 * sizeof(double) * N));
+    long least = max_stages > 1 ? N / (max_stages - 1) + 1 : N;
+    return RS_ERROR(RS_ERR_INPUT,
+                    "output.history_every = %d would store %ld stages of %d layers, %.2f GiB of "
+                    "stress history (at most 2 GiB); use output.history_every >= %ld",
+                    every, S, N, bytes / 1073741824.0, least);
+  }
+  size_t cells = (size_t)S * (size_t)N;
+  res->stage_layers = malloc((size_t)S * sizeof(int));
+  res->stage_radius = malloc((size_t)S * sizeof(double));
+  res->stage_sigma_r = malloc(cells * sizeof(double));
+  res->stage_sigma_theta = malloc(cells * sizeof(double));
+  if (!res->stage_layers || !res->stage_radius || !res->stage_sigma_r || !res->stage_sigma_theta)
+    return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the stress history (%ld stages of %d layers)",
+                    S, N);
+  *cap = S;
+  return RS_OK;
+}
+
+/* Appends the roll's present state as a stage of rows `stride` values long. */
+static void history_store(rs_reel_result *res, const rs_roll *roll, int stride)
+{
+  int n = rs_roll_layers(roll), s = res->n_stages++;
+  double *sr = res->stage_sigma_r + (size_t)s * stride;
+  double *st = res->stage_sigma_theta + (size_t)s * stride;
+  memcpy(sr, rs_roll_sigma_r(roll), (size_t)n * sizeof(double));
+  memcpy(st, rs_roll_sigma_theta(roll), (size_t)n * sizeof(double));
+  for (int j = n; j < stride; ++j) sr[j] = st[j] = NAN;
+  res->stage_layers[s] = n;
+  res->stage_radius[s] = rs_roll_outer_radius(roll);
+}
+
+/* Closes the history with the final state and, when the run stopped early, packs the
+ * rows to the n layers actually wound. */
+static void history_finish(rs_reel_result *res, const rs_roll *roll, int N, long cap)
+{
+  int n = rs_roll_layers(roll);
+  if (cap == 0) return;
+  if (n > 0 && res->n_stages < cap &&
+      (res->n_stages == 0 || res->stage_layers[res->n_stages - 1] != n))
+    history_store(res, roll, N);
+  if (n < N)
+    for (int s = 0; s < res->n_stages; ++s) {
+      memmove(res->stage_sigma_r + (size_t)s * n, res->stage_sigma_r + (size_t)s * N,
+              (size_t)n * sizeof(double));
+      memmove(res->stage_sigma_theta + (size_t)s * n, res->stage_sigma_theta + (size_t)s * N,
+              (size_t)n * sizeof(double));
+    }
+}
+
 /* Copies the roll's state into the result (the layers finished so far). */
 static void reel_collect(const rs_roll *roll, rs_reel_result *res, double t_start)
 {
@@ -87,6 +172,9 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the scene winds no layers");
   if (per_step < 1)
     return RS_ERROR(RS_ERR_INPUT, "numerics.layers_per_step must be >= 1 (got %d)", per_step);
+  const int every = sc->output.history_every;
+  if (every < 0)
+    return RS_ERROR(RS_ERR_INPUT, "output.history_every must be >= 0 (got %d)", every);
 
   rs_roll_params params;
   reel_params(sc, &params);
@@ -95,11 +183,13 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   rs_roll *roll = NULL;
   rs_nip *nip = NULL;
   rs_status st = RS_OK;
+  long hist_cap = 0, next_stage = every;
   if (!res || !block) {
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
     goto done;
   }
   res->core_radius = sc->core.radius;
+  if (every > 0 && (st = history_alloc(res, N, per_step, every, &hist_cap))) goto done;
   if ((st = rs_roll_create(&params, &roll))) goto done;
   if ((st = rs_nip_create(&sc->nip, &sc->material, &nip))) goto done;
 
@@ -144,6 +234,10 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
       goto done;
     }
     first += m;
+    if (hist_cap > 0 && first >= next_stage) {
+      history_store(res, roll, N);
+      next_stage = (first / every + 1) * (long)every;
+    }
     if (opts && opts->progress && opts->progress(opts->user, first, N)) {
       st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted after layer %d of %d", first, N);
       goto done;
@@ -151,7 +245,10 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   }
 
 done:
-  if (res && roll) reel_collect(roll, res, t_start);
+  if (res && roll) {
+    reel_collect(roll, res, t_start);
+    history_finish(res, roll, N, hist_cap);
+  }
   else if (res) res->n_layers = 0;
   if (st == RS_OK) {
     for (int j = 0; j < res->n_layers; ++j)

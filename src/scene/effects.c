@@ -94,6 +94,22 @@ static const char *winder_name(rs_winder_kind w)
   return "?";
 }
 
+/* The defect checks that have their optional limits (docs/defects.md); hoop compression
+ * needs none and is always assessed. */
+static void print_defect_checks(FILE *out, const rs_scene *s)
+{
+  num_t a, b;
+  if (s->material.pressure_limit > 0.0)
+    fprintf(out, "  - pressure check: material.pressure_limit %s Pa (crushing/blocking)\n",
+            f(a, s->material.pressure_limit));
+  if (s->accel_torque > 0.0)
+    fprintf(out,
+            "  - interlayer slip check: winding.accel_torque %s N m/m, web-on-web friction %s\n",
+            f(a, s->accel_torque), f(b, s->material.friction_layer));
+  if (s->core.rating > 0.0)
+    fprintf(out, "  - core check: core.rating %s Pa\n", f(a, s->core.rating));
+}
+
 void rs_scene_print_effects(const rs_scene *s, FILE *out)
 {
   num_t a, b, c;
@@ -127,4 +143,5 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
           s->numerics.layers_per_step == 1 ? "" : "s", f(a, s->numerics.rtol));
   if (s->numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->numerics.atol));
   fprintf(out, "\n");
+  print_defect_checks(out, s);
 }

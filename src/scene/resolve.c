@@ -17,6 +17,12 @@ static rs_status resolve_core(const yn *root, const ys_core *y, rs_core *c)
   memset(c, 0, sizeof *c);
   if (!(y->radius > 0.0)) return ys_fail(root, "core.radius", "must be > 0 m (got %g)", y->radius);
   c->radius = y->radius;
+  if (ys_has(root, "core.rating")) {
+    if (!(y->rating > 0.0))
+      return ys_fail(root, "core.rating", "must be > 0 Pa (got %g; omit the key to skip the check)",
+                     y->rating);
+    c->rating = y->rating;
+  }
   if (elastic && tube)
     return ys_fail(root, "core.stiffness",
                    "give either stiffness (an elastic core) or bore, modulus and poisson "
@@ -84,6 +90,17 @@ static rs_status resolve_winding(const yn *root, const ys_winding *y, rs_scene *
     return ys_fail(root, key, "the roll would have %.0f layers (at most %d)", layers,
                    RS_MAX_LAYERS);
   s->n_layers = (int)layers;
+  s->accel_torque = 0.0;
+  if (ys_has(root, "winding.accel_torque")) {
+    if (!(y->accel_torque > 0.0))
+      return ys_fail(root, "winding.accel_torque",
+                     "must be > 0 N m/m (got %g; omit the key to skip the check)", y->accel_torque);
+    if (!(s->material.friction_layer > 0.0))
+      return ys_fail(root, "winding.accel_torque",
+                     "the interlayer slip check needs material.friction_layer (the web-on-web "
+                     "friction coefficient)");
+    s->accel_torque = y->accel_torque;
+  }
   return RS_OK;
 }
 

@@ -112,6 +112,14 @@ rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material 
     return ys_fail(root, "material.G_rtheta", "must be > 0 Pa (got %g)", y->G_rtheta);
   if (ys_has(root, "material.density") && !(y->density > 0.0))
     return ys_fail(root, "material.density", "must be > 0 kg/m^3 (got %g)", y->density);
+  if (ys_has(root, "material.pressure_limit") && !(y->pressure_limit > 0.0))
+    return ys_fail(root, "material.pressure_limit",
+                   "must be > 0 Pa (got %g; omit the key to skip the check)", y->pressure_limit);
+  if (ys_has(root, "material.friction_layer") && !(y->friction_layer > 0.0))
+    return ys_fail(root, "material.friction_layer",
+                   "must be > 0 (got %g; omit the key to skip the check)", y->friction_layer);
+  m->pressure_limit = y->pressure_limit;
+  m->friction_layer = y->friction_layer;
   /* the sheet in the contact nip (docs/nip.md): 0 = derived (E_z: the roll's nip E_r,
    * E_cd: E_theta); nu_md_cd defaults to 0.3, a typical in-plane Poisson ratio of paper */
   if (ys_has(root, "material.E_z") && !(y->E_z > 0.0))

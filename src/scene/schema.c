@@ -65,6 +65,8 @@ static const cyaml_schema_field_t material_fields[] = {
     CYAML_FIELD_FLOAT("nu_rtheta", OPT, ys_material, nu_rtheta),
     CYAML_FIELD_FLOAT("G_rtheta", OPT, ys_material, G_rtheta),
     CYAML_FIELD_FLOAT("density", OPT, ys_material, density),
+    CYAML_FIELD_FLOAT("pressure_limit", OPT, ys_material, pressure_limit),
+    CYAML_FIELD_FLOAT("friction_layer", OPT, ys_material, friction_layer),
     CYAML_FIELD_FLOAT("E_z", OPT, ys_material, E_z),
     CYAML_FIELD_FLOAT("E_cd", OPT, ys_material, E_cd),
     CYAML_FIELD_FLOAT("nu_md_cd", OPT, ys_material, nu_md_cd),
@@ -81,12 +83,14 @@ static const cyaml_schema_field_t core_fields[] = {
     CYAML_FIELD_FLOAT("bore", OPT, ys_core, bore),
     CYAML_FIELD_FLOAT("modulus", OPT, ys_core, modulus),
     CYAML_FIELD_FLOAT("poisson", OPT, ys_core, poisson),
+    CYAML_FIELD_FLOAT("rating", OPT, ys_core, rating),
     CYAML_FIELD_END};
 
 static const cyaml_schema_field_t winding_fields[] = {
     CYAML_FIELD_FLOAT("final_radius", OPT, ys_winding, final_radius),
     CYAML_FIELD_FLOAT("web_length", OPT, ys_winding, web_length),
     CYAML_FIELD_MAPPING("tension", REQ, ys_winding, tension, recipe_fields),
+    CYAML_FIELD_FLOAT("accel_torque", OPT, ys_winding, accel_torque),
     CYAML_FIELD_END};
 
 /* ---- nip ------------------------------------------------------------------------------ */

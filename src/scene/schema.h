@@ -36,17 +36,20 @@ typedef struct ys_radial {
 typedef struct ys_material {
   char *name, *source, *notes;
   double caliper, E_theta, nu_rtheta, G_rtheta, density;
+  double pressure_limit, friction_layer; /* defect checks */
   double E_z, E_cd, nu_md_cd; /* the sheet in the contact nip (docs/nip.md) */
   ys_radial radial;
 } ys_material;
 
 typedef struct ys_core {
   double radius, stiffness, bore, modulus, poisson;
+  double rating; /* defect check */
 } ys_core;
 
 typedef struct ys_winding {
   double final_radius, web_length;
   ys_recipe tension;
+  double accel_torque; /* slip check */
 } ys_winding;
 
 typedef struct ys_friction {

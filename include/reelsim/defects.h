@@ -1,0 +1,85 @@
+/* Defect-risk indicators of a wound reel: simple, documented rules applied to the final
+ * stress profile (docs/defects.md gives each rule, its formula, units and rationale).
+ * They flag where a roll is prone to a defect; they do not model the defect itself.
+ * Pure computation on a result: no I/O. */
+#ifndef REELSIM_DEFECTS_H
+#define REELSIM_DEFECTS_H
+
+#include "reelsim/reel.h"
+#include "reelsim/scene.h"
+#include "reelsim/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum rs_defect_verdict {
+  RS_DEFECT_NOT_ASSESSED, /* the rule lacks an input it needs (a limit not given, no layers) */
+  RS_DEFECT_OK,
+  RS_DEFECT_RISK
+} rs_defect_verdict;
+
+/* "not assessed", "ok", "risk" */
+const char *rs_defect_verdict_name(rs_defect_verdict v);
+
+/* The optional limits the rules compare against; 0 means "not given". */
+typedef struct rs_defect_limits {
+  double pressure_limit; /* Pa, material: pressure the web stands without crushing/blocking */
+  double core_rating;    /* Pa, core: external pressure the core is rated for */
+  double accel_torque;   /* N m/m, torque on the roll during speed changes, per unit width */
+  double friction_layer; /* web-on-web friction coefficient */
+} rs_defect_limits;
+
+/* The scene's optional keys: material.pressure_limit, core.rating, winding.accel_torque,
+ * material.friction_layer. */
+void rs_defect_limits_from_scene(const rs_scene *scene, rs_defect_limits *lim);
+
+/* Consecutive layers first..last (0-based, inclusive) flagged by a rule, and the outer
+ * radii of those two layers (m). */
+typedef struct rs_defect_range {
+  int first, last;
+  double r_first, r_last;
+} rs_defect_range;
+
+typedef struct rs_defect_report {
+  struct {                   /* hoop compression: sigma_theta < 0 */
+    rs_defect_verdict verdict;
+    int layers;              /* layers in hoop compression */
+    int n_ranges;
+    rs_defect_range *ranges; /* where, innermost first */
+    double min, min_radius;  /* Pa, least sigma_theta; m, its layer's outer radius */
+  } hoop;
+  struct {                   /* greatest pressure on the web against material.pressure_limit */
+    rs_defect_verdict verdict;
+    double max, max_radius;  /* Pa (compression positive), m */
+    double limit, ratio;     /* Pa, max / limit (0 when not assessed) */
+  } pressure;
+  struct {                   /* interlayer slip: friction torque capacity < applied torque */
+    rs_defect_verdict verdict;
+    double torque, mu;       /* N m/m, web-on-web friction */
+    int layers;              /* interfaces at risk */
+    int n_ranges;
+    rs_defect_range *ranges; /* layers whose outer interface is at risk */
+    double margin_min;       /* least capacity / torque over the interfaces */
+    double margin_radius;    /* m, where */
+  } slip;
+  struct {                   /* core pressure against core.rating */
+    rs_defect_verdict verdict;
+    double pressure, rating, ratio; /* Pa, Pa, pressure / rating (0 when not assessed) */
+  } core;
+} rs_defect_report;
+
+/* Applies every rule to the result's final state. The caller owns *out
+ * (rs_defect_report_destroy). */
+rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *lim,
+                            rs_defect_report **out);
+void rs_defect_report_destroy(rs_defect_report **rep);
+
+/* Friction torque (N m/m) an interface at radius r (m) under pressure P (Pa) transmits
+ * before the layers slip:  M_f = mu P (2 pi r) r  (no capacity when P <= 0). */
+double rs_defect_slip_capacity(double mu, double P, double r);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

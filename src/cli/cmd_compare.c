@@ -1,0 +1,226 @@
+/* reelsim compare: wind several scenes side by side, print their key figures in one
+ * table, write them all to one HDF5 file (docs/cli.md).
+ *
+ * Every scene is loaded and checked before any winding starts, so bad input in any of
+ * them costs nothing (exit 2). The reels are wound in parallel (rs_reel_wind_many, one
+ * thread per core, at most one per scene); the HDF5 file is built afterwards on this
+ * thread. A run that fails does not stop the others: they are all reported, but the
+ * file is written only when every run succeeded (exit 3 otherwise), because a
+ * comparison that silently lacks a recipe reads as if it were complete. */
+
+#include <math.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli/cli.h"
+#include "reelsim/output.h"
+#include "reelsim/reel.h"
+#include "reelsim/scene.h"
+
+static const char default_output[] = "compare.h5";
+
+/* Lock-free, so the handler may set it and every worker thread may read it. */
+static atomic_int interrupted;
+
+static void on_sigint(int sig)
+{
+  (void)sig;
+  atomic_store(&interrupted, 1);
+}
+
+static int on_progress(void *user, int layers_done, int layers_total)
+{
+  (void)user;
+  (void)layers_done;
+  (void)layers_total;
+  return atomic_load(&interrupted) != 0;
+}
+
+static double now_seconds(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+typedef struct compare_state {
+  int n;
+  rs_scene **scenes;
+  rs_reel_job *jobs;
+  rs_reel_summary *sums;
+  char (*names)[256];
+  const char *output;
+} compare_state;
+
+/* Loads every scene; prints the error of each bad one. Returns the exit status of the
+ * worst failure (2 for bad input), or CLI_EXIT_OK. */
+static int load_all(compare_state *c, const cli_args *a, int n_sets, const char **sets)
+{
+  int code = CLI_EXIT_OK;
+  for (int i = 0; i < c->n; ++i) {
+    rs_status st = rs_scene_load(a->scenes[i], n_sets, sets, &c->scenes[i]);
+    if (st == RS_OK) continue;
+    int k = cli_fail_status(st);
+    /* bad input decides the status; an I/O or memory failure only if there is none */
+    if (code != CLI_EXIT_USAGE && (k == CLI_EXIT_USAGE || code == CLI_EXIT_OK)) code = k;
+  }
+  return code;
+}
+
+static void print_table(const compare_state *c, double wall, int threads)
+{
+  printf("compare: %d scene%s on %d thread%s\n", c->n, c->n == 1 ? "" : "s", threads,
+         threads == 1 ? "" : "s");
+  for (int i = 0; i < c->n; ++i) printf("  %-24s %s\n", c->names[i], c->scenes[i]->title);
+  printf("\n%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "run", "layers", "final r",
+         "core P", "peak P", "at r", "min hoop", "at r", "wound-on T0", "wall");
+  printf("%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "", "", "mm", "kPa", "kPa", "mm",
+         "kPa", "mm", "N/m", "s");
+  for (int i = 0; i < c->n; ++i) {
+    const rs_reel_job *job = &c->jobs[i];
+    if (job->status != RS_OK) {
+      printf("%-24s FAILED (%s)\n", c->names[i], rs_status_name(job->status));
+      continue;
+    }
+    const rs_reel_summary *s = &c->sums[i];
+    char wot[64];
+    snprintf(wot, sizeof wot, "%.1f .. %.1f", s->wot_min, s->wot_max);
+    printf("%-24s %7d %8.1f %10.2f %10.2f %7.1f %10.2f %7.1f %17s %8.2f\n", c->names[i],
+           s->layers, s->final_radius * 1e3, s->core_pressure / 1e3, s->peak_pressure / 1e3,
+           s->peak_pressure_radius * 1e3, s->min_hoop / 1e3, s->min_hoop_radius * 1e3, wot,
+           job->wall_seconds);
+  }
+  printf("\nwall time %.2f s in all\n", wall);
+}
+
+/* Reports each failed run; returns the exit status (3 for a solver failure). */
+static int check_jobs(compare_state *c)
+{
+  int code = CLI_EXIT_OK;
+  for (int i = 0; i < c->n; ++i) {
+    rs_reel_job *job = &c->jobs[i];
+    const char *what = NULL;
+    if (job->status == RS_OK) {
+      rs_reel_summarize(job->result, &c->sums[i]);
+      if (rs_reel_summary_finite(&c->sums[i], &what)) continue;
+      job->status = RS_ERR_SOLVER;
+      snprintf(job->message, sizeof job->message, "the %s is not a finite number", what);
+      job->where[0] = '\0';
+    }
+    int k = rs_status_exit_code(job->status);
+    if (job->status == RS_ERR_INPUT)
+      cli_fail(k, "%s: %s", c->scenes[i]->path, job->message);
+    else if (job->status == RS_ERR_SOLVER)
+      cli_fail(k, "%s: solver failure: %s", c->scenes[i]->path, job->message);
+    else
+      cli_fail(k, "%s: %s: %s", c->scenes[i]->path, rs_status_name(job->status), job->message);
+    if (job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
+    if (job->result && job->status == RS_ERR_SOLVER)
+      fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
+              c->scenes[i]->n_layers);
+    if (code == CLI_EXIT_OK || k == CLI_EXIT_USAGE) code = k;
+  }
+  return code;
+}
+
+static void free_state(compare_state *c)
+{
+  for (int i = 0; c->jobs && i < c->n; ++i) rs_reel_result_destroy(&c->jobs[i].result);
+  for (int i = 0; c->scenes && i < c->n; ++i) rs_scene_destroy(&c->scenes[i]);
+  free(c->scenes);
+  free(c->jobs);
+  free(c->sums);
+  free(c->names);
+}
+
+int cli_compare(const cli_args *a)
+{
+  double t0 = now_seconds();
+  compare_state c = {.n = a->n_scenes, .output = a->output ? a->output : default_output};
+  c.scenes = calloc((size_t)c.n, sizeof *c.scenes);
+  c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
+  c.sums = calloc((size_t)c.n, sizeof *c.sums);
+  c.names = calloc((size_t)c.n, sizeof *c.names);
+  /* every stored scene names the file it went to, as with run -o */
+  const char **sets = calloc((size_t)a->n_sets + 1, sizeof *sets);
+  char *out_set = NULL;
+  int n_sets = a->n_sets, code = CLI_EXIT_OK, threads = 0;
+  struct sigaction sa, old;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_sigint;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &sa, &old);
+  /* a shell starts background jobs with SIGINT ignored: keep it that way for them */
+  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
+  atomic_store(&interrupted, 0);
+
+  if (!c.scenes || !c.jobs || !c.sums || !c.names || !sets) {
+    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+    goto done;
+  }
+  if (a->n_sets) memcpy(sets, a->sets, (size_t)a->n_sets * sizeof *sets);
+  if (!a->output) {
+    size_t len = sizeof "output.file=" + strlen(c.output);
+    if (!(out_set = malloc(len))) {
+      code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+      goto done;
+    }
+    snprintf(out_set, len, "output.file=%s", c.output);
+    sets[n_sets++] = out_set;
+  }
+
+  if ((code = load_all(&c, a, n_sets, sets)) != CLI_EXIT_OK) {
+    if (code == CLI_EXIT_USAGE) fprintf(stderr, "reelsim: compare: nothing was wound\n");
+    goto done;
+  }
+  /* a missing output directory should not cost the whole comparison */
+  rs_status st = rs_output_check_target(c.output);
+  if (st != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+
+  for (int i = 0; i < c.n; ++i) {
+    c.jobs[i].scene = c.scenes[i];
+    c.jobs[i].opts.progress = on_progress;
+    rs_output_run_name(i, c.n, c.scenes[i]->path, c.names[i], sizeof c.names[i]);
+  }
+  if ((st = rs_reel_wind_many(c.n, c.jobs, 0, &threads)) != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+  if (atomic_load(&interrupted)) {
+    code = cli_fail(CLI_EXIT_INTERRUPTED, "compare: interrupted (no output written)");
+    goto done;
+  }
+
+  code = check_jobs(&c);
+  if (!a->quiet) print_table(&c, now_seconds() - t0, threads);
+  if (code != CLI_EXIT_OK) {
+    fprintf(stderr, "reelsim: compare: a run failed; no output written\n");
+    goto done;
+  }
+
+  rs_output_run *runs = calloc((size_t)c.n, sizeof *runs);
+  if (!runs) {
+    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+    goto done;
+  }
+  for (int i = 0; i < c.n; ++i) runs[i] = (rs_output_run){c.scenes[i], c.jobs[i].result};
+  st = rs_output_write_compare(c.output, c.n, runs);
+  free(runs);
+  if (st != RS_OK) code = cli_fail_status(st);
+  else if (!a->quiet) printf("output %s\n", c.output);
+
+done:
+  free_state(&c);
+  free(sets);
+  free(out_set);
+  sigaction(SIGINT, &old, NULL);
+  return code;
+}

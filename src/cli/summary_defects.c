@@ -1,0 +1,136 @@
+/* The "defect risk" part of the run summary: one line per rule, a WARNING line where a
+ * rule flags risk (rules in docs/defects.md). */
+#include <math.h>
+#include <stdio.h>
+
+#include "cli/cli.h"
+
+void cli_fmt_stress(char *buf, size_t size, double pa)
+{
+  if (fabs(pa) < 1e6)
+    snprintf(buf, size, "%.2f kPa", pa / 1e3);
+  else
+    snprintf(buf, size, "%.3f MPa", pa / 1e6);
+}
+
+/* " at r = 80.1 .. 240.3 mm", " in 2 ranges: r = 80.1 .. 90.2, 95.0 .. 99.1 mm", or for
+ * many (a ragged sign change) their extent; the file has them all. */
+static void print_ranges(FILE *out, const rs_defect_range *rg, int n)
+{
+  enum { SHOWN = 3 };
+  if (n == 1) {
+    fprintf(out, " at r = %.1f .. %.1f mm", rg[0].r_first * 1e3, rg[0].r_last * 1e3);
+  } else if (n <= SHOWN) {
+    fprintf(out, " in %d ranges: r = ", n);
+    for (int i = 0; i < n; ++i)
+      fprintf(out, "%s%.1f .. %.1f", i ? ", " : "", rg[i].r_first * 1e3, rg[i].r_last * 1e3);
+    fprintf(out, " mm");
+  } else {
+    fprintf(out, " in %d ranges between r = %.1f and %.1f mm (all in /defects)", n,
+            rg[0].r_first * 1e3, rg[n - 1].r_last * 1e3);
+  }
+}
+
+static void print_hoop(FILE *out, const rs_defect_report *rep)
+{
+  char a[64];
+  if (rep->hoop.verdict == RS_DEFECT_NOT_ASSESSED) {
+    fprintf(out, "  hoop stress        not assessed (no layers)\n");
+    return;
+  }
+  cli_fmt_stress(a, sizeof a, rep->hoop.min);
+  if (rep->hoop.verdict == RS_DEFECT_OK) {
+    fprintf(out, "  hoop stress        no compression (least %s at r = %.1f mm): ok\n", a,
+            rep->hoop.min_radius * 1e3);
+    return;
+  }
+  fprintf(out,
+          "  WARNING: hoop compression (sigma_theta < 0: starring/buckling risk) in %d layer%s",
+          rep->hoop.layers, rep->hoop.layers == 1 ? "" : "s");
+  print_ranges(out, rep->hoop.ranges, rep->hoop.n_ranges);
+  fprintf(out, "; least %s at r = %.1f mm\n", a, rep->hoop.min_radius * 1e3);
+}
+
+static void print_pressure(FILE *out, const rs_defect_report *rep)
+{
+  char a[64], b[64];
+  if (rep->pressure.verdict == RS_DEFECT_NOT_ASSESSED &&
+      rep->hoop.verdict == RS_DEFECT_NOT_ASSESSED)
+    return;
+  cli_fmt_stress(a, sizeof a, rep->pressure.max);
+  double r = rep->pressure.max_radius * 1e3;
+  switch (rep->pressure.verdict) {
+  case RS_DEFECT_NOT_ASSESSED:
+    fprintf(
+        out,
+        "  pressure           peak %s at r = %.1f mm: not assessed (no material.pressure_limit)\n",
+        a, r);
+    return;
+  case RS_DEFECT_OK:
+    cli_fmt_stress(b, sizeof b, rep->pressure.limit);
+    fprintf(out,
+            "  pressure           peak %s at r = %.1f mm, %.2f of material.pressure_limit %s: ok\n",
+            a, r, rep->pressure.ratio, b);
+    return;
+  case RS_DEFECT_RISK:
+    cli_fmt_stress(b, sizeof b, rep->pressure.limit);
+    fprintf(out,
+            "  WARNING: pressure %s at r = %.1f mm exceeds material.pressure_limit %s (%.2f x): "
+            "crushing/blocking risk\n",
+            a, r, b, rep->pressure.ratio);
+    return;
+  }
+}
+
+static void print_slip(FILE *out, const rs_defect_report *rep)
+{
+  switch (rep->slip.verdict) {
+  case RS_DEFECT_NOT_ASSESSED:
+    fprintf(out, "  interlayer slip    not assessed (%s)\n",
+            rep->slip.torque > 0.0 ? "no interface between layers" : "no winding.accel_torque");
+    return;
+  case RS_DEFECT_OK:
+    fprintf(out,
+            "  interlayer slip    friction torque capacity >= %.2f x winding.accel_torque %g N m/m "
+            "(least at r = %.1f mm): ok\n",
+            rep->slip.margin_min, rep->slip.torque, rep->slip.margin_radius * 1e3);
+    return;
+  case RS_DEFECT_RISK:
+    fprintf(out, "  WARNING: interlayer slip (cinching) risk at %d interface%s", rep->slip.layers,
+            rep->slip.layers == 1 ? "" : "s");
+    print_ranges(out, rep->slip.ranges, rep->slip.n_ranges);
+    fprintf(out,
+            ": friction torque capacity down to %.2f x winding.accel_torque %g N m/m at r = %.1f "
+            "mm\n",
+            rep->slip.margin_min, rep->slip.torque, rep->slip.margin_radius * 1e3);
+    return;
+  }
+}
+
+static void print_core(FILE *out, const rs_defect_report *rep)
+{
+  char a[64], b[64];
+  cli_fmt_stress(a, sizeof a, rep->core.pressure);
+  cli_fmt_stress(b, sizeof b, rep->core.rating);
+  switch (rep->core.verdict) {
+  case RS_DEFECT_NOT_ASSESSED:
+    fprintf(out, "  core               %s: not assessed (no core.rating)\n", a);
+    return;
+  case RS_DEFECT_OK:
+    fprintf(out, "  core               %s, %.2f of core.rating %s: ok\n", a, rep->core.ratio, b);
+    return;
+  case RS_DEFECT_RISK:
+    fprintf(out, "  WARNING: core pressure %s exceeds core.rating %s (%.2f x): core crush risk\n",
+            a, b, rep->core.ratio);
+    return;
+  }
+}
+
+void cli_print_defects(FILE *out, const rs_defect_report *rep)
+{
+  fprintf(out, "defect risk (rules: docs/defects.md):\n");
+  print_hoop(out, rep);
+  print_pressure(out, rep);
+  print_slip(out, rep);
+  print_core(out, rep);
+}

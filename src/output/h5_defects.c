@@ -1,0 +1,137 @@
+/* /defects: one subgroup per defect-risk rule, its verdict and figures as attributes
+ * (units in docs/output.md) and the flagged layer ranges as datasets. */
+#include "output/h5_defects.h"
+
+#include <stdlib.h>
+
+#include "output/h5_util.h"
+#include "reelsim/defects.h"
+
+/* The flagged ranges: layer indices (0-based, as in /layers) and outer radii. */
+static rs_status write_ranges(hid_t g, const rs_defect_range *ranges, int n)
+{
+  size_t k = (size_t)(n > 0 ? n : 1);
+  long long *first = malloc(k * sizeof *first), *last = malloc(k * sizeof *last);
+  double *r0 = malloc(k * sizeof *r0), *r1 = malloc(k * sizeof *r1);
+  rs_status st = RS_OK;
+  if (!first || !last || !r0 || !r1) {
+    st = RS_ERROR(RS_ERR_MEMORY, "out of memory for %d defect ranges", n);
+  } else {
+    for (int i = 0; i < n; ++i) {
+      first[i] = ranges[i].first;
+      last[i] = ranges[i].last;
+      r0[i] = ranges[i].r_first;
+      r1[i] = ranges[i].r_last;
+    }
+    st = rs_h5_write_1d_int64(g, "range_first_layer", first, (size_t)n, "",
+                              "first layer of each flagged range (0-based index into /layers)");
+    if (st == RS_OK)
+      st = rs_h5_write_1d_int64(g, "range_last_layer", last, (size_t)n, "",
+                                "last layer of each flagged range (0-based, inclusive)");
+    if (st == RS_OK)
+      st = rs_h5_write_1d(g, "range_inner_radius", r0, (size_t)n, "m",
+                          "outer radius of the first layer of each flagged range");
+    if (st == RS_OK)
+      st = rs_h5_write_1d(g, "range_outer_radius", r1, (size_t)n, "m",
+                          "outer radius of the last layer of each flagged range");
+  }
+  free(first);
+  free(last);
+  free(r0);
+  free(r1);
+  return st;
+}
+
+static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
+{
+  hid_t g;
+  rs_status st = rs_h5_group_create(parent, "hoop_compression", &g);
+  if (st != RS_OK) return st;
+  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->hoop.verdict));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "rule", "risk where sigma_theta < 0");
+  if (st == RS_OK && rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_int64(g, "layers", rep->hoop.layers);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta", rep->hoop.min);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta_radius", rep->hoop.min_radius);
+    if (st == RS_OK) st = write_ranges(g, rep->hoop.ranges, rep->hoop.n_ranges);
+  }
+  H5Gclose(g);
+  return st;
+}
+
+static rs_status write_pressure(hid_t parent, const rs_defect_report *rep)
+{
+  hid_t g;
+  rs_status st = rs_h5_group_create(parent, "pressure", &g);
+  if (st != RS_OK) return st;
+  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->pressure.verdict));
+  if (st == RS_OK)
+    st = rs_h5_attr_string(g, "rule",
+                           "risk where the greatest pressure on the web > "
+                           "material.pressure_limit");
+  if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure", rep->pressure.max);
+  if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure_radius", rep->pressure.max_radius);
+  if (st == RS_OK && rep->pressure.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_double(g, "limit", rep->pressure.limit);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "ratio", rep->pressure.ratio);
+  }
+  H5Gclose(g);
+  return st;
+}
+
+static rs_status write_slip(hid_t parent, const rs_defect_report *rep)
+{
+  hid_t g;
+  rs_status st = rs_h5_group_create(parent, "interlayer_slip", &g);
+  if (st != RS_OK) return st;
+  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->slip.verdict));
+  if (st == RS_OK)
+    st = rs_h5_attr_string(g, "rule", "risk where mu P 2 pi r^2 < winding.accel_torque");
+  if (st == RS_OK && rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_double(g, "accel_torque", rep->slip.torque);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "friction_layer", rep->slip.mu);
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->slip.layers);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin", rep->slip.margin_min);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin_radius", rep->slip.margin_radius);
+    if (st == RS_OK) st = write_ranges(g, rep->slip.ranges, rep->slip.n_ranges);
+  }
+  H5Gclose(g);
+  return st;
+}
+
+static rs_status write_core(hid_t parent, const rs_defect_report *rep)
+{
+  hid_t g;
+  rs_status st = rs_h5_group_create(parent, "core", &g);
+  if (st != RS_OK) return st;
+  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->core.verdict));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "rule", "risk where core pressure > core.rating");
+  if (st == RS_OK) st = rs_h5_attr_double(g, "core_pressure", rep->core.pressure);
+  if (st == RS_OK && rep->core.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_double(g, "rating", rep->core.rating);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "ratio", rep->core.ratio);
+  }
+  H5Gclose(g);
+  return st;
+}
+
+rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_result *res)
+{
+  rs_defect_limits lim;
+  rs_defect_report *rep = NULL;
+  rs_defect_limits_from_scene(scene, &lim);
+  rs_status st = rs_defects_assess(res, &lim, &rep);
+  if (st != RS_OK) return st;
+  hid_t g;
+  st = rs_h5_group_create(file, "defects", &g);
+  if (st == RS_OK) {
+    st = rs_h5_attr_string(g, "rules", "docs/defects.md");
+    if (st == RS_OK) st = write_hoop(g, rep);
+    if (st == RS_OK) st = write_pressure(g, rep);
+    if (st == RS_OK) st = write_slip(g, rep);
+    if (st == RS_OK) st = write_core(g, rep);
+    H5Gclose(g);
+  }
+  rs_defect_report_destroy(&rep);
+  return st;
+}

@@ -1,0 +1,30 @@
+/* The layout of a reelsim file, shared by the single-run writer (h5_write.c) and the
+ * comparison writer (h5_compare.c); internal to the output module. docs/output.md. */
+#ifndef RS_OUTPUT_H5_LAYOUT_H
+#define RS_OUTPUT_H5_LAYOUT_H
+
+#include <hdf5.h>
+
+#include "reelsim/reel.h"
+#include "reelsim/scene.h"
+#include "reelsim/status.h"
+
+/* Root attributes every reelsim file has: program, version, created. */
+rs_status rs_h5_write_file_attributes(hid_t file);
+
+/* One run into the group `loc` (the root of a run file, /runs/<name> of a comparison):
+ * its attributes (title, scene_file, scene, layers, ..., wall_seconds) and the groups
+ * layers/ and final/ (and whatever a run gains later) under it. */
+rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result *res);
+
+/* RS_ERR_INTERNAL when a result lacks an array it claims to have. */
+rs_status rs_h5_check_result(const rs_reel_result *res);
+
+/* Fills an in-memory file (after the file attributes) with what ctx describes. */
+typedef rs_status (*rs_h5_build_fn)(hid_t file, const void *ctx);
+
+/* Checks the target, builds the file in memory with `build`, then stages it onto `path`
+ * (temporary + rename, staging.h): whole or absent, an older file untouched on failure. */
+rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void *ctx);
+
+#endif

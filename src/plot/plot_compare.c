@@ -1,0 +1,66 @@
+/* The figures of a comparison file: each quantity with every run overlaid, one colour
+ * per run, the legend naming the run and its scene's title. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "plot/plot_internal.h"
+
+typedef enum quantity { Q_PRESSURE, Q_HOOP, Q_TENSION } quantity;
+
+static const struct {
+  const char *file, *what, *ylabel;
+} figs[] = {
+    [Q_PRESSURE] = {"pressure", "interlayer pressure in the wound reels",
+                    "interlayer pressure P = −σr (kPa)"},
+    [Q_HOOP] = {"hoop", "hoop stress in the wound reels (compression negative)",
+                "hoop stress σθ (MPa)"},
+    [Q_TENSION] = {"tension", "wound-on tension T0 (solid) and web tension of the recipe "
+                              "(dashed)",
+                   "tension per unit width (N/m)"},
+};
+
+static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
+{
+  char *out = plot_path(c, figs[q].file), head[512], style[160], title[768];
+  if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  rs_status st = rs_gp_figure(&c->gp, out);
+  free(out);
+  if (st != RS_OK) return st;
+  snprintf(head, sizeof head, "comparison of %d run%s (%s)", n, n == 1 ? "" : "s", c->stem);
+  plot_title(c, head, figs[q].what);
+  rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset ylabel '%s'\nset grid\n"
+                       "set key below left Left reverse height 1.5\n",
+               figs[q].ylabel);
+  if (q == Q_HOOP) rs_gp_printf(&c->gp, "set xzeroaxis linetype -1\n");
+  if (q == Q_TENSION) { /* from 0: constant recipes would otherwise sit on the border */
+    double t_max = 0.0;
+    for (int i = 0; i < n; ++i)
+      for (size_t j = 0; j < runs[i].n; ++j)
+        t_max = fmax(t_max, fmax(runs[i].t0[j], runs[i].web[j]));
+    if (t_max > 0.0) rs_gp_printf(&c->gp, "set yrange [0:%.10g]\n", 1.1 * t_max);
+  }
+  for (int i = 0; st == RS_OK && i < n; ++i) {
+    const run_data *d = &runs[i];
+    const double *y = q == Q_PRESSURE ? d->p_kpa : q == Q_HOOP ? d->hoop_mpa : d->t0;
+    snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", plot_color(i));
+    snprintf(title, sizeof title, "%s: %s", d->name, d->title);
+    st = plot_curve(c, d->r_mm, y, d->n, style, title, NULL);
+    if (st == RS_OK && q == Q_TENSION) {
+      snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
+               plot_color(i));
+      st = plot_curve(c, d->r_mm, d->web, d->n, style, "", NULL);
+    }
+  }
+  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  rs_gp_plot_end(&c->gp);
+  return st;
+}
+
+rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n)
+{
+  rs_status st = overlay(c, runs, n, Q_PRESSURE);
+  if (st == RS_OK) st = overlay(c, runs, n, Q_HOOP);
+  if (st == RS_OK) st = overlay(c, runs, n, Q_TENSION);
+  return st;
+}

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# defects_file.sh REELSIM SCENE: the falling-taper scene's file records the hoop
+# compression under /defects (verdict "risk", the flagged range, the least hoop stress
+# equal to the least of /final/sigma_theta), and stderr stays empty: it is no terminal,
+# so no progress bar even though the run takes seconds.
+set -u
+bin="$1"; scene="$2"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+"$bin" run "$scene" -o "$tmp/t.h5" > "$tmp/out" 2> "$tmp/err" || { cat "$tmp/out" "$tmp/err"; fail "run failed"; }
+[ ! -s "$tmp/err" ] || { cat -A "$tmp/err" | head; fail "stderr is not empty (a progress bar on a non-terminal?)"; }
+h5dump -a /defects/hoop_compression/verdict "$tmp/t.h5" | grep -q '"risk"' || fail "hoop_compression verdict is not risk"
+for v in pressure interlayer_slip core; do
+  h5dump -a /defects/$v/verdict "$tmp/t.h5" | grep -q '"not assessed"' || fail "$v should be 'not assessed'"
+done
+h5dump -d /defects/hoop_compression/range_inner_radius "$tmp/t.h5" > /dev/null || fail "no range datasets"
+least="$(h5dump -a /defects/hoop_compression/min_sigma_theta -m '%.17g' "$tmp/t.h5" | sed -n 's/.*(0): *//p')"
+h5dump -d /final/sigma_theta -m '%.17g' -y -w 0 -o "$tmp/st.txt" "$tmp/t.h5" >/dev/null
+want="$(tr ',' '\n' < "$tmp/st.txt" | sed 's/ //g; /^$/d' | sort -g | head -n 1)"
+echo "min_sigma_theta $least, least of /final/sigma_theta $want"
+[ -n "$least" ] && [ "$least" = "$want" ] || fail "min_sigma_theta differs from the least /final/sigma_theta"
+echo PASS

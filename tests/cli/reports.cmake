@@ -1,0 +1,42 @@
+# Whole-reel reports: stress history, CSV export, defect-risk indicators, progress bar.
+set(SC ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes)
+set(CASES ${PROJECT_SOURCE_DIR}/cases)
+
+rs_cli_script(history_h5dump history_h5dump.sh ${SC}/small.yaml)
+rs_cli_test(history_too_large 2
+            [[small\.yaml: output\.history_every = 1 would store 49500 stages of 49500 layers.*use output\.history_every >= 19]]
+            run ${SC}/small.yaml --set winding.final_radius=5 --set output.history_every=1 -o history-too-large.h5)
+rs_cli_script(run_history_too_large_no_file no_output.sh 2 ${SC}/small.yaml
+              --set winding.final_radius=5 --set output.history_every=1)
+
+rs_cli_script(csv_writes csv_writes.sh ${SC}/small.yaml)
+rs_cli_test(csv_missing_dir 2 [[reelsim: --csv no-such-dir: no such directory]]
+            run ${SC}/small.yaml -o csv-missing-dir.h5 --csv no-such-dir)
+rs_cli_script(run_csv_missing_dir_no_file no_output.sh 2 ${SC}/small.yaml --csv no-such-dir)
+rs_cli_test(csv_check_refused 2 [[reelsim: check: --csv only applies to run]]
+            check ${SC}/small.yaml --csv .)
+
+rs_cli_test(falling_taper_warning 0
+            [[WARNING: hoop compression \(sigma_theta < 0: starring/buckling risk\) in [0-9]+ layers at r = 76\.3 \.\. 89\.4 mm. least -3\.[0-9]+ MPa at r = 76\.3 mm]]
+            run ${CASES}/newsprint-falling-taper.yaml -o falling-taper.h5)
+rs_cli_script(falling_taper_defects_file defects_file.sh ${CASES}/newsprint-falling-taper.yaml)
+rs_cli_test(defects_not_assessed 0 [[interlayer slip +not assessed \(no winding\.accel_torque\)]]
+            run ${SC}/small.yaml -o defects-not-assessed.h5)
+rs_cli_test(defects_core_rating_risk 0 [[WARNING: core pressure [0-9.]+ kPa exceeds core\.rating 100\.00 kPa]]
+            run ${SC}/small.yaml -o defects-core.h5 --set core.rating=1e5)
+rs_cli_test(defects_slip_risk 0 [[WARNING: interlayer slip \(cinching\) risk at [0-9]+ interfaces]]
+            run ${SC}/small.yaml -o defects-slip.h5 --set material.friction_layer=0.2
+            --set winding.accel_torque=500)
+rs_cli_test(check_defect_checks 0 [[interlayer slip check: winding\.accel_torque 50 N m/m, web-on-web friction 0\.3]]
+            check ${SC}/small.yaml --set material.friction_layer=0.3 --set winding.accel_torque=50)
+rs_cli_test(bad_pressure_limit 2 [[--set material\.pressure_limit=0: must be > 0 Pa]]
+            check ${SC}/small.yaml --set material.pressure_limit=0)
+rs_cli_test(bad_accel_without_friction 2 [[--set winding\.accel_torque=50: the interlayer slip check needs material\.friction_layer]]
+            check ${SC}/small.yaml --set winding.accel_torque=50)
+
+rs_cli_script(progress_tty progress_tty.sh ${CASES}/newsprint-falling-taper.yaml)
+
+# A steep rising taper compresses the inner layers (the issue's hoop-compression warning).
+rs_cli_test(rising_taper_warning 0
+            [[WARNING: hoop compression \(sigma_theta < 0: starring/buckling risk\) in [0-9]+ layers at r = [0-9.]+ \.\. [0-9.]+ mm. least -[0-9.]+ MPa]]
+            run ${SC}/rising-taper.yaml -o rising-taper.h5)
