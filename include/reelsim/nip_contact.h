@@ -24,10 +24,10 @@
  *
  * DISCRETISATION: M nodes x_i = -a + i dx, dx = 2a/(M-1). Pressure piecewise linear (hat
  * functions, eq. (16)-(18)), zero at both ends. Shear piecewise CONSTANT on the M-1
- * elements and the stick/slip conditions at the element midpoints (staggered): the paper's
- * literal collocation (hat shear, stick at the nodes) is singular (docs/nip.md).
+ * elements and the stick/slip conditions at each element's upstream node (staggered): the
+ * paper's literal collocation (hat shear, stick at the nodes) is singular (docs/nip.md).
  * Unknowns: M-2 pressures, 2(M-1) shears, delta0, eps0, xi2, T0 (3M). Equations:
- * indentation (12) at the nodes (M), stick (13)-(14) or slip (15) at the midpoints
+ * indentation (12) at the nodes (M), stick (13)-(14) or slip (15) per element
  * (2(M-1)), sheet equilibrium and winder torque (20) (2).
  *
  * Thread safety: a handle is used by one thread at a time. No I/O. */
@@ -112,13 +112,17 @@ rs_status rs_nip_contact_set_friction(rs_nip_contact *nc, double mu_roll, double
 void rs_nip_contact_forget(rs_nip_contact *nc);
 
 /* Solves the nip for a given half-width a (m) and incoming tension Ti (N/m); the load is
- * an output (eq. (21)). RS_ERR_SOLVER (with what was tried) if the stick/slip iteration
- * does not settle. */
+ * an output (eq. (21)). The stick/slip state: cold, from the solution of the friction
+ * conditions as a linear complementarity problem (Lemke), confirmed by the active-set
+ * iteration; warm, the iteration from the previous state, with the LCP as the fallback.
+ * RS_ERR_SOLVER (with what was tried) if neither gives a consistent state, e.g. a Lemke
+ * secondary ray where the width cannot carry the drum's traction. */
 rs_status rs_nip_contact_solve_width(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
 
-/* Solves the nip for a given load P (N/m): finds a with P(a) = P (bracket + Brent on ln a,
- * warm-started from the previous a). RS_ERR_INPUT naming nip.load if no half-width up to
- * 0.2 min(R1, R2) carries P, or (surface winder) if mu_drum P < Ti. */
+/* Solves the nip for a given load P (N/m): finds a with |P(a)/P - 1| <= load_rtol
+ * (safeguarded secant on ln a; the first trial predicted from the last three solves, or
+ * cold from Hertz in series with the sheet). RS_ERR_INPUT naming nip.load if no half-width
+ * up to 0.2 min(R1, R2) carries P, or (surface winders) if mu_drum P <= (1 - share) Ti. */
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out);
 
 /* ---- from a scene: material + nip spec ------------------------------------------------ */

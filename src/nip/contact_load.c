@@ -112,7 +112,8 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
   if (!nc->have_roll) return RS_ERROR(RS_ERR_INPUT, "nip contact: the roll is not set");
   /* The drum's drive carries (1 - share) Ti through friction alone: mu_drum P >= that. */
   double carried = (1.0 - rs_nipc_share(nc)) * Ti;
-  if (carried > 0 && nc->cfg.mu_drum * P < carried)
+  if (carried > 0 && nc->cfg.mu_drum * P <= carried * (1 + 1e-9)) /* at capacity: every drum
+                                                                      element slips, xi2 is free */
     return RS_ERROR(RS_ERR_INPUT, "nip.friction.drum * nip.load = %g * %g = %g N/m is less than "
                     "the tension the drum must carry by friction (%g N/m of the web tension %g N/m): "
                     "no stick/slip state exists; raise nip.load or nip.friction.drum",

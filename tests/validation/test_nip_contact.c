@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "nip/contact_internal.h" /* the roll constants the scene glue chose (nit_levels_off) */
 #include "reelsim/nip_contact.h"
 
 #define PI 3.14159265358979323846
@@ -523,6 +524,76 @@ static void lcp_ray_when_infeasible(void)
   rs_nip_contact_destroy(&nc);
 }
 
+/* The wound-on tension against nip load for paper stacks (center winder with a rider,
+ * the scene glue: Pfeiffer stack, secant E_r): NIT = T0 - Ti rises with slope ~mu at low
+ * load and levels off at high load, the trend measured by Good et al. (1999) that the
+ * model should give without being told. Why (docs/nip.md, "Why NIT levels off"): the roll
+ * side slips forward over the roll surface the nip shortens (its circumferential strain
+ * ~ |H21| pbar), while the entry, where the sheet is still at Ti, slips backward; the
+ * backward zone grows with the group Pi = mu a c11 / (h |H21|) = (sheet strain from the
+ * full friction mu P) / (roll surface strain from the mean pressure P/(2a)), because the
+ * first grows like P and the second like sqrt(P). Checked: NIT/(mu P) > 0.95 at low load,
+ * decreasing with load, below 0.6 at 25 kN/m; and NIT/(mu P) is nearly one function of Pi
+ * for stacks and frictions that differ (within 0.08 at equal Pi). */
+static void nit_levels_off(void)
+{
+  typedef struct { double K1, K2, E_theta, G, caliper, mu; } mat;
+  const mat mats[3] = {{5e3, 60, 3.5e9, 1e9, 70e-6, 0.19},   /* the CLI newsprint scene */
+                       {5e3, 60, 3.5e9, 1e9, 70e-6, 0.4},    /* higher friction */
+                       {2e4, 30, 7e9, 2e9, 100e-6, 0.19}};   /* stiffer stack, thicker */
+  const double loads[] = {200, 1000, 3000, 10000, 25000};
+  double Pi[3][5], F[3][5];
+  for (int k = 0; k < 3; ++k) {
+    rs_material m = {0};
+    snprintf(m.name, sizeof m.name, "paper %d", k);
+    m.caliper = mats[k].caliper;
+    m.E_theta = mats[k].E_theta;
+    m.G_rtheta = mats[k].G;
+    m.nu_rtheta = 0.01;
+    m.nu_md_cd = 0.3;
+    m.radial.law = RS_RADIAL_PFEIFFER;
+    m.radial.K1 = mats[k].K1;
+    m.radial.K2 = mats[k].K2;
+    rs_nip_spec sp = {0};
+    sp.model = RS_NIP_CONTACT;
+    sp.mu_roll = mats[k].mu;
+    sp.mu_drum = 0.35;
+    sp.winder = RS_WINDER_CENTER;
+    sp.drum = (rs_drum){0.3, 0.05, 0, 2.1e11, 0.3, 0, 0, 0, 0};
+    sp.nodes = 64;
+    rs_nip_contact *nc = NULL;
+    CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+    for (int i = 0; i < 5; ++i) {
+      rs_nip_state st = {0.15, 0.0762, 350, loads[i], 0, 0};
+      rs_nip_solution r = {0};
+      CHECK(rs_nip_contact_solve_state(nc, &st, &r) == RS_OK);
+      double H[2][2];
+      CHECK(rs_ortho_halfplane(&nc->roll_c, H) == RS_OK);
+      const rs_sheet *sh = &nc->cfg.sheet;
+      F[k][i] = (r.T0 - r.Ti) / (mats[k].mu * r.load);
+      Pi[k][i] = mats[k].mu * r.a * sh->c11 / (sh->h * fabs(H[1][0]));
+      printf("  stack %d mu %-4g P = %-6g Pi = %-8.4f Lambda = |H21|/(mu H22) = %-8.3f NIT/(mu P) = %.6f\n",
+             k, mats[k].mu, loads[i], Pi[k][i], fabs(H[1][0]) / (mats[k].mu * H[1][1]), F[k][i]);
+      if (i > 0) CHECK_LT(F[k][i], F[k][i - 1]);
+      rs_nip_solution_free(&r);
+    }
+    rs_nip_contact_destroy(&nc);
+  }
+  CHECK(F[0][0] > 0.95);
+  CHECK_LT(F[0][4], 0.6);
+  /* one function of Pi: stacks 1 and 2 against stack 0, linear interpolation in Pi */
+  for (int k = 1; k < 3; ++k)
+    for (int i = 0; i < 5; ++i) {
+      double x = Pi[k][i];
+      if (x < Pi[0][0] || x > Pi[0][4]) continue;
+      int j = 0;
+      while (Pi[0][j + 1] < x) ++j;
+      double t = (x - Pi[0][j]) / (Pi[0][j + 1] - Pi[0][j]), f0 = F[0][j] + t * (F[0][j + 1] - F[0][j]);
+      printf("  Pi = %-8.4f stack %d: %.4f  stack 0: %.4f\n", x, k, F[k][i], f0);
+      CHECK_LT(fabs(F[k][i] - f0), 0.08);
+    }
+}
+
 /* The staggered discretisation: no node-to-node oscillation in the converged shear (the
  * alternating component sum (-1)^e q_e / (M-1) is small against the mean |q|) and a
  * bounded condition number. */
@@ -707,6 +778,7 @@ static const check_case cases[] = {
     {"nit_bound", nit_bound},
     {"rigid_cylinders_no_nit", rigid_cylinders_no_nit},
     {"power_balance", power_balance},
+    {"nit_levels_off", nit_levels_off},
     {"rider_lcp", rider_lcp},
     {"lcp_ray_when_infeasible", lcp_ray_when_infeasible},
     {"no_checkerboard", no_checkerboard},
