@@ -22,6 +22,7 @@ typedef struct rs_nipc_lin {
   double a;               /* half-width it was made at */
   int valid;
   int solved_state_differs; /* the last solve had other stick/slip rows than the LU */
+  int fresh;              /* the last solve factored the matrix it solved */
   double *V, *H, *work;   /* GMRES basis, Hessenberg matrix, vectors */
   lapack_int *iwork;
 } rs_nipc_lin;

@@ -45,7 +45,7 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
   const int M = nc->M, n = nc->n, E = M - 1, S = 2 * E, m = 2 * S;
   const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
   *pivots = 0;
-  if (m > 1024) /* the dense tableau is m x (2m + 2) */
+  if (m > 1024) /* the dense tableau is m x (m + S + 2) */
     return RS_ERROR(RS_ERR_SOLVER, "LCP fallback not run: %d complementarity pairs (M = %d > 257 "
                     "nodes) is too large for its dense tableau", m, M);
   /* full stick: K and b, and its factorization */
@@ -56,10 +56,12 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
   const rs_nipc_lin *L = &nc->lin;
   if (!L->valid) return RS_ERROR(RS_ERR_INTERNAL, "LCP: no factorization");
   /* Z = K^-1 E: column j is K^-1 e_{M+j} = diag(cs) Kq^-1 (rs_{M+j} e_{M+j}), Kq the
-   * equilibrated matrix that is factored (nc->lin). The factorization may be older than K
-   * (refined by GMRES): then re-factor K itself. */
-  st = rs_nipc_lin_refactor(nc, a);
-  if (st) return rs_error_wrap("LCP: full-stick system at a = %g m", a);
+   * equilibrated matrix that is factored (nc->lin). Unless the solve just factored K, the
+   * kept factorization is of an older matrix (GMRES refined from it): factor K itself. */
+  if (!L->fresh) {
+    st = rs_nipc_lin_refactor(nc, a);
+    if (st) return rs_error_wrap("LCP: full-stick system at a = %g m", a);
+  }
   double *Z = calloc((size_t)n * S, sizeof *Z);
   const int W = (m + S + 2 + 3) & ~3; /* tableau row length, padded (see row_update) */
   double *T = malloc((size_t)m * W * sizeof *T);
@@ -82,8 +84,8 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
   }
   for (int j = 0; j < S; ++j)
     for (int i = 0; i < n; ++i) Z[(size_t)j * n + i] *= L->cs[i];
-  /* scales: u in units of the largest slip a unit column produces is not needed; w in units
-   * of the friction limit scale qs = max mu pbar(z0) (or max |q| when mu pbar vanishes) */
+  /* scales, so that the tableau entries are O(1): margins w in units of qs, the largest
+   * mu pbar or |q| of the full-stick state; slips in units of us = qs / max |dw/ds| */
   double qs = 0;
   for (int k = 0; k < 2; ++k)
     for (int e = 0; e < E; ++e)

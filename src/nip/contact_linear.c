@@ -274,6 +274,7 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
     int changed = 0;
     for (int k = 0; k < 2 * E; ++k) changed += nc->state[k] != L->state[k];
     if (changed <= GMRES_MAX_ROWS && gmres(nc, changed)) {
+      L->fresh = 0;
       for (int c = 0; c < n; ++c)
         if (!isfinite(nc->z[c])) return RS_ERROR(RS_ERR_SOLVER, "nip solution is not finite");
       return RS_OK;
@@ -290,6 +291,7 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
     if (!isfinite(x[c])) return RS_ERROR(RS_ERR_SOLVER, "nip solution is not finite");
   }
   L->solved_state_differs = 0;
+  L->fresh = 1;
   return RS_OK;
 }
 
