@@ -20,13 +20,14 @@ typedef struct setup {
   double caliper, E_zd;     /* sheet */
   double E_drum;            /* isotropic drum, nu = 0.3 */
   double E_iso;             /* > 0: isotropic roll (nu = 0.3) instead of the paper roll */
+  double E_sheet;           /* > 0: the sheet's E_md = E_cd instead of E_t */
 } setup;
 
 /* a paper roll (soft radially) on a steel drum, 100 um sheet */
 static setup paper_roll(void)
 {
   setup s = {3e7, 5e9, 3e7, 0.01, 0.5, 0.1, 0.3, 0.05, 0.19, 0.35, RS_WINDER_CENTER, 0.5, 64, 100e-6, 3e7,
-             2.1e11, 0};
+             2.1e11, 0, 0};
   return s;
 }
 
@@ -49,7 +50,8 @@ static rs_nip_contact *make(const setup *s)
   CHECK(rs_ortho_isotropic(s->E_drum, 0.3, 1, &c.drum) == RS_OK);
   c.drum_radius = s->Rd;
   c.drum_core_radius = s->Rd0;
-  rs_sheet_constants k = {s->caliper, s->E_t, s->E_zd, s->E_t, s->nu, 0.3, s->nu, s->G, 1};
+  double Es = s->E_sheet > 0 ? s->E_sheet : s->E_t;
+  rs_sheet_constants k = {s->caliper, Es, s->E_zd, Es, s->nu, 0.3, s->nu, s->G, 1};
   CHECK(rs_sheet_from_constants(&k, &c.sheet) == RS_OK);
   c.mu_roll = s->mu_roll;
   c.mu_drum = s->mu_drum;
@@ -594,6 +596,30 @@ static void nit_levels_off(void)
     }
 }
 
+/* A sheet much stiffer than the roll surface (limit (b) of the audit): c11 -> 0 removes
+ * the sheet's strain deficit at the entry, Pi = mu a c11 / (h |H21|) -> 0, so on a stack
+ * that cannot stick by its own compliance (Lambda >> 1) the roll side slips forward almost
+ * everywhere and NIT -> mu P at any load (only the entry element, where p -> 0, still slips
+ * backward). Here the two readings of the wound-on condition agree (c11 T0/(2h) -> 0), so
+ * this checks the Pi mechanism, not the wound-on fix. */
+static void stiff_sheet_full_slip(void)
+{
+  setup s = paper_roll();
+  const double Es[] = {5e9, 5e10, 5e11, 5e12};
+  double prev = 0;
+  for (int i = 0; i < 4; ++i) {
+    s.E_sheet = Es[i];
+    rs_nip_solution r = {0};
+    CHECK(solve(&s, 20000, 350, &r));
+    double f = (r.T0 - r.Ti) / (s.mu_roll * r.load);
+    printf("  E_sheet = %-8g NIT / (mu P) = %.17g\n", Es[i], f);
+    CHECK(f > prev);
+    prev = f;
+    rs_nip_solution_free(&r);
+  }
+  CHECK(prev > 0.98);
+}
+
 /* The staggered discretisation: no node-to-node oscillation in the converged shear (the
  * alternating component sum (-1)^e q_e / (M-1) is small against the mean |q|) and a
  * bounded condition number. */
@@ -779,6 +805,7 @@ static const check_case cases[] = {
     {"rigid_cylinders_no_nit", rigid_cylinders_no_nit},
     {"power_balance", power_balance},
     {"nit_levels_off", nit_levels_off},
+    {"stiff_sheet_full_slip", stiff_sheet_full_slip},
     {"rider_lcp", rider_lcp},
     {"lcp_ray_when_infeasible", lcp_ray_when_infeasible},
     {"no_checkerboard", no_checkerboard},
