@@ -25,11 +25,22 @@ typedef struct rs_nip_state {
 } rs_nip_state;
 
 typedef struct rs_nip rs_nip;
+struct rs_nip_solution; /* a converged contact nip (reelsim/nip_contact.h) */
+
+/* What the model found at its last call (the /nip/ record of a run). */
+typedef struct rs_nip_report {
+  double a;        /* m, contact half-width (0: the model has no contact) */
+  double load;     /* N/m, the load of the converged contact (eq. (21)); else the given load */
+  int iterations;  /* stick/slip iterations (0: none) */
+} rs_nip_report;
 
 typedef struct rs_nip_ops {
   const char *name;
   rs_status (*wound_on_tension)(void *ctx, const rs_nip_state *state, double *T0);
   void (*destroy)(void *ctx);
+  /* optional: */
+  void (*report)(void *ctx, rs_nip_report *rep);
+  const struct rs_nip_solution *(*solution)(void *ctx);
 } rs_nip_ops;
 
 /* Creates the nip model the spec asks for; *out = NULL for RS_NIP_NONE. */
@@ -37,6 +48,11 @@ rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs
 void rs_nip_destroy(rs_nip **nip);
 rs_status rs_nip_wound_on_tension(rs_nip *nip, const rs_nip_state *state, double *T0);
 const char *rs_nip_name(const rs_nip *nip);
+/* The last call's report; zeros (and the state's load) for models without a contact. */
+void rs_nip_get_report(const rs_nip *nip, rs_nip_report *rep);
+/* The last converged contact solution, or NULL (owned by the model, valid until its next
+ * call). */
+const struct rs_nip_solution *rs_nip_last_solution(const rs_nip *nip);
 
 /* For model implementations: wraps ctx and ops in a handle (takes ownership of ctx). */
 rs_status rs_nip_wrap(const rs_nip_ops *ops, void *ctx, rs_nip **out);

@@ -93,6 +93,8 @@ typedef struct rs_nip_solution {
 } rs_nip_solution;
 
 void rs_nip_solution_free(rs_nip_solution *s);
+/* Deep copy into dst (whose arrays are reused or grown); free dst with rs_nip_solution_free. */
+rs_status rs_nip_solution_copy(rs_nip_solution *dst, const rs_nip_solution *src);
 
 typedef struct rs_nip_contact rs_nip_contact;
 

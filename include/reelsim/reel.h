@@ -9,6 +9,8 @@
 extern "C" {
 #endif
 
+struct rs_nip_solution;
+
 typedef struct rs_reel_result {
   int n_layers;
   double *radius;            /* m, outer radius of each layer */
@@ -31,6 +33,21 @@ typedef struct rs_reel_result {
   double *stage_radius;      /* m, outer radius of the roll at each stage */
   double *stage_sigma_r;     /* Pa, compression negative */
   double *stage_sigma_theta; /* Pa, compression negative */
+  /* The nip record (a scene with a nip): one entry per nip solve the reel kept, in the
+   * order of winding. Solves whose prediction was rejected (adaptive) are counted, not kept. */
+  int n_nip;
+  double *nip_radius;        /* m, roll radius at the solve */
+  double *nip_T0;            /* N/m, wound-on tension found */
+  double *nip_Ti;            /* N/m, web tension there */
+  double *nip_a;             /* m, contact half-width (0 for the friction model) */
+  double *nip_solve_load;    /* N/m, load of the converged contact */
+  int *nip_iterations;       /* stick/slip iterations */
+  long nip_solves;           /* all nip solves, rejected ones included */
+  long nip_rejected;         /* adaptive: rewinds after a failed prediction */
+  /* Full contact distributions at output.nip_profiles_at (contact model only). */
+  int n_profiles;
+  double *profile_radius;    /* m, roll radius of each profile */
+  struct rs_nip_solution *profiles;
 } rs_reel_result;
 
 /* Optional observer: called after each increment with the layers wound so far.

@@ -39,6 +39,11 @@ typedef struct rs_drum {
   double E_r, E_theta, nu_rtheta, G_rtheta;
 } rs_drum;
 
+typedef enum rs_nip_update_kind {
+  RS_NIP_UPDATE_ADAPTIVE, /* solve where T0 changes, extrapolate within T0_rtol elsewhere */
+  RS_NIP_UPDATE_EVERY     /* solve every update_every layers (1: every layer) */
+} rs_nip_update_kind;
+
 typedef struct rs_nip_spec {
   rs_nip_model_kind model;
   rs_recipe load;          /* N/m */
@@ -49,6 +54,9 @@ typedef struct rs_nip_spec {
   rs_drum drum;
   int nodes;               /* contact nodes M */
   int terms;               /* Fourier terms of the cylinder series; 0 = automatic */
+  rs_nip_update_kind update;
+  int update_every;        /* every: layers between nip solves */
+  double T0_rtol;          /* adaptive: tolerance on T0, relative to T0 */
 } rs_nip_spec;
 
 typedef struct rs_numerics {

@@ -163,14 +163,21 @@ rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *s, 
 {
   if (!nc || !s || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
   if (!nc->from_spec) return RS_ERROR(RS_ERR_INPUT, "nip contact was not made from a scene");
-  if (!(s->roll_radius > 0 && s->core_radius > 0 && s->core_radius < s->roll_radius))
-    return RS_ERROR(RS_ERR_INPUT, "roll radius %g m must exceed the core radius %g m",
+  /* equal radii: the bare core, before the first layer (modelled as the thinnest roll) */
+  if (!(s->roll_radius > 0 && s->core_radius > 0 && s->core_radius <= s->roll_radius))
+    return RS_ERROR(RS_ERR_INPUT, "roll radius %g m must not be below the core radius %g m",
                     s->roll_radius, s->core_radius);
   if (!(isfinite(s->nip_load) && s->nip_load > 0))
     return RS_ERROR(RS_ERR_INPUT, "nip.load must be > 0 (got %g N/m)", s->nip_load);
-  /* the cylinder solution is tested for R0/R <= 0.99: a roll thinner than 1 % of its radius
-   * (the first layers) is modelled with that 1 % (docs/nip.md) */
-  double R = s->roll_radius, R0 = fmin(s->core_radius, 0.99 * R);
+  /* The cylinder solution is tested for R0/R <= 0.99, so a roll thinner than 1 % of its
+   * radius (the first layers, the bare core) is modelled as one of thickness
+   * sqrt(t^2 + t_min^2), t = R - core, t_min = 0.01 R: never below t_min, the true
+   * thickness within 0.5 % from t = 10 t_min on, and smooth in R. (A hard min(core, 0.99 R)
+   * put a kink into T0(R) where it switched: with partial stick T0 depends on the roll's
+   * stiffness, which changes fast with the thickness of a thin roll, ~56 N/m per mm at
+   * 0.8 mm for the newsprint scene.) docs/nip.md. */
+  double R = s->roll_radius, t = R - s->core_radius, tmin = 0.01 * R;
+  double R0 = R - sqrt(t * t + tmin * tmin);
   double Rs = 1.0 / (1.0 / R + 1.0 / nc->R[1]);
   double ps = s->surface_pressure > 0 ? s->surface_pressure : 0.0, E_r = 0;
   rs_status st = nip_radial_modulus(nc, s->nip_load, Rs, ps, &E_r);
@@ -211,7 +218,23 @@ static void seam_destroy(void *ctx)
   free(c);
 }
 
-static const rs_nip_ops contact_ops = {"contact", seam_wot, seam_destroy};
+static void seam_report(void *ctx, rs_nip_report *rep)
+{
+  const seam_ctx *c = ctx;
+  rep->a = c->sol.a;
+  rep->load = c->sol.load;
+  rep->iterations = c->sol.iterations;
+}
+
+static const rs_nip_solution *seam_solution(void *ctx)
+{
+  const seam_ctx *c = ctx;
+  return c->sol.M > 0 ? &c->sol : NULL;
+}
+
+static const rs_nip_ops contact_ops = {.name = "contact", .wound_on_tension = seam_wot,
+                                       .destroy = seam_destroy, .report = seam_report,
+                                       .solution = seam_solution};
 
 rs_status rs_nip_contact_nip_create(const rs_nip_spec *spec, const rs_material *mat, rs_nip **out)
 {

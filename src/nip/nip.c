@@ -38,6 +38,18 @@ rs_status rs_nip_wound_on_tension(rs_nip *nip, const rs_nip_state *state, double
 
 const char *rs_nip_name(const rs_nip *nip) { return nip ? nip->ops->name : "none"; }
 
+void rs_nip_get_report(const rs_nip *nip, rs_nip_report *rep)
+{
+  rep->a = rep->load = 0.0;
+  rep->iterations = 0;
+  if (nip && nip->ops->report) nip->ops->report(nip->ctx, rep);
+}
+
+const struct rs_nip_solution *rs_nip_last_solution(const rs_nip *nip)
+{
+  return nip && nip->ops->solution ? nip->ops->solution(nip->ctx) : NULL;
+}
+
 rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out)
 {
   *out = NULL;

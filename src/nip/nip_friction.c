@@ -7,17 +7,25 @@
 #include "reelsim/nip.h"
 
 typedef struct friction_ctx {
-  double mu;
+  double mu, load;
 } friction_ctx;
 
 static rs_status friction_wot(void *ctx, const rs_nip_state *st, double *T0)
 {
-  const friction_ctx *f = ctx;
+  friction_ctx *f = ctx;
+  f->load = st->nip_load;
   *T0 = st->web_tension + f->mu * st->nip_load;
   return RS_OK;
 }
 
-static const rs_nip_ops friction_ops = {"friction", friction_wot, free};
+static void friction_report(void *ctx, rs_nip_report *rep)
+{
+  rep->load = ((const friction_ctx *)ctx)->load;
+}
+
+static const rs_nip_ops friction_ops = {
+    .name = "friction", .wound_on_tension = friction_wot, .destroy = free,
+    .report = friction_report};
 
 rs_status rs_nip_friction_create(double mu_roll, rs_nip **out)
 {
@@ -26,5 +34,6 @@ rs_status rs_nip_friction_create(double mu_roll, rs_nip **out)
   friction_ctx *f = malloc(sizeof *f);
   if (!f) return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the friction nip");
   f->mu = mu_roll;
+  f->load = 0.0;
   return rs_nip_wrap(&friction_ops, f, out);
 }

@@ -12,6 +12,7 @@
 
 #include "output/h5_defects.h"
 #include "output/h5_layout.h"
+#include "output/h5_nip.h"
 #include "output/h5_util.h"
 #include "output/staging.h"
 #include "reelsim_version.h"
@@ -170,6 +171,7 @@ rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result
   if (st == RS_OK) st = write_final(loc, res);
   if (st == RS_OK && scene->output.history_every > 0) st = write_history(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res);
+  if (st == RS_OK) st = rs_h5_write_nip(loc, scene, res);
   return st;
 }
 

@@ -6,7 +6,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "reel/nip_policy.h"
 #include "reelsim/nip.h"
+#include "reelsim/nip_contact.h"
 #include "reelsim/reel.h"
 #include "reelsim/roll.h"
 
@@ -31,6 +33,15 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->stage_radius);
   free(res->stage_sigma_r);
   free(res->stage_sigma_theta);
+  free(res->nip_radius);
+  free(res->nip_T0);
+  free(res->nip_Ti);
+  free(res->nip_a);
+  free(res->nip_solve_load);
+  free(res->nip_iterations);
+  for (int i = 0; res->profiles && i < res->n_profiles; ++i) rs_nip_solution_free(&res->profiles[i]);
+  free(res->profiles);
+  free(res->profile_radius);
   free(res);
   *resp = NULL;
 }
@@ -164,6 +175,46 @@ static void reel_collect(const rs_roll *roll, rs_reel_result *res, double t_star
   res->wall_seconds = reel_now() - t_start;
 }
 
+/* Appends one kept nip solve to the result's record. */
+static rs_status nip_record(rs_reel_result *res, int *cap, double r, double T0, double Ti,
+                            const rs_nip_report *rep)
+{
+  if (res->n_nip == *cap) {
+    int c = *cap ? 2 * *cap : 64;
+    double **d[] = {&res->nip_radius, &res->nip_T0, &res->nip_Ti, &res->nip_a, &res->nip_solve_load};
+    for (int i = 0; i < 5; ++i) {
+      double *g = realloc(*d[i], (size_t)c * sizeof(double));
+      if (!g) return RS_ERROR(RS_ERR_MEMORY, "cannot grow the nip record to %d solves", c);
+      *d[i] = g;
+    }
+    int *it = realloc(res->nip_iterations, (size_t)c * sizeof(int));
+    if (!it) return RS_ERROR(RS_ERR_MEMORY, "cannot grow the nip record to %d solves", c);
+    res->nip_iterations = it;
+    *cap = c;
+  }
+  int k = res->n_nip++;
+  res->nip_radius[k] = r;
+  res->nip_T0[k] = T0;
+  res->nip_Ti[k] = Ti;
+  res->nip_a[k] = rep->a;
+  res->nip_solve_load[k] = rep->load;
+  res->nip_iterations[k] = rep->iterations;
+  return RS_OK;
+}
+
+/* After a rewind to `layers`, drops the history stages recorded beyond it. */
+static void history_rewind(rs_reel_result *res, int layers, int every, long *next_stage)
+{
+  while (res->n_stages > 0 && res->stage_layers[res->n_stages - 1] > layers) res->n_stages--;
+  if (every > 0) *next_stage = (layers / every + 1) * (long)every;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
 rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_result **out)
 {
   *out = NULL;
@@ -184,6 +235,12 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   rs_nip *nip = NULL;
   rs_status st = RS_OK;
   long hist_cap = 0, next_stage = every;
+  /* the nip: its update policy, the state to rewind to, the profiles asked for
+   * (declared before the first goto: `done` frees snap) */
+  rs_nip_policy pol;
+  rs_roll_state *snap = NULL;
+  int nip_cap = 0, n_prof = 0, next_prof = 0;
+  double prof_r[RS_MAX_PROFILES];
   if (!res || !block) {
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
     goto done;
@@ -193,28 +250,76 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   if ((st = rs_roll_create(&params, &roll))) goto done;
   if ((st = rs_nip_create(&sc->nip, &sc->material, &nip))) goto done;
 
+  if (nip) {
+    rs_nip_policy_init(&pol, &sc->nip, per_step, N);
+    if (sc->nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&snap))) goto done;
+    if (sc->nip.model == RS_NIP_CONTACT && sc->output.n_profiles > 0) {
+      n_prof = sc->output.n_profiles;
+      memcpy(prof_r, sc->output.nip_profiles_at, (size_t)n_prof * sizeof(double));
+      qsort(prof_r, (size_t)n_prof, sizeof(double), compare_doubles);
+      res->profiles = calloc((size_t)n_prof, sizeof *res->profiles);
+      res->profile_radius = calloc((size_t)n_prof, sizeof(double));
+      if (!res->profiles || !res->profile_radius) {
+        st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate %d nip profiles", n_prof);
+        goto done;
+      }
+    }
+  }
+
   for (int first = 0; first < N;) {
     int m = N - first < per_step ? N - first : per_step;
+    if (nip) {
+      const double R = rs_roll_outer_radius(roll);
+      const int want_profile = next_prof < n_prof && R >= prof_r[next_prof];
+      if (rs_nip_policy_due(&pol, first) || want_profile) {
+        const int n = rs_roll_layers(roll);
+        rs_nip_state ns = {.roll_radius = R,
+                           .core_radius = sc->core.radius,
+                           .web_tension = rs_recipe_eval(&sc->tension, R),
+                           .nip_load = rs_recipe_eval(&sc->nip.load, R),
+                           .surface_modulus = rs_roll_surface_modulus(roll),
+                           .surface_pressure = n > 0 ? -rs_roll_sigma_r(roll)[n - 1] : 0.0};
+        double T0 = 0.0;
+        res->nip_solves++;
+        if ((st = rs_nip_wound_on_tension(nip, &ns, &T0))) {
+          rs_error_wrap("nip model '%s' at roll radius %.6g m (layer %d of %d)", rs_nip_name(nip),
+                        R, first + 1, N);
+          goto done;
+        }
+        if (!(T0 >= 0.0) || !isfinite(T0)) {
+          st = RS_ERROR(RS_ERR_SOLVER,
+                        "wound-on tension %g N/m at roll radius %.6g m (layer %d of %d) is %s: the "
+                        "web would go slack on the roll",
+                        T0, R, first + 1, N, isfinite(T0) ? "negative" : "not finite");
+          goto done;
+        }
+        if (!rs_nip_policy_offer(&pol, first, R, T0, ns.web_tension)) {
+          /* the wound-on tension moved more than predicted: wind that stretch again */
+          res->nip_rejected++;
+          if ((st = rs_roll_restore(roll, snap))) goto done;
+          first = pol.j2;
+          history_rewind(res, first, every, &next_stage);
+          continue;
+        }
+        rs_nip_report rep;
+        rs_nip_get_report(nip, &rep);
+        if ((st = nip_record(res, &nip_cap, R, T0, ns.web_tension, &rep))) goto done;
+        const rs_nip_solution *sol = want_profile ? rs_nip_last_solution(nip) : NULL;
+        if (sol) {
+          if ((st = rs_nip_solution_copy(&res->profiles[res->n_profiles], sol))) goto done;
+          res->profile_radius[res->n_profiles++] = R;
+        }
+        while (want_profile && next_prof < n_prof && prof_r[next_prof] <= R) ++next_prof;
+        if (snap && (st = rs_roll_save(roll, snap))) goto done;
+      }
+    }
     for (int b = 0; b < m; ++b) {
       int j = first + b;
       double r = rs_roll_layer_radius(roll, j);
       double Ti = rs_recipe_eval(&sc->tension, r), T0 = Ti;
       double load = nip ? rs_recipe_eval(&sc->nip.load, r) : 0.0;
-      if (nip) {
-        rs_nip_state ns = {.roll_radius = rs_roll_outer_radius(roll),
-                           .core_radius = sc->core.radius,
-                           .web_tension = Ti,
-                           .nip_load = load,
-                           .surface_modulus = rs_roll_surface_modulus(roll),
-                           .surface_pressure = rs_roll_layers(roll) > 0
-                                                   ? -rs_roll_sigma_r(roll)[rs_roll_layers(roll) - 1]
-                                                   : 0.0};
-        if ((st = rs_nip_wound_on_tension(nip, &ns, &T0))) {
-          rs_error_wrap("nip model '%s' at roll radius %.6g m (layer %d of %d)", rs_nip_name(nip),
-                        ns.roll_radius, j + 1, N);
-          goto done;
-        }
-      }
+      /* the nip's part of T0, as solved or predicted at the radius the layer goes on at */
+      if (nip) T0 = Ti + rs_nip_policy_predict(&pol, r - sc->material.caliper);
       if (!(T0 >= 0.0) || !isfinite(T0)) {
         st = RS_ERROR(RS_ERR_SOLVER,
                       "wound-on tension %g N/m at r = %.6g m (layer %d of %d) is %s: the web would "
@@ -260,6 +365,7 @@ done:
       st = RS_ERROR(RS_ERR_SOLVER, "non-finite core pressure after winding");
   }
   free(block);
+  rs_roll_state_destroy(&snap);
   rs_nip_destroy(&nip);
   rs_roll_destroy(&roll);
   *out = res;

@@ -68,8 +68,15 @@ rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
   if (nip && strcmp(yn_map_get(nip, "model")->text, "none") != 0) {
     if ((st = put_default(nip, "winder", "center")) != RS_OK ||
         (st = put_default(nip, "nodes", "64")) != RS_OK ||
-        (st = put_default(nip, "terms", "0")) != RS_OK)
+        (st = put_default(nip, "terms", "0")) != RS_OK ||
+        (st = put_default(nip, "update", "adaptive")) != RS_OK)
       return st;
+    /* each update policy gets only its own knob */
+    if (strcmp(yn_map_get(nip, "update")->text, "every") == 0)
+      st = put_default(nip, "update_every", "1");
+    else
+      st = put_default(nip, "T0_rtol", "1e-3");
+    if (st != RS_OK) return st;
     if (strcmp(yn_map_get(nip, "winder")->text, "center-surface") == 0 &&
         (st = put_default(nip, "torque_share", "0.5")) != RS_OK)
       return st;

@@ -139,6 +139,16 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
     print_recipe(out, "nip load", &s->nip.load);
     break;
   }
+  if (s->nip.model != RS_NIP_NONE) {
+    if (s->nip.update == RS_NIP_UPDATE_ADAPTIVE)
+      fprintf(out, "  - nip updates: adaptive (solved where T0 changes; T0 within %s of itself)\n",
+              f(a, s->nip.T0_rtol));
+    else if (s->nip.update_every == 1)
+      fprintf(out, "  - nip updates: every layer\n");
+    else
+      fprintf(out, "  - nip updates: every %d layers (T0 extrapolated in between)\n",
+              s->nip.update_every);
+  }
   fprintf(out, "  - numerics: %d layer%s per step, rtol %s", s->numerics.layers_per_step,
           s->numerics.layers_per_step == 1 ? "" : "s", f(a, s->numerics.rtol));
   if (s->numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->numerics.atol));

@@ -203,6 +203,17 @@ static rs_status resolve_nip(const yn *root, const ys_nip *y, rs_scene *s)
   if (!(y->terms >= 0)) return ys_fail(root, "nip.terms", "must be >= 0 (got %d)", y->terms);
   n->nodes = y->nodes;
   n->terms = y->terms;
+  if (ys_has(root, "nip.update_every") && y->update != RS_NIP_UPDATE_EVERY)
+    return ys_fail(root, "nip.update_every", "only used with update: every");
+  if (ys_has(root, "nip.T0_rtol") && y->update != RS_NIP_UPDATE_ADAPTIVE)
+    return ys_fail(root, "nip.T0_rtol", "only used with update: adaptive");
+  if (y->update == RS_NIP_UPDATE_EVERY && !(y->update_every >= 1))
+    return ys_fail(root, "nip.update_every", "must be >= 1 layer (got %d)", y->update_every);
+  if (y->update == RS_NIP_UPDATE_ADAPTIVE && !(y->T0_rtol > 0.0 && y->T0_rtol < 0.5))
+    return ys_fail(root, "nip.T0_rtol", "must lie in (0, 0.5) (got %g)", y->T0_rtol);
+  n->update = (rs_nip_update_kind)y->update;
+  n->update_every = y->update_every;
+  n->T0_rtol = y->T0_rtol;
   return RS_OK;
 }
 

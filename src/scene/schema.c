@@ -106,6 +106,11 @@ static const cyaml_strval_t winders[] = {
     {"center-surface", RS_WINDER_CENTER_SURFACE},
 };
 
+static const cyaml_strval_t nip_updates[] = {
+    {"adaptive", RS_NIP_UPDATE_ADAPTIVE},
+    {"every", RS_NIP_UPDATE_EVERY},
+};
+
 static const cyaml_schema_field_t friction_fields[] = {
     CYAML_FIELD_FLOAT("roll", OPT, ys_friction, roll),
     CYAML_FIELD_FLOAT("drum", OPT, ys_friction, drum),
@@ -133,6 +138,10 @@ static const cyaml_schema_field_t nip_fields[] = {
     CYAML_FIELD_MAPPING("drum", OPT, ys_nip, drum, drum_fields),
     CYAML_FIELD_INT("nodes", OPT, ys_nip, nodes),
     CYAML_FIELD_INT("terms", OPT, ys_nip, terms),
+    CYAML_FIELD_ENUM("update", OPT | CYAML_FLAG_STRICT, ys_nip, update, nip_updates,
+                     CYAML_ARRAY_LEN(nip_updates)),
+    CYAML_FIELD_INT("update_every", OPT, ys_nip, update_every),
+    CYAML_FIELD_FLOAT("T0_rtol", OPT, ys_nip, T0_rtol),
     CYAML_FIELD_END};
 
 /* ---- numerics and output ------------------------------------------------------------- */

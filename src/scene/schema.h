@@ -68,6 +68,9 @@ typedef struct ys_nip {
   double torque_share;
   ys_drum drum;
   int nodes, terms;
+  int update; /* rs_nip_update_kind */
+  int update_every;
+  double T0_rtol;
 } ys_nip;
 
 typedef struct ys_numerics {
