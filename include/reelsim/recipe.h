@@ -26,7 +26,8 @@ typedef struct rs_recipe {
   double value[RS_TABLE_MAX];
 } rs_recipe;
 
-/* The recipe's value at roll radius r (m). Units are the caller's (N/m here). */
+/* The recipe's value at roll radius r (m); every law holds its end values outside
+ * [r0, r1] (the last layer may lie up to half a caliper beyond r1). Units: the caller's. */
 double rs_recipe_eval(const rs_recipe *rc, double r);
 
 /* Smallest value the recipe takes on [r0, r1] (exact: each law is monotone or piecewise

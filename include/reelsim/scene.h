@@ -5,6 +5,7 @@
 #ifndef REELSIM_SCENE_H
 #define REELSIM_SCENE_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "reelsim/core.h"
@@ -94,6 +95,11 @@ typedef struct rs_scene {
  * before checking (the CLI's --set). Errors: RS_ERR_INPUT with "FILE:LINE: key.path: why".
  * The caller owns *out (rs_scene_destroy). */
 rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, rs_scene **out);
+/* The same for a scene held in memory: text[0..len) (need not be NUL-terminated) is the
+ * file's content and `name` stands for its path (messages, the directory models are
+ * looked up in, the default title and output file name). */
+rs_status rs_scene_load_text(const char *name, const char *text, size_t len, int n_sets,
+                             const char *const *sets, rs_scene **out);
 void rs_scene_destroy(rs_scene **scene);
 
 /* Writes the human-readable list of active effects, one per line

@@ -73,6 +73,8 @@ int cli_parse(int argc, char **argv, int first, cli_args *a)
         return cli_fail(CLI_EXIT_USAGE, "%s: --csv needs a directory", a->cmd);
     } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
       a->quiet = 1;
+    } else if (strcmp(arg, "--keep-partial") == 0 && strcmp(a->cmd, "run") == 0) {
+      a->keep_partial = 1;
     } else if (arg[0] == '-' && arg[1] != '\0') {
       return cli_fail(CLI_EXIT_USAGE, "%s: unknown option '%s' (see reelsim %s --help)", a->cmd,
                       arg, a->cmd);

@@ -1,6 +1,6 @@
 /* The reelsim command line: argument parsing, the commands, and exit statuses.
  * Exit status: 0 ok, 2 bad input or usage, 3 solver failure, 130 interrupted (SIGINT),
- * 1 anything else (see docs/cli.md). */
+ * 143 terminated (SIGTERM), 1 anything else (see docs/cli.md). */
 #ifndef RS_CLI_H
 #define RS_CLI_H
 
@@ -10,7 +10,7 @@
 #include "reelsim/status.h"
 
 enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER = 3,
-       CLI_EXIT_INTERRUPTED = 130 };
+       CLI_EXIT_INTERRUPTED = 130, CLI_EXIT_TERMINATED = 143 };
 
 typedef struct cli_args {
   const char *cmd;      /* "run", "check" or "compare" */
@@ -19,6 +19,7 @@ typedef struct cli_args {
   const char **scenes;
   const char *output;   /* -o FILE, or NULL */
   int quiet;
+  int keep_partial;     /* run --keep-partial: write what finished when the run stops early */
   const char *csv_dir;  /* run --csv DIR, or NULL */
   int n_sets;           /* --set key.path=value, in order; -o adds output.file=FILE last */
   const char **sets;

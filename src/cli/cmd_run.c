@@ -1,8 +1,13 @@
 /* reelsim run: load the scene, wind the reel, write the result, print a summary.
  *
- * Ctrl-C sets a flag that the engine's progress callback returns, so the run stops
- * after the current step; nothing is written and the exit status is 130. A second
- * Ctrl-C kills the program the usual way (SA_RESETHAND).
+ * Ctrl-C (and SIGTERM) sets a flag that the engine's progress callback returns, so the run
+ * stops after the current step; nothing is written and the exit status is 128 + the
+ * signal (130, 143). A second signal kills the program the usual way (SA_RESETHAND).
+ * SIGXFSZ is ignored while running, so a file-size limit (ulimit -f) makes the write fail
+ * with "File too large" and the output module removes its temporary, instead of the
+ * signal killing the program with a partial temporary left behind.
+ * --keep-partial: when the solver fails or the run is stopped, the layers finished are
+ * still written (attribute complete = 0); by default nothing is.
  *
  * The same callback draws a progress bar on stderr once a run has taken a second, at
  * most ten times a second, and only when stderr is a terminal and --quiet is off: logs
@@ -20,13 +25,9 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 
-static volatile sig_atomic_t interrupted = 0;
+static volatile sig_atomic_t interrupted = 0; /* the signal number, 0 if none */
 
-static void on_sigint(int sig)
-{
-  (void)sig;
-  interrupted = 1;
-}
+static void on_signal(int sig) { interrupted = sig; }
 
 static double now_seconds(void)
 {
@@ -146,17 +147,44 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   cli_print_defects(stdout, defects);
 }
 
+/* Writes the finished part of a run that stopped early (--keep-partial). Returns 1 when a
+ * file was written; otherwise says why not. */
+static int write_partial(const rs_scene *scene, const rs_reel_result *res)
+{
+  rs_reel_summary sum;
+  const char *what = NULL;
+  rs_reel_summarize(res, &sum);
+  for (int j = 0; j < res->n_layers; ++j)
+    if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j])) what = "a layer's stress";
+  if (what || !summary_finite(&sum, &what)) {
+    fprintf(stderr, "reelsim:   --keep-partial: not written, the %s is not a finite number\n",
+            what);
+    return 0;
+  }
+  if (rs_output_write(scene->output.file, scene, res) != RS_OK) {
+    fprintf(stderr, "reelsim:   --keep-partial: %s\n", rs_error_message());
+    return 0;
+  }
+  return 1;
+}
+
 int cli_run(const cli_args *a)
 {
   double t0 = now_seconds();
-  struct sigaction sa, old;
+  struct sigaction sa, old_int, old_term, old_xfsz, ign;
   memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_sigint;
+  sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &sa, &old);
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
   /* a shell starts background jobs with SIGINT ignored: keep it that way for them */
-  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
+  if (old_int.sa_handler == SIG_IGN) sigaction(SIGINT, &old_int, NULL);
+  if (old_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &old_term, NULL);
+  memset(&ign, 0, sizeof ign);
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  sigaction(SIGXFSZ, &ign, &old_xfsz);
 
   rs_scene *scene = NULL;
   rs_reel_result *res = NULL;
@@ -177,17 +205,29 @@ int cli_run(const cli_args *a)
   st = rs_reel_wind(scene, &opts, &res);
   progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && interrupted)) {
-    int k = res ? res->n_layers : prog.done;
-    code = cli_fail(CLI_EXIT_INTERRUPTED, "interrupted at layer %d of %d (no output written)", k,
-                    scene->n_layers);
+    int k = res ? res->n_layers : prog.done, sig = interrupted;
+    const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
+    if (a->keep_partial && res && write_partial(scene, res))
+      cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
+               scene->n_layers, scene->output.file);
+    else
+      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, scene->n_layers);
+    code = sig == SIGTERM ? CLI_EXIT_TERMINATED : CLI_EXIT_INTERRUPTED;
     goto done;
   }
   if (st != RS_OK) {
     if (st == RS_ERR_INPUT) rs_error_wrap("%s", scene->path); /* e.g. a nip model not built */
     code = cli_fail_status(st);
-    if (res && st == RS_ERR_SOLVER)
-      fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n", res->n_layers,
-              scene->n_layers);
+    if (res && st == RS_ERR_SOLVER) {
+      if (a->keep_partial && write_partial(scene, res))
+        fprintf(stderr,
+                "reelsim:   %d of %d layers were wound; partial result written to %s "
+                "(complete = 0)\n",
+                res->n_layers, scene->n_layers, scene->output.file);
+      else
+        fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
+                res->n_layers, scene->n_layers);
+    }
     goto done;
   }
 
@@ -219,6 +259,8 @@ done:
   rs_defect_report_destroy(&defects);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
-  sigaction(SIGINT, &old, NULL);
+  sigaction(SIGINT, &old_int, NULL);
+  sigaction(SIGTERM, &old_term, NULL);
+  sigaction(SIGXFSZ, &old_xfsz, NULL);
   return code;
 }

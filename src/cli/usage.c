@@ -35,6 +35,7 @@ static const char set_help[] =
 
 static const char run_help[] =
     "usage: reelsim run SCENE [-o FILE] [--csv DIR] [--set key.path=value ...] [--quiet]\n"
+    "                         [--keep-partial]\n"
     "\n"
     "Winds the reel SCENE describes layer by layer, writes the result to an HDF5 file\n"
     "(output.file of the scene, or FILE) and prints a summary: active effects, final\n"
@@ -48,8 +49,11 @@ static const char run_help[] =
     "                 (DIR must exist)\n"
     "%s"
     "  -q, --quiet    print nothing but errors (no summary, no progress bar)\n"
+    "  --keep-partial when the solver fails or the run is interrupted, still write the\n"
+    "                 layers finished to the output file, marked complete = 0\n"
     "\n"
-    "Ctrl-C stops the run after the current step: no file is written, exit status 130.\n"
+    "Ctrl-C stops the run after the current step: no file is written, exit status 130\n"
+    "(SIGTERM the same, 143).\n"
     "exit status: 0 ok, 2 bad input, 3 the solver failed, 130 interrupted, 1 other\n";
 
 static const char check_help[] =

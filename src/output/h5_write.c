@@ -49,6 +49,8 @@ static rs_status write_run_attributes(hid_t loc, const rs_scene *scene, const rs
   if ((st = rs_h5_attr_string(loc, "scene", scene->resolved_text)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "layers", n)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "layers_planned", scene->n_layers)) != RS_OK) return st;
+  /* 0: a run that stopped early, written on request (reelsim run --keep-partial) */
+  if ((st = rs_h5_attr_int64(loc, "complete", n == scene->n_layers)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(loc, "final_radius", final_radius)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(loc, "core_pressure", res->core_pressure)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "increments", res->increments)) != RS_OK) return st;

@@ -9,15 +9,28 @@
  * linear     start + (end - start) (r - r0) / (r1 - r0)
  * hyperbolic start (1 - k (1 - r0/r))            (the usual "taper" of winding practice)
  * torque     start r0 / r                        (constant drive torque M = start r0)
- * table      piecewise linear through (r_i, v_i), end values held outside. */
+ * table      piecewise linear through (r_i, v_i), end values held outside.
+ * Every law holds its end values outside [r0, r1]: the layer count is rounded, so the last
+ * layer can sit up to half a caliper beyond the final radius, and a taper that ends at 0
+ * must not turn negative there. A linear taper is a convex blend of its ends, so it is
+ * exactly `end` at r1 and never below min(start, end) in between (no rounding below 0). */
 double rs_recipe_eval(const rs_recipe *rc, double r)
 {
+  int ranged = rc->r1 > rc->r0;
+  if (ranged && rc->law != RS_RECIPE_TABLE) {
+    if (r > rc->r1) r = rc->r1;
+    if (r < rc->r0) r = rc->r0;
+  }
   switch (rc->law) {
   case RS_RECIPE_CONSTANT: return rc->start;
-  case RS_RECIPE_LINEAR:
-    if (rc->r1 <= rc->r0) return rc->start;
-    return rc->start + (rc->end - rc->start) * (r - rc->r0) / (rc->r1 - rc->r0);
-  case RS_RECIPE_HYPERBOLIC: return rc->start * (1.0 - rc->k * (1.0 - rc->r0 / r));
+  case RS_RECIPE_LINEAR: {
+    if (!ranged) return rc->start;
+    double s = (r - rc->r0) / (rc->r1 - rc->r0);
+    return (1.0 - s) * rc->start + s * rc->end;
+  }
+  case RS_RECIPE_HYPERBOLIC:
+    if (ranged && r == rc->r1 && !isnan(rc->end)) return rc->end;
+    return rc->start * (1.0 - rc->k * (1.0 - rc->r0 / r));
   case RS_RECIPE_TORQUE: return rc->start * rc->r0 / r;
   case RS_RECIPE_TABLE: {
     int n = rc->n_points;
@@ -60,7 +73,9 @@ rs_status rs_recipe_prepare(rs_recipe *rc, double r0, double r1)
       if (!isfinite(rc->end) || rc->start == 0.0 || r1 <= r0)
         return RS_ERROR(RS_ERR_INPUT, "hyperbolic recipe needs start and either end or k");
       rc->k = (1.0 - rc->end / rc->start) / (1.0 - r0 / r1);
+      return RS_OK; /* the given end stays exact (eval returns it at r1) */
     }
+    rc->end = NAN;
     rc->end = rs_recipe_eval(rc, r1);
     return RS_OK;
   case RS_RECIPE_TABLE:

@@ -230,7 +230,8 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   rs_roll_params params;
   reel_params(sc, &params);
   rs_reel_result *res = reel_result_new(N);
-  double *block = malloc((size_t)per_step * sizeof(double));
+  /* an increment never holds more than the roll's layers (layers_per_step may exceed N) */
+  double *block = malloc((size_t)(per_step < N ? per_step : N) * sizeof(double));
   rs_roll *roll = NULL;
   rs_nip *nip = NULL;
   rs_status st = RS_OK;

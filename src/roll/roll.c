@@ -247,8 +247,11 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   roll->cvode_msg[0] = '\0';
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      /* w relaxes from kc towards g - 1 over dx ~ 1/(2g): start inside that scale */
-      CVodeSetInitStep(roll->cvode, 0.05 / sqrt(roll->g2[0] + 1.0)) != CV_SUCCESS)
+      /* w relaxes from kc towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much
+       * softer than the web: kc = E_theta/E_c - 1) like 1/(x - x_c + 1/kc), over dx ~ 1/kc:
+       * start inside the shorter scale, or the first Newton iterations diverge */
+      CVodeSetInitStep(roll->cvode,
+                       0.05 / fmax(sqrt(roll->g2[0] + 1.0), fabs(roll->kc) + 1.0)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
 
   int next = 1; /* next node to fill */
@@ -350,16 +353,25 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     roll->block_share[i] = total > 0.0 ? above / total : 0.0;
   }
   const double Ls = roll->L[k], scale = -total / s;
-  double ds0 = scale * exp(roll->L[0] - Ls);
-  if (!isfinite(ds0))
-    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)", s);
-  roll->core_sigma += ds0;
-  for (int j = 1; j <= k; ++j) {
+  /* First every node's increment (ds into L, ds + r ds' into w, which are spent), then the
+   * state: an increment that fails leaves the roll exactly as it was, every finished
+   * layer intact. */
+  for (int j = 0; j <= k; ++j) {
     double ds = scale * exp(roll->L[j] - Ls);
-    double hoop = ds * (1.0 + roll->w[j]); /* ds + r ds' */
-    if (!isfinite(ds) || !isfinite(hoop))
+    double hoop = ds * (1.0 + roll->w[j]);
+    if (!isfinite(ds) || !isfinite(hoop)) {
+      if (j == 0)
+        return RS_ERROR(RS_ERR_SOLVER,
+                        "non-finite stress increment at the core (outer radius %.9g m)", s);
       return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
                       rc + j * t, j);
+    }
+    roll->L[j] = ds;
+    roll->w[j] = hoop;
+  }
+  roll->core_sigma += roll->L[0];
+  for (int j = 1; j <= k; ++j) {
+    double ds = roll->L[j], hoop = roll->w[j];
     if (j <= k_old) {
       roll->sigma_r[j - 1] += ds;
       roll->sigma_theta[j - 1] += hoop;
@@ -437,8 +449,10 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
   }
   st->n = roll->n;
   st->core_sigma = roll->core_sigma;
-  memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
-  memcpy(st->sigma_theta, roll->sigma_theta, (size_t)roll->n * sizeof(double));
+  if (roll->n > 0) { /* an empty roll has no arrays yet: memcpy of NULL is undefined */
+    memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
+    memcpy(st->sigma_theta, roll->sigma_theta, (size_t)roll->n * sizeof(double));
+  }
   return RS_OK;
 }
 
@@ -449,7 +463,9 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
                     roll->p.max_layers);
   roll->n = st->n;
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
-  memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));
-  memcpy(roll->sigma_theta, st->sigma_theta, (size_t)st->n * sizeof(double));
+  if (st->n > 0) { /* the state of an empty roll has no arrays */
+    memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));
+    memcpy(roll->sigma_theta, st->sigma_theta, (size_t)st->n * sizeof(double));
+  }
   return RS_OK;
 }

@@ -46,7 +46,18 @@ rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
   stem(scene->path, name, sizeof name);
   snprintf(file, sizeof file, "%s.h5", name);
 
-  if ((st = put_default(root, "title", name)) != RS_OK) return st;
+  /* The defaults must pass the checks the user's values pass: a title is at most 511
+   * bytes (cut at a UTF-8 character boundary), the output name at most RS_PATH_MAX - 1.
+   * Only a scene name given through rs_scene_load_text can be that long. */
+  char title[512];
+  size_t cut = strlen(name);
+  if (cut >= sizeof title) {
+    cut = sizeof title - 1; /* back off while the first byte left out continues a character */
+    while (cut > 0 && ((unsigned char)name[cut] & 0xC0) == 0x80) --cut;
+  }
+  memcpy(title, name, cut);
+  title[cut] = '\0';
+  if ((st = put_default(root, "title", title)) != RS_OK) return st;
 
   yn *mat = yn_map_get(root, "material");
   if ((st = put_default(mat, "name", "inline")) != RS_OK) return st;
@@ -60,6 +71,9 @@ rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
       (st = put_default(num, "atol", "0")) != RS_OK ||
       (st = put_default(num, "max_steps", "0")) != RS_OK)
     return st;
+  if (!yn_map_get(out, "file") && strlen(file) >= RS_PATH_MAX)
+    return RS_ERROR(RS_ERR_INPUT, "%.64s...: the scene name is too long to name the output "
+                    "file after it; give output.file", scene->path);
   if ((st = put_default(out, "file", file)) != RS_OK ||
       (st = put_default(out, "history_every", "0")) != RS_OK)
     return st;

@@ -87,7 +87,10 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
   return RS_OK;
 }
 
-rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, rs_scene **out)
+/* text == NULL: read the file `path`; otherwise parse text[0..len) and use `path` only as
+ * the scene's name (messages, model lookup directory, default title and output file). */
+static rs_status scene_load(const char *path, const char *text, size_t len, int n_sets,
+                            const char *const *sets, rs_scene **out)
 {
   if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: out is NULL");
   *out = NULL;
@@ -102,7 +105,7 @@ rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, r
   yn *root = NULL;
   ys_scene *y = NULL;
   char *body = NULL;
-  rs_status st = yn_parse_file(s->path, &root);
+  rs_status st = text ? yn_parse_text(text, len, s->path, &root) : yn_parse_file(s->path, &root);
   for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 0);
   if (st == RS_OK) st = ys_inline_material(root, s);
   for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 1);
@@ -123,6 +126,18 @@ rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, r
   }
   *out = s;
   return RS_OK;
+}
+
+rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, rs_scene **out)
+{
+  return scene_load(path, NULL, 0, n_sets, sets, out);
+}
+
+rs_status rs_scene_load_text(const char *name, const char *text, size_t len, int n_sets,
+                             const char *const *sets, rs_scene **out)
+{
+  if (!text && len > 0) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load_text: text is NULL");
+  return scene_load(name, text ? text : "", len, n_sets, sets, out);
 }
 
 void rs_scene_destroy(rs_scene **scene)

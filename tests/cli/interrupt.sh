@@ -1,21 +1,32 @@
 #!/usr/bin/env bash
-# interrupt.sh REELSIM SCENE: Ctrl-C (SIGINT) during `run` stops it after the current
-# step, writes no file, says where it stopped, and exits 130.
+# interrupt.sh REELSIM SCENE [SIGNAL STATUS [--keep-partial]]: a signal (default INT, i.e.
+# Ctrl-C; TERM gives 143) during `run` stops it after the current step, says where it
+# stopped, and exits with STATUS (default 130). It writes no file, or with --keep-partial
+# exactly the output file, marked complete = 0, with the layers the message names.
 set -u
 set -m   # job control: the background run gets SIGINT like a foreground one would
-bin="$1"; scene="$2"
+bin="$1"; scene="$2"; sig="${3:-INT}"; want="${4:-130}"; keep="${5:-}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 # a reel long enough (tens of seconds) that the signal lands mid-run
-"$bin" run "$scene" --set winding.final_radius=1.5 -o "$tmp/out.h5" > "$tmp/log" 2>&1 &
+"$bin" run "$scene" --set winding.final_radius=1.5 -o "$tmp/out.h5" $keep > "$tmp/log" 2>&1 &
 pid=$!
 sleep 1
-kill -INT "$pid"
+kill -"$sig" "$pid"
 wait "$pid"; got=$?
 cat "$tmp/log"
-echo "exit status: $got (expected 130)"
-[ "$got" -eq 130 ] || { echo "FAIL: wrong exit status"; exit 1; }
-grep -Eq 'reelsim: interrupted at layer [0-9]+ of [0-9]+ \(no output written\)' "$tmp/log" ||
-  { echo "FAIL: no 'interrupted at layer k of N' message"; exit 1; }
-[ ! -e "$tmp/out.h5" ] || { echo "FAIL: an output file was written"; exit 1; }
-[ "$(ls -A "$tmp")" = "log" ] || { ls -la "$tmp"; echo "FAIL: stray files"; exit 1; }
+echo "exit status: $got (expected $want)"
+[ "$got" -eq "$want" ] || { echo "FAIL: wrong exit status"; exit 1; }
+word=interrupted; [ "$sig" = TERM ] && word='terminated \(SIGTERM\)'
+if [ -z "$keep" ]; then
+  grep -Eq "reelsim: $word at layer [0-9]+ of [0-9]+ \(no output written\)" "$tmp/log" ||
+    { echo "FAIL: no '$word at layer k of N (no output written)' message"; exit 1; }
+  [ ! -e "$tmp/out.h5" ] || { echo "FAIL: an output file was written"; exit 1; }
+  [ "$(ls -A "$tmp")" = "log" ] || { ls -la "$tmp"; echo "FAIL: stray files"; exit 1; }
+else
+  k="$(sed -nE "s/.*$word at layer ([0-9]+) of [0-9]+ \(partial result written to .*, complete = 0\).*/\1/p" "$tmp/log")"
+  [ -n "$k" ] || { echo "FAIL: no 'partial result written' message"; exit 1; }
+  h5dump -a complete "$tmp/out.h5" | grep -Eq '\(0\): 0$' || { echo "FAIL: complete is not 0"; exit 1; }
+  h5dump -a layers "$tmp/out.h5" | grep -Eq "\(0\): $k\$" || { echo "FAIL: layers is not $k"; exit 1; }
+  [ "$(ls -A "$tmp" | sort | tr '\n' ' ')" = "log out.h5 " ] || { ls -la "$tmp"; echo "FAIL: stray files"; exit 1; }
+fi
 echo PASS

@@ -1,0 +1,12 @@
+# Scene-loader fuzzing (docs/robustness.md).
+# Always: the kept inputs (seed corpus and crash reproducers) replayed through the same
+# target function in the ordinary build, label unit (and valgrind).
+rs_test(fuzz_replay unit SOURCES fuzz/replay.c fuzz/fuzz_scene.c CASES corpus crashes)
+target_compile_definitions(fuzz_replay PRIVATE RS_FUZZ_DIR="${CMAKE_CURRENT_SOURCE_DIR}/fuzz")
+
+# -DREELSIM_FUZZ=ON (clang): the libFuzzer binary; scripts/fuzz.sh runs it.
+if(REELSIM_FUZZ)
+  add_executable(fuzz_scene fuzz/fuzz_scene.c)
+  target_link_libraries(fuzz_scene PRIVATE reelsim_lib)
+  target_link_options(fuzz_scene PRIVATE -fsanitize=fuzzer)
+endif()
