@@ -1,6 +1,6 @@
 /* The winding nip as a contact problem (seed paper, eqs. (12)-(22)): wound roll (upper
  * cylinder 1), sheet, drum or rider (lower cylinder 2), stick/slip friction on both faces
- * of the sheet, and the wound-on tension T0 from the wound-on condition xi1 = 0.
+ * of the sheet, and the wound-on tension T0 from the wound-on condition (22).
  *
  * SIGN CONVENTIONS (docs/nip.md)
  *   x        along the sheet, in the direction of travel; the sheet enters at x = -a with
@@ -10,7 +10,13 @@
  *            The roll feels -tau+ in +x, the drum +tau-. Sheet equilibrium:
  *            N(x) = Ti - int_{-a}^{x} (tau+ - tau-) dx, N(a) = T0.
  *   slip     velocity of the sheet face relative to the cylinder surface, per unit speed:
- *            s+ = eps_sheet - eps_1 + xi1 (xi1 = 0), s- = eps_sheet - eps_2 + xi2.
+ *            s+ = eps_sheet - eps_1 + xi1, s- = eps_sheet - eps_2 + xi2, with eps_sheet the
+ *            sheet's strain from its unstressed state and eps_k the cylinder's from its state
+ *            without the nip. Wound-on condition (22), read with these references
+ *            (docs/nip.md): the wound sheet moves with the roll, so
+ *            xi1 = eps1_mean - c11 T0 / (2h), eps1_mean = -C0_11 P / (2 pi R1^2) the mean
+ *            circumferential strain of the roll surface (n = 0 mode). The paper's xi1 = 0
+ *            holds for strains measured from the far-field (wound) states.
  *            In slip the friction on the cylinder (-tau+ resp. +tau-) has the sign of s and
  *            magnitude mu p; stick: s = 0 and |tau| <= mu p. Dissipation is >= 0.
  *   winder   M1/R1 = int tau+ + T0 = share * Ti with share = 1 (center: undriven rider,
@@ -18,10 +24,10 @@
  *
  * DISCRETISATION: M nodes x_i = -a + i dx, dx = 2a/(M-1). Pressure piecewise linear (hat
  * functions, eq. (16)-(18)), zero at both ends. Shear piecewise CONSTANT on the M-1
- * elements and the stick/slip conditions at the element midpoints (staggered): the paper's
- * literal collocation (hat shear, stick at the nodes) is singular (docs/nip.md).
+ * elements and the stick/slip conditions at each element's upstream node (staggered): the
+ * paper's literal collocation (hat shear, stick at the nodes) is singular (docs/nip.md).
  * Unknowns: M-2 pressures, 2(M-1) shears, delta0, eps0, xi2, T0 (3M). Equations:
- * indentation (12) at the nodes (M), stick (13)-(14) or slip (15) at the midpoints
+ * indentation (12) at the nodes (M), stick (13)-(14) or slip (15) per element
  * (2(M-1)), sheet equilibrium and winder torque (20) (2).
  *
  * Thread safety: a handle is used by one thread at a time. No I/O. */
@@ -61,12 +67,17 @@ typedef struct rs_nip_solution {
   double dx;                /* m */
   double load;              /* N/m, int p dx (eq. (21)) of the returned state */
   double Ti, T0;            /* N/m, incoming and wound-on tension */
+  double xi1;               /* creep of the upper contact (wound-on condition, see above) */
   double xi2;               /* creep of the lower contact */
   double delta0;            /* m, approach of the cylinder centres */
   double eps0;              /* m, shift of the nip centre */
   double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
-  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix */
+  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix, or
+                               of the kept one it was refined from with the same stick/slip
+                               rows (they differ by the kernels' drift, docs/nip.md) */
   int iterations;           /* active-set solves at the final half-width */
+  int lcp_pivots;           /* Lemke pivots at the final half-width (0: the active-set
+                               iteration found the state without the LCP) */
   int width_iterations;     /* half-widths tried by the load search (1 for a given a) */
   int total_solves;         /* linear solves in all */
   double dissipation;       /* int (q+ s+ + q- s-) dx >= 0, N/m per unit speed */
@@ -97,17 +108,25 @@ void rs_nip_contact_destroy(rs_nip_contact **nc);
  * something changed. */
 rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, double R, double R0);
 
+/* Changes the friction coefficients (>= 0; RS_ERR_INPUT naming nip.friction.roll or
+ * .drum otherwise), keeping the warm-start state: continuation in mu. */
+rs_status rs_nip_contact_set_friction(rs_nip_contact *nc, double mu_roll, double mu_drum);
+
 /* Forgets the warm-start state (the next solve starts cold). */
 void rs_nip_contact_forget(rs_nip_contact *nc);
 
 /* Solves the nip for a given half-width a (m) and incoming tension Ti (N/m); the load is
- * an output (eq. (21)). RS_ERR_SOLVER (with what was tried) if the stick/slip iteration
- * does not settle. */
+ * an output (eq. (21)). The stick/slip state: cold, from the solution of the friction
+ * conditions as a linear complementarity problem (Lemke), confirmed by the active-set
+ * iteration; warm, the iteration from the previous state, with the LCP as the fallback.
+ * RS_ERR_SOLVER (with what was tried) if neither gives a consistent state, e.g. a Lemke
+ * secondary ray where the width cannot carry the drum's traction. */
 rs_status rs_nip_contact_solve_width(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
 
-/* Solves the nip for a given load P (N/m): finds a with P(a) = P (bracket + Brent on ln a,
- * warm-started from the previous a). RS_ERR_INPUT naming nip.load if no half-width up to
- * 0.2 min(R1, R2) carries P, or (surface winder) if mu_drum P < Ti. */
+/* Solves the nip for a given load P (N/m): finds a with |P(a)/P - 1| <= load_rtol
+ * (safeguarded secant on ln a; the first trial predicted from the last three solves, or
+ * cold from Hertz in series with the sheet). RS_ERR_INPUT naming nip.load if no half-width
+ * up to 0.2 min(R1, R2) carries P, or (surface winders) if mu_drum P <= (1 - share) Ti. */
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out);
 
 /* ---- from a scene: material + nip spec ------------------------------------------------ */

@@ -52,6 +52,10 @@ rs_status rs_cyl_mode_eval(const rs_cyl_nd *nd, double rho0, long n, double P, d
  * k = 0 sum is infinite (t on a jump of f). t is reduced to [-pi, pi). */
 int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6]);
 
+/* sums.c: the same, only the cos sums (mask bit 1: out[0..2]) and/or the sin sums (bit 2:
+ * out[3..5]); the others are left untouched. */
+int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, double out[6]);
+
 /* sums.c: Fourier cosine coefficient a_n (n >= 0) of the basis on the circle. */
 double rs_cyl_basis_coef(rs_basis basis, double w, long n);
 

@@ -64,20 +64,54 @@ static void multiplier_expansion(const rs_cylinder *c, double e[NK][3])
 }
 
 typedef struct work {
-  int K;
+  int K;                   /* offsets summed (the others follow by parity), padded to a
+                              multiple of 4 so that -O2 vectorises the sweeps */
   const double *t;
   double *c, *s, *ct, *st; /* cos, sin of n t and of t */
   double *acc[NK];         /* partial sums */
 } work;
 
-/* Adds modes n1..n2 to the partial sums. cos/sin(n t) advance by rotation, restarted from
- * the library functions every 256 modes (error growth stays ~ 256 eps). */
+/* The sweeps over the offsets, as functions with restrict arguments and a trip count that
+ * is a multiple of 4 (K & ~3 == K), which is what lets -O2 vectorise them. */
+static void sweep1(int K, double *restrict a, double m, const double *restrict x)
+{
+  K &= ~3;
+  for (int k = 0; k < K; ++k) a[k] += m * x[k];
+}
+
+static void sweep2(int K, double *restrict a, double ma, double *restrict b, double mb,
+                   const double *restrict x)
+{
+  K &= ~3;
+  for (int k = 0; k < K; ++k) {
+    a[k] += ma * x[k];
+    b[k] += mb * x[k];
+  }
+}
+
+/* (c, s) <- (c cos t - s sin t, s cos t + c sin t): cos and sin of (n + 1) t */
+static void rotate(int K, double *restrict c, double *restrict s, const double *restrict ct,
+                   const double *restrict st)
+{
+  K &= ~3;
+  for (int k = 0; k < K; ++k) {
+    double ck = c[k], sk = s[k];
+    c[k] = ck * ct[k] - sk * st[k];
+    s[k] = sk * ct[k] + ck * st[k];
+  }
+}
+
+/* Adds modes n1..n2 to the partial sums of the requested kernels (cos: pu, pe; sin: qu,
+ * qe). cos/sin(n t) advance by rotation, restarted from the library functions every 256
+ * modes (error growth stays ~ 256 eps). */
 static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int accel,
-                      const double e[NK][3], long n1, long n2, work *wk)
+                      const double e[NK][3], unsigned what, long n1, long n2, work *wk)
 {
   const int K = wk->K;
-  double *c = wk->c, *s = wk->s, *ct = wk->ct, *st = wk->st;
+  double *c = wk->c, *s = wk->s;
   double *apu = wk->acc[KPU], *ape = wk->acc[KPE], *aqu = wk->acc[KQU], *aqe = wk->acc[KQE];
+  const int cpu = !!(what & RS_KERNEL_PU), cpe = !!(what & RS_KERNEL_PE);
+  const int squ = !!(what & RS_KERNEL_QU), sqe = !!(what & RS_KERNEL_QE);
   for (long n = n1; n <= n2; ++n) {
     if ((n - n1) % 256 == 0)
       for (int k = 0; k < K; ++k) {
@@ -94,19 +128,13 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
       mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
       mqe -= e[KQE][0] + in * (e[KQE][1] + in * e[KQE][2]);
     }
-    mpu *= an;
-    mpe *= an;
-    mqu *= an;
-    mqe *= an;
-    for (int k = 0; k < K; ++k) {
-      double ck = c[k], sk = s[k];
-      apu[k] += mpu * ck;
-      ape[k] += mpe * ck;
-      aqu[k] += mqu * sk;
-      aqe[k] += mqe * sk;
-      c[k] = ck * ct[k] - sk * st[k];
-      s[k] = sk * ct[k] + ck * st[k];
-    }
+    if (cpu && cpe) sweep2(K, apu, mpu * an, ape, mpe * an, c);
+    else if (cpu) sweep1(K, apu, mpu * an, c);
+    else if (cpe) sweep1(K, ape, mpe * an, c);
+    if (squ && sqe) sweep2(K, aqu, mqu * an, aqe, mqe * an, s);
+    else if (squ) sweep1(K, aqu, mqu * an, s);
+    else if (sqe) sweep1(K, aqe, mqe * an, s);
+    rotate(K, c, s, wk->ct, wk->st);
   }
 }
 
@@ -132,35 +160,68 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
   const int K = 2 * M - 1;
   rs_status st = ensure_capacity(out, K);
   if (st) return st;
-  double *mem = calloc((size_t)K * (5 + 2 * NK), sizeof(double));
-  if (!mem) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
-  double *t = mem, *closed[NK], *prev[NK];
-  work wk = {K, t, mem + K, mem + 2 * K, mem + 3 * K, mem + 4 * K, {0}};
+  /* Parity: pu, pe are even and qu, qe odd in the offset, so an offset u = d + shift/dx
+   * (in cells) whose mirror -u is also in the set is computed once. With 2 shift/dx an
+   * integer s2 the mirror of index k is 2(M-1) - s2 - k. */
+  double s2r = 2 * shift / dx;
+  long s2 = lround(s2r);
+  int mirror = fabs(s2r - (double)s2) <= 1e-12 * fmax(1.0, fabs(s2r)) && labs(s2) < 2L * K;
+  const int Kp = (K + 3) & ~3; /* work arrays padded (see work.K) */
+  double *mem = calloc((size_t)Kp * (6 + 2 * NK), sizeof(double));
+  int *src = malloc((size_t)K * sizeof *src); /* src[k] >= 0: compact index; else -(1 + mirror) */
+  if (!mem || !src) {
+    free(mem);
+    free(src);
+    return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
+  }
+  double *t = mem, *tall = mem + 5 * Kp, *closed[NK], *prev[NK];
+  int nk = 0;
+  for (int k = 0; k < K; ++k) {
+    tall[k] = remainder(((double)(k - (M - 1)) * dx + shift) / cyl->R, 2 * RS_PI);
+    long km = mirror ? 2L * (M - 1) - s2 - k : -1;
+    double u = (double)(k - (M - 1)) + s2r / 2;
+    if (km >= 0 && km < K && km != k && u < 0) {
+      src[k] = -1 - (int)km;
+    } else {
+      src[k] = nk;
+      t[nk++] = tall[k];
+    }
+  }
+  const int nkp = (nk + 3) & ~3; /* padding offsets t = 0, never read back */
+  work wk = {nkp, t, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}};
   for (int j = 0; j < NK; ++j) {
-    wk.acc[j] = mem + (5 + j) * K;
-    closed[j] = mem + (5 + NK + j) * K;
+    wk.acc[j] = mem + (size_t)(6 + j) * Kp;
+    closed[j] = mem + (size_t)(6 + NK + j) * Kp;
+  }
+  for (int i = nk; i < nkp; ++i) {
+    wk.ct[i] = 1.0;
+    wk.st[i] = 0.0;
   }
   for (int j = 0; j < NK; ++j) prev[j] = NULL;
   double *prevmem = NULL;
 
   double e[NK][3];
   multiplier_expansion(cyl, e);
-  for (int k = 0; k < K; ++k) {
-    t[k] = remainder(((double)(k - (M - 1)) * dx + shift) / cyl->R, 2 * RS_PI);
-    wk.ct[k] = cos(t[k]);
-    wk.st[k] = sin(t[k]);
-    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(t[k]) - w) < 1e-10 * w) {
+  const unsigned cmask = (what & (RS_KERNEL_PU | RS_KERNEL_PE) ? 1u : 0u) |
+                         (what & (RS_KERNEL_QU | RS_KERNEL_QE) ? 2u : 0u);
+  for (int i = 0; i < nk; ++i) {
+    wk.ct[i] = cos(t[i]);
+    wk.st[i] = sin(t[i]);
+    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(t[i]) - w) < 1e-10 * w) {
+      int k = 0;
+      while (src[k] != i) ++k;
       free(mem);
+      free(src);
       return RS_ERROR(RS_ERR_INPUT, "shear-to-strain kernel of a box is log-singular at its "
                       "edge (offset %d dx %+g m)", k - (M - 1), shift);
     }
     if (o.accelerate) {
       double S[6];
-      rs_cyl_closed_sums(basis, w, t[k], S);
-      closed[KPU][k] = e[KPU][1] * S[1] + e[KPU][2] * S[2];
-      closed[KPE][k] = e[KPE][0] * S[0] + e[KPE][1] * S[1] + e[KPE][2] * S[2];
-      closed[KQU][k] = e[KQU][1] * S[4] + e[KQU][2] * S[5];
-      closed[KQE][k] = e[KQE][0] * S[3] + e[KQE][1] * S[4] + e[KQE][2] * S[5];
+      rs_cyl_closed_sums_part(basis, w, t[i], cmask, S);
+      closed[KPU][i] = e[KPU][1] * S[1] + e[KPU][2] * S[2];
+      closed[KPE][i] = e[KPE][0] * S[0] + e[KPE][1] * S[1] + e[KPE][2] * S[2];
+      closed[KQU][i] = e[KQU][1] * S[4] + e[KQU][2] * S[5];
+      closed[KQE][i] = e[KQE][0] * S[3] + e[KQE][1] * S[4] + e[KQE][2] * S[5];
     }
   }
 
@@ -168,9 +229,9 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
   st = rs_cyl_cache_reserve(cyl, 0);
   if (st) goto done;
   double a0 = rs_cyl_basis_coef(basis, w, 0), F0 = cyl->cache[0].F[0][0];
-  for (int k = 0; k < K; ++k) {
-    closed[KPU][k] += a0 * F0;
-    closed[KPE][k] -= a0 * F0;
+  for (int i = 0; i < nk; ++i) {
+    closed[KPU][i] += a0 * F0;
+    closed[KPE][i] -= a0 * F0;
   }
 
   long N = o.terms > 0 ? o.terms : 64, done_to = 0;
@@ -178,7 +239,7 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
   for (;;) {
     st = rs_cyl_cache_reserve(cyl, N);
     if (st) goto done;
-    add_modes(cyl, basis, w, o.accelerate, e, done_to + 1, N, &wk);
+    add_modes(cyl, basis, w, o.accelerate, e, what, done_to + 1, N, &wk);
     done_to = N;
     if (o.terms > 0) break;
     /* doubling: converged when the last doubling moved each kernel < tol/4 of its max */
@@ -187,10 +248,10 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
       for (int j = 0; j < NK && ok; ++j) {
         if (!(what & bit[j])) continue;
         double mx = 0, dmax = 0;
-        for (int k = 0; k < K; ++k) {
-          double v = closed[j][k] + wk.acc[j][k];
+        for (int i = 0; i < nk; ++i) {
+          double v = closed[j][i] + wk.acc[j][i];
           mx = fmax(mx, fabs(v));
-          dmax = fmax(dmax, fabs(v - prev[j][k]));
+          dmax = fmax(dmax, fabs(v - prev[j][i]));
         }
         if (!(dmax <= 0.25 * o.tol * mx)) ok = 0;
       }
@@ -204,7 +265,7 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
       for (int j = 0; j < NK; ++j) prev[j] = prevmem + (size_t)j * K;
     }
     for (int j = 0; j < NK; ++j)
-      for (int k = 0; k < K; ++k) prev[j][k] = closed[j][k] + wk.acc[j][k];
+      for (int i = 0; i < nk; ++i) prev[j][i] = closed[j][i] + wk.acc[j][i];
     if (2 * N > o.max_terms) {
       st = RS_ERROR(RS_ERR_SOLVER, "kernel series not converged to %g with %ld terms "
                     "(max_terms %ld)", o.tol, N, o.max_terms);
@@ -215,10 +276,13 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
 
   double fu = cyl->R / cyl->A_ref, fe = 1.0 / cyl->A_ref;
   double *dst[NK] = {out->pu, out->pe, out->qu, out->qe};
-  double fac[NK] = {fu, fe, fu, fe};
+  double fac[NK] = {fu, fe, fu, fe}, par[NK] = {1, 1, -1, -1};
   for (int j = 0; j < NK; ++j) {
     if (!(what & bit[j])) continue;
-    for (int k = 0; k < K; ++k) dst[j][k] = fac[j] * (closed[j][k] + wk.acc[j][k]);
+    for (int k = 0; k < K; ++k)
+      if (src[k] >= 0) dst[j][k] = fac[j] * (closed[j][src[k]] + wk.acc[j][src[k]]);
+    for (int k = 0; k < K; ++k)
+      if (src[k] < 0) dst[j][k] = par[j] * dst[j][-1 - src[k]];
   }
   out->M = M;
   out->basis = basis;
@@ -228,5 +292,6 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
 done:
   free(prevmem);
   free(mem);
+  free(src);
   return st;
 }

@@ -55,24 +55,41 @@ static double zeta2k(int k)
   return 1 + pow(4.0, -k) + pow(9.0, -k);
 }
 
-/* The three smooth remainders at u (|u| <= 5 pi/4). */
-static void smooth_parts(double u, double *g, double *c, double *G)
+/* zeta(2k)/k and zeta(2k)/(k (2k+1)), k = 1..KMAX, filled once (thread-safe: every
+ * thread writes the same values; the flag is set last). */
+enum { KMAX = 200 };
+static double coef_g[KMAX + 1], coef_G[KMAX + 1];
+static volatile int coef_ready = 0;
+
+static void coef_init(void)
+{
+  if (coef_ready) return;
+  for (int k = 1; k <= KMAX; ++k) {
+    coef_g[k] = zeta2k(k) / k;
+    coef_G[k] = coef_g[k] / (2 * k + 1);
+  }
+  coef_ready = 1;
+}
+
+/* The smooth remainders at u (|u| <= 5 pi/4): g for the cos sums (mask 1), c and G for
+ * the sin sums (mask 2). */
+static void smooth_parts(double u, unsigned mask, double *g, double *c, double *G)
 {
   double x = 0.5 * u, y2 = (x / RS_PI) * (x / RS_PI);
   double sg = 0, sc = 0, sG = 0, pw = 1;
-  for (int k = 1; k <= 200; ++k) {
-    double z = zeta2k(k);
-    double tc = z * pw;         /* zeta(2k) y2^(k-1) */
+  for (int k = 1; k <= KMAX; ++k) {
+    double tc = zeta2k(k) * pw; /* zeta(2k) y2^(k-1) */
     pw *= y2;
-    double tg = z * pw / k;     /* zeta(2k) y2^k / k */
     sc += tc;
-    sg += tg;
-    sG += tg / (2 * k + 1);
+    sg += coef_g[k] * pw; /* zeta(2k) y2^k / k */
+    sG += coef_G[k] * pw;
     if (tc < 1e-18 * sc) break;
   }
-  *g = -sg;
-  *c = -x / (RS_PI * RS_PI) * sc;
-  *G = -2 * x * sG;
+  if (mask & 1) *g = -sg;
+  if (mask & 2) {
+    *c = -x / (RS_PI * RS_PI) * sc;
+    *G = -2 * x * sG;
+  }
 }
 
 static const double gl_x[8] = {-0.96028985649753623168, -0.79666647741362673959,
@@ -84,33 +101,35 @@ static const double gl_w[8] = {0.10122853629037625915, 0.22238103445337447054,
                                0.36268378337836198297, 0.31370664587788728734,
                                0.22238103445337447054, 0.10122853629037625915};
 
-static double xlogx(double u, int p) /* u^p ln|u|, 0 at u = 0 */
-{
-  return u == 0 ? 0 : pow(u, p) * log(fabs(u));
-}
-
-/* Antiderivatives P0 = int K, P1 = int u K for the elementary kernels. */
+/* Antiderivatives P0 = int K, P1 = int u K for the elementary kernels; mask 1: the kernels
+ * of the cos sums (ln|u|, 1, |u|, u^2), mask 2: those of the sin sums (1/u, sgn u, u,
+ * u ln|u|). u^p ln|u| is 0 at u = 0. */
 enum { K_INV, K_LOG, K_ULOG, K_ABS, K_SGN, K_ONE, K_U, K_U2, K_COUNT };
 
-static void antider(double u, double P0[K_COUNT], double P1[K_COUNT])
+static void antider(double u, unsigned mask, double P0[K_COUNT], double P1[K_COUNT])
 {
-  double au = fabs(u), u2 = u * u;
-  P0[K_INV] = u == 0 ? 0 : log(au); /* finite part; jumps are checked by the caller */
-  P1[K_INV] = u;
-  P0[K_LOG] = xlogx(u, 1) - u;
-  P1[K_LOG] = 0.5 * xlogx(u, 2) - 0.25 * u2;
-  P0[K_ULOG] = P1[K_LOG];
-  P1[K_ULOG] = xlogx(u, 3) / 3 - u2 * u / 9;
-  P0[K_ABS] = 0.5 * u * au;
-  P1[K_ABS] = au * au * au / 3;
-  P0[K_SGN] = au;
-  P1[K_SGN] = 0.5 * u * au;
-  P0[K_ONE] = u;
-  P1[K_ONE] = 0.5 * u2;
-  P0[K_U] = 0.5 * u2;
-  P1[K_U] = u2 * u / 3;
-  P0[K_U2] = u2 * u / 3;
-  P1[K_U2] = 0.25 * u2 * u2;
+  double au = fabs(u), u2 = u * u, lg = u == 0 ? 0 : log(au);
+  double ul = u * lg, u2l = u2 * lg, u3l = u2 * ul; /* u^p ln|u| */
+  if (mask & 1) {
+    P0[K_LOG] = ul - u;
+    P1[K_LOG] = 0.5 * u2l - 0.25 * u2;
+    P0[K_ABS] = 0.5 * u * au;
+    P1[K_ABS] = au * au * au / 3;
+    P0[K_ONE] = u;
+    P1[K_ONE] = 0.5 * u2;
+    P0[K_U2] = u2 * u / 3;
+    P1[K_U2] = 0.25 * u2 * u2;
+  }
+  if (mask & 2) {
+    P0[K_INV] = lg; /* finite part; jumps are checked by the caller */
+    P1[K_INV] = u;
+    P0[K_ULOG] = 0.5 * u2l - 0.25 * u2;
+    P1[K_ULOG] = u3l / 3 - u2 * u / 9;
+    P0[K_SGN] = au;
+    P1[K_SGN] = 0.5 * u * au;
+    P0[K_U] = 0.5 * u2;
+    P1[K_U] = u2 * u / 3;
+  }
 }
 
 typedef struct pieces {
@@ -147,8 +166,9 @@ double rs_cyl_basis_coef(rs_basis basis, double w, long n)
   return 2.0 / (RS_PI * (double)n) * sin((double)n * w);
 }
 
-int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6])
+int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, double out[6])
 {
+  coef_init();
   t = remainder(t, 2 * RS_PI);
   pieces P = make_pieces(basis, w);
   double snap = 1e-10 * w;
@@ -161,9 +181,17 @@ int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6])
     if (fabs(ulo) < snap) ulo = 0;
     double A = P.v[k] + P.s[k] * (t - P.b[k]);
     double P0h[K_COUNT], P1h[K_COUNT], P0l[K_COUNT], P1l[K_COUNT];
-    antider(uhi, P0h, P1h);
-    antider(ulo, P0l, P1l);
-    for (int j = 0; j < K_COUNT; ++j) I[j] += A * (P0h[j] - P0l[j]) - P.s[k] * (P1h[j] - P1l[j]);
+    antider(uhi, mask, P0h, P1h);
+    antider(ulo, mask, P0l, P1l);
+    static const int jc[4] = {K_LOG, K_ABS, K_ONE, K_U2}, js[4] = {K_INV, K_ULOG, K_SGN, K_U};
+    for (int f = 0; f < 2; ++f) {
+      if (!(mask & (1u << f))) continue;
+      const int *js_ = f ? js : jc;
+      for (int i = 0; i < 4; ++i) {
+        int j = js_[i];
+        I[j] += A * (P0h[j] - P0l[j]) - P.s[k] * (P1h[j] - P1l[j]);
+      }
+    }
     /* f at u = 0 from this piece, with the sign of its ln|u| term */
     if (uhi == 0) jumpsum += A;
     if (ulo == 0) jumpsum -= A;
@@ -171,33 +199,41 @@ int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6])
     double h = 0.5 * (P.b[k + 1] - P.b[k]), m = 0.5 * (P.b[k + 1] + P.b[k]);
     for (int q = 0; q < 8; ++q) {
       double tp = m + h * gl_x[q];
-      double f = P.v[k] + P.s[k] * (tp - P.b[k]);
-      double g, c, G;
-      smooth_parts(t - tp, &g, &c, &G);
-      gsm[0] += h * gl_w[q] * f * g;
-      gsm[1] += h * gl_w[q] * f * c;
-      gsm[2] += h * gl_w[q] * f * G;
+      double f = (P.v[k] + P.s[k] * (tp - P.b[k])) * h * gl_w[q];
+      double g = 0, c = 0, G = 0;
+      smooth_parts(t - tp, mask, &g, &c, &G);
+      gsm[0] += f * g;
+      gsm[1] += f * c;
+      gsm[2] += f * G;
     }
   }
-  /* f(t) (mean of the one-sided limits on a jump) and a_0 */
-  double ft;
-  if (basis == RS_BASIS_HAT) {
-    ft = fmax(0.0, 1 - fabs(t) / w);
-  } else {
-    double e = fabs(t) - w;
-    ft = fabs(e) < snap ? 0.5 : (e < 0 ? 1.0 : 0.0);
-  }
-  double a0 = rs_cyl_basis_coef(basis, w, 0);
   double ip = 1 / RS_PI;
-  out[0] = ft - a0;
-  out[1] = ip * (-I[K_LOG] - gsm[0]);
-  out[2] = ip * (RS_PI * RS_PI / 6 * I[K_ONE] - 0.5 * RS_PI * I[K_ABS] + 0.25 * I[K_U2]);
-  out[3] = ip * (I[K_INV] + gsm[1]);
-  out[4] = ip * (0.5 * RS_PI * I[K_SGN] - 0.5 * I[K_U]);
-  out[5] = ip * (I[K_U] - I[K_ULOG] - gsm[2]);
-  if (fabs(jumpsum) > 1e-12) {
-    out[3] = copysign(INFINITY, -jumpsum);
-    return -1;
+  if (mask & 1) {
+    /* f(t) (mean of the one-sided limits on a jump) and a_0 */
+    double ft;
+    if (basis == RS_BASIS_HAT) {
+      ft = fmax(0.0, 1 - fabs(t) / w);
+    } else {
+      double e = fabs(t) - w;
+      ft = fabs(e) < snap ? 0.5 : (e < 0 ? 1.0 : 0.0);
+    }
+    out[0] = ft - rs_cyl_basis_coef(basis, w, 0);
+    out[1] = ip * (-I[K_LOG] - gsm[0]);
+    out[2] = ip * (RS_PI * RS_PI / 6 * I[K_ONE] - 0.5 * RS_PI * I[K_ABS] + 0.25 * I[K_U2]);
+  }
+  if (mask & 2) {
+    out[3] = ip * (I[K_INV] + gsm[1]);
+    out[4] = ip * (0.5 * RS_PI * I[K_SGN] - 0.5 * I[K_U]);
+    out[5] = ip * (I[K_U] - I[K_ULOG] - gsm[2]);
+    if (fabs(jumpsum) > 1e-12) {
+      out[3] = copysign(INFINITY, -jumpsum);
+      return -1;
+    }
   }
   return 0;
+}
+
+int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6])
+{
+  return rs_cyl_closed_sums_part(basis, w, t, 3u, out);
 }

@@ -47,6 +47,8 @@ rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact
   nc->n = n;
   nc->R[1] = cfg->drum_radius;
   nc->R0[1] = cfg->drum_core_radius;
+  double H[2][2];
+  nc->H11[1] = rs_ortho_halfplane(&cfg->drum, H) ? (rs_error_clear(), 0.0) : H[0][0];
   rs_status st = rs_cylinder_create(&cfg->drum, cfg->drum_radius, cfg->drum_core_radius, &nc->body[1]);
   if (st) {
     free(nc);
@@ -55,14 +57,11 @@ rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact
   nc->state = calloc((size_t)2 * E, 1);
   nc->A = malloc((size_t)n * n * sizeof(double));
   nc->rhs = malloc((size_t)n * sizeof(double));
-  nc->rs = malloc((size_t)n * sizeof(double));
-  nc->cs = malloc((size_t)n * sizeof(double));
   nc->z = malloc((size_t)n * sizeof(double));
-  nc->ipiv = malloc((size_t)n * sizeof(lapack_int));
   nc->visited = malloc((size_t)nc->cfg.max_iterations * 2 * E);
   nc->eps_sheet = malloc((size_t)4 * E * sizeof(double));
-  if (!nc->state || !nc->A || !nc->rhs || !nc->rs || !nc->cs || !nc->z || !nc->ipiv ||
-      !nc->visited || !nc->eps_sheet) {
+  if (!nc->state || !nc->A || !nc->rhs || !nc->z || !nc->visited || !nc->eps_sheet ||
+      rs_nipc_lin_alloc(nc)) {
     rs_nip_contact_destroy(&nc);
     return RS_ERROR(RS_ERR_MEMORY, "nip contact work space (M = %d)", M);
   }
@@ -84,10 +83,8 @@ void rs_nip_contact_destroy(rs_nip_contact **pnc)
   free(nc->state);
   free(nc->A);
   free(nc->rhs);
-  free(nc->rs);
-  free(nc->cs);
   free(nc->z);
-  free(nc->ipiv);
+  rs_nipc_lin_free(nc);
   free(nc->visited);
   free(nc->eps_sheet);
   free(nc);
@@ -102,8 +99,19 @@ rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, doub
   rs_cylinder *c = NULL;
   rs_status st = rs_cylinder_create(roll, R, R0, &c);
   if (st) return rs_error_wrap("roll (radius %g m, core %g m)", R, R0);
+  double C0[2][2];
+  st = rs_cylinder_mode_compliance(c, 0, C0);
+  if (st) {
+    rs_cylinder_destroy(&c);
+    return rs_error_wrap("roll (radius %g m, core %g m)", R, R0);
+  }
   rs_cylinder_destroy(&nc->body[0]);
   nc->body[0] = c;
+  /* the n = 0 part of the nip pressure, P / (2 pi R), shrinks the roll's circumference:
+   * mean surface strain -C0_11 P / (2 pi R^2) (the wound-on condition uses it) */
+  nc->roll_mean_strain = -C0[0][0] / (2 * 3.14159265358979323846 * R * R);
+  double H[2][2];
+  nc->H11[0] = rs_ortho_halfplane(roll, H) ? (rs_error_clear(), 0.0) : H[0][0];
   nc->roll_c = *roll;
   nc->R[0] = R;
   nc->R0[0] = R0;
@@ -112,12 +120,25 @@ rs_status rs_nip_contact_set_roll(rs_nip_contact *nc, const rs_ortho *roll, doub
   return RS_OK;
 }
 
+rs_status rs_nip_contact_set_friction(rs_nip_contact *nc, double mu_roll, double mu_drum)
+{
+  if (!nc) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  if (!finite_nonneg(mu_roll))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.roll must be >= 0 (got %g)", mu_roll);
+  if (!finite_nonneg(mu_drum))
+    return RS_ERROR(RS_ERR_INPUT, "nip.friction.drum must be >= 0 (got %g)", mu_drum);
+  nc->cfg.mu_roll = mu_roll;
+  nc->cfg.mu_drum = mu_drum;
+  return RS_OK;
+}
+
 void rs_nip_contact_forget(rs_nip_contact *nc)
 {
   if (!nc) return;
   nc->have_warm = 0;
-  nc->warm_a = 0;
-  nc->k_a = 0; /* also drop the kernels: a cold solve recomputes everything */
+  nc->hist_n = 0;
+  nc->k_a = 0; /* also drop the kernels and the factorization: a cold solve recomputes */
+  nc->lin.valid = 0;
 }
 
 /* Kernels of eq. (19) for both bodies at half-width a (see contact_internal.h). The

@@ -12,12 +12,29 @@
  * evaluated at the node (HAT, shift -dx/2). */
 enum { KP, KQU, KQE, NKER };
 
+/* contact_linear.c: the kept factorization and the GMRES work space */
+typedef struct rs_nipc_lin {
+  double *LU;             /* n x n, equilibrated and factored (dgetrf) */
+  lapack_int *ipiv;
+  double *rs, *cs;        /* total row / column scales: A_eq = diag(rs) A diag(cs) */
+  signed char *state;     /* the stick/slip rows it was made with */
+  double anorm, rcond;    /* 1-norm of A_eq; dgecon estimate (< 0: not yet) */
+  double a;               /* half-width it was made at */
+  int valid;
+  int solved_state_differs; /* the last solve had other stick/slip rows than the LU */
+  int fresh;              /* the last solve factored the matrix it solved */
+  double *V, *H, *work;   /* GMRES basis, Hessenberg matrix, vectors */
+  lapack_int *iwork;
+} rs_nipc_lin;
+
 struct rs_nip_contact {
   rs_nip_contact_config cfg;
   int M, n;                  /* nodes, unknowns (3M) */
   rs_cylinder *body[2];      /* 0 = roll (upper), 1 = drum (lower) */
   rs_ortho roll_c;
   double R[2], R0[2];
+  double roll_mean_strain;   /* mean circumferential strain of the roll surface per unit nip
+                                load, -C0_11 / (2 pi R^2) (m/N), C0 the n = 0 compliance */
   int have_roll;
   long roll_version;         /* bumped when the roll changes */
   /* kernels of the current half-width */
@@ -28,10 +45,18 @@ struct rs_nip_contact {
    * the sign of the friction traction on the cylinder */
   signed char *state;        /* 2 (M-1) */
   int have_warm;             /* state holds a converged set */
-  double warm_a, warm_P, warm_Rs, warm_slope;
-  /* linear algebra work space (column-major) */
-  double *A, *rhs, *rs, *cs, *z;
-  lapack_int *ipiv;
+  double warm_slope;         /* d ln P / d ln a of the last load search */
+  /* the last converged load searches, newest first: R*, P, E*, a (the half-width
+   * predictor, contact_load.c) */
+  int hist_n;
+  double hist_Rs[3], hist_P[3], hist_Es[3], hist_a[3];
+  double last_a;             /* the half-width returned last (its kernels are cached) */
+  double H11[2];             /* half-plane compliance H11 of roll and drum: E* = 2/(H1 + H2) */
+  /* linear algebra: the assembled system (column-major, unscaled) and its solver */
+  double *A, *rhs, *z;
+  rs_nipc_lin lin;
+  long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
+  long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
   signed char *visited;      /* max_iterations states of 2(M-1) */
   double *eps_sheet, *eps_body[2], *pbar; /* M-1 each: at the upstream node of element e
                                              (pbar: element mean pressure) */
@@ -46,6 +71,23 @@ rs_status rs_nipc_kernels(rs_nip_contact *nc, double a);
 
 /* contact_solve.c: the stick/slip iteration at a fixed half-width; fills out. */
 rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
+
+/* contact_solve.c: physical scales of the unknowns (col) and rows (row) at half-width a. */
+void rs_nipc_scales(const rs_nip_contact *nc, double a, double *col, double *row);
+
+/* contact_linear.c: see there. */
+rs_status rs_nipc_lin_alloc(rs_nip_contact *nc);
+void rs_nipc_lin_free(rs_nip_contact *nc);
+rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
+rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
+rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
+
+/* contact_solve.c: assembles A z = rhs for the active set in nc->state. */
+void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);
+
+/* contact_lcp.c: the stick/slip LCP at half-width a by Lemke's method; the active set of
+ * its solution in state_out (2 (M-1)), or RS_ERR_SOLVER (ray or pivot cap). */
+rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *state_out, int *pivots);
 
 /* contact_solve.c: allocates the solution arrays for M nodes. */
 rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M);

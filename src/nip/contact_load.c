@@ -23,17 +23,85 @@ rs_status rs_nip_contact_solve_width(rs_nip_contact *nc, double a, double Ti, rs
   return RS_OK;
 }
 
-/* Hertz half-width a^2 = 4 P R* / (pi E*) with 1/E* = (H1_11 + H2_11)/2 of the half-planes
- * (Johnson 1985, eq. 4.45); the sheet is left out (it is only a starting guess). */
-static double hertz_guess(const rs_nip_contact *nc, double P)
+/* Hertz half-width a^2 = 4 P R* / (pi E*), 1/E* = (H1_11 + H2_11)/2 of the half-planes
+ * (Johnson 1985, eq. 4.45); the sheet is left out. */
+static double estar(const rs_nip_contact *nc)
 {
-  double H1[2][2], H2[2][2];
-  if (rs_ortho_halfplane(&nc->roll_c, H1) || rs_ortho_halfplane(&nc->cfg.drum, H2)) {
-    rs_error_clear();
-    return 1e-3 * fmin(nc->R[0], nc->R[1]);
+  return nc->H11[0] > 0 && nc->H11[1] > 0 ? 2.0 / (nc->H11[0] + nc->H11[1]) : 0.0;
+}
+
+static double hertz(double P, double Rs, double Es)
+{
+  return sqrt(4 * P * Rs / (3.14159265358979323846 * Es));
+}
+
+/* Cold start: the cylinders (Hertz, P_H = pi a^2 E* / (4 R*)) in series with the sheet's
+ * through-thickness compliance C = 2h c22 as a Winkler layer (rigid cylinders: p = (a^2 -
+ * x^2) / (2 R* C), P_W = 2 a^3 / (3 R* C)): 1/P = 1/P_H(a) + 1/P_W(a), solved for a by
+ * Newton on ln a. A guess only (the layer and the cylinders do not share the same a); it
+ * matters when the sheet is the softer part (stiff cylinders), where Hertz alone is far
+ * too narrow and may not even carry the drum's traction. */
+static double cold_guess(const rs_nip_contact *nc, double P, double Rs, double Es)
+{
+  double aH = hertz(P, Rs, Es), C = 2 * nc->cfg.sheet.h * nc->cfg.sheet.c22;
+  if (!(C > 0)) return aH;
+  double aW = cbrt(1.5 * P * Rs * C), x = log(fmax(aH, aW));
+  for (int it = 0; it < 30; ++it) {
+    double a = exp(x), PH = 3.14159265358979323846 * a * a * Es / (4 * Rs);
+    double PW = 2 * a * a * a / (3 * Rs * C);
+    double g = 1 / PH + 1 / PW - 1 / P, dg = -2 / PH - 3 / PW; /* d/d ln a */
+    double step = -g / dg;
+    x += fmax(fmin(step, 0.7), -0.7);
+    if (fabs(step) < 1e-12) break;
   }
-  double Estar = 2.0 / (H1[0][0] + H2[0][0]);
-  return sqrt(4 * P * rs_nipc_rstar(nc) / (3.14159265358979323846 * Estar));
+  return exp(x);
+}
+
+/* First half-width to try. Cold: cold_guess. Warm: the ratio phi = a / a_Hertz of the last
+ * converged searches, extrapolated in R* (polynomial through up to three, Lagrange) and
+ * times the Hertz half-width now; a reel calls with R growing by one caliper per layer,
+ * where phi is smooth, so the prediction usually meets the load to load_rtol at once.
+ * The same nip again (P, R*, E* unchanged) starts exactly at the previous a (its kernels
+ * and factorization are kept). A prediction more than 1 % off the last phi is not trusted. */
+static double predict(const rs_nip_contact *nc, double P, double Rs, double Es)
+{
+  if (!(Es > 0)) return 1e-3 * fmin(nc->R[0], nc->R[1]);
+  double aH = hertz(P, Rs, Es);
+  if (nc->hist_n == 0) return cold_guess(nc, P, Rs, Es);
+  if (P == nc->hist_P[0] && Rs == nc->hist_Rs[0] && Es == nc->hist_Es[0]) return nc->last_a;
+  double phi[3], x[3];
+  int m = 0;
+  for (int i = 0; i < nc->hist_n; ++i) {
+    int distinct = 1;
+    for (int j = 0; j < m; ++j) distinct &= fabs(nc->hist_Rs[i] - x[j]) > 1e-12 * Rs;
+    if (!distinct) break;
+    x[m] = nc->hist_Rs[i];
+    phi[m++] = nc->hist_a[i] / hertz(nc->hist_P[i], nc->hist_Rs[i], nc->hist_Es[i]);
+  }
+  double p = 0;
+  for (int i = 0; i < m; ++i) {
+    double l = 1;
+    for (int j = 0; j < m; ++j)
+      if (j != i) l *= (Rs - x[j]) / (x[i] - x[j]);
+    p += l * phi[i];
+  }
+  if (!(fabs(p / phi[0] - 1) <= 0.01)) p = phi[0];
+  return p * aH;
+}
+
+static void remember(rs_nip_contact *nc, double P, double Rs, double Es, double a)
+{
+  for (int i = 2; i > 0; --i) {
+    nc->hist_Rs[i] = nc->hist_Rs[i - 1];
+    nc->hist_P[i] = nc->hist_P[i - 1];
+    nc->hist_Es[i] = nc->hist_Es[i - 1];
+    nc->hist_a[i] = nc->hist_a[i - 1];
+  }
+  nc->hist_Rs[0] = Rs;
+  nc->hist_P[0] = P;
+  nc->hist_Es[0] = Es;
+  nc->hist_a[0] = a;
+  if (nc->hist_n < 3) ++nc->hist_n;
 }
 
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out)
@@ -44,40 +112,49 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
   if (!nc->have_roll) return RS_ERROR(RS_ERR_INPUT, "nip contact: the roll is not set");
   /* The drum's drive carries (1 - share) Ti through friction alone: mu_drum P >= that. */
   double carried = (1.0 - rs_nipc_share(nc)) * Ti;
-  if (carried > 0 && nc->cfg.mu_drum * P < carried)
+  if (carried > 0 && nc->cfg.mu_drum * P <= carried * (1 + 1e-9)) /* at capacity: every drum
+                                                                      element slips, xi2 is free */
     return RS_ERROR(RS_ERR_INPUT, "nip.friction.drum * nip.load = %g * %g = %g N/m is less than "
                     "the tension the drum must carry by friction (%g N/m of the web tension %g N/m): "
                     "no stick/slip state exists; raise nip.load or nip.friction.drum",
                     nc->cfg.mu_drum, P, nc->cfg.mu_drum * P, carried, Ti);
-  const double Rs = rs_nipc_rstar(nc), amax = 0.2 * fmin(nc->R[0], nc->R[1]);
+  const double Rs = rs_nipc_rstar(nc), amax = 0.2 * fmin(nc->R[0], nc->R[1]), Es = estar(nc);
   const double xmax = log(amax), xmin = log(amax * 1e-7), lnP = log(P), tol = nc->cfg.load_rtol;
-  double a0, slope = 2.0;
-  if (nc->warm_a > 0) {
-    double ratio = P / nc->warm_P * Rs / nc->warm_Rs;
-    /* the same nip again: start exactly at the previous a (its kernels are cached) */
-    a0 = fabs(ratio - 1) <= tol ? nc->warm_a : nc->warm_a * sqrt(ratio);
-    if (nc->warm_slope > 0.5 && nc->warm_slope < 4) slope = nc->warm_slope;
-  } else {
-    a0 = hertz_guess(nc, P);
-  }
+  double a0 = predict(nc, P, Rs, Es), slope = 2.0;
+  if (nc->hist_n > 0 && nc->warm_slope > 0.5 && nc->warm_slope < 4) slope = nc->warm_slope;
   if (!(a0 > 0) || !isfinite(a0)) a0 = 1e-3 * amax;
   double x = fmin(fmax(log(a0), xmin), xmax);
   int have_lo = 0, have_hi = 0, evals = 0, solves = 0, stall = 0;
-  double lo = 0, flo = 0, hi = 0, fhi = 0, xprev = 0, fprev = 0, fbest = INFINITY;
+  double lo = 0, hi = 0, xprev = 0, fprev = 0, fbest = INFINITY, flast = 0;
   for (;;) {
     rs_status st = rs_nipc_solve_fixed(nc, exp(x), Ti, out);
     ++evals;
     solves += out->iterations;
-    if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
-    if (!(out->load > 0))
-      return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
-    double f = log(out->load) - lnP;
+    double f;
+    if (st == RS_ERR_SOLVER && carried > 0 && !have_hi) {
+      /* No stick/slip state at this a: if the load it carries (the pressures of the last
+       * linear solve) is too small for the drum's traction, no state can exist there; that
+       * says the half-width is too small, so widen instead of failing. */
+      double Pa = 0, dx = 2 * exp(x) / (nc->M - 1);
+      for (int j = 1; j < nc->M - 1; ++j) Pa += dx * nc->z[j - 1];
+      if (!(Pa > 0 && nc->cfg.mu_drum * Pa < 1.5 * carried))
+        return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
+      rs_error_clear();
+      nc->have_warm = 0;
+      f = fmin(log(Pa) - lnP, -1e-3);
+    } else {
+      if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
+      if (!(out->load > 0))
+        return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
+      f = log(out->load) - lnP;
+    }
+    flast = f;
     if (fabs(f) <= tol) break;
     if (evals >= 80)
       return RS_ERROR(RS_ERR_SOLVER, "load search for nip.load = %g N/m did not converge in %d "
                       "half-widths (last a = %g m, P(a) = %g N/m)", P, evals, exp(x), out->load);
-    if (f < 0) { have_lo = 1; lo = x; flo = f; }
-    else { have_hi = 1; hi = x; fhi = f; }
+    if (f < 0) { have_lo = 1; lo = x; }
+    else { have_hi = 1; hi = x; }
     if (evals > 1 && x != xprev) {
       double s = (f - fprev) / (x - xprev);
       if (s > 0 && isfinite(s)) slope = s;
@@ -90,19 +167,22 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
         xn = 0.5 * (lo + hi);
         stall = 0;
       }
-      (void)flo;
-      (void)fhi;
-    } else if (!have_hi) { /* P too small so far: widen (at most doubling a) */
-      if (x >= xmax)
-        return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m needs a contact half-width beyond "
-                        "0.2 min(R1, R2) = %g m (P there is %g N/m): no half-width carries it",
-                        P, amax, out->load);
-      xn = fmin(fmin(fmax(xn, x + 1e-3), x + log(2.0)), xmax);
-    } else { /* P too large so far: narrow */
-      if (x <= xmin)
-        return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m is too small: P(a = %g m) = %g N/m",
-                        P, exp(xmin), out->load);
-      xn = fmax(fmax(fmin(xn, x - 1e-3), x - log(2.0)), xmin);
+    } else {
+      /* not bracketed yet: the secant step, doubled for each step that did not halve |f|
+       * (a poor slope), at most a factor 2 in a */
+      xn = x - ldexp(f / slope, stall < 8 ? stall : 8);
+      if (!have_hi) { /* P too small so far: widen */
+        if (x >= xmax)
+          return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m needs a contact half-width beyond "
+                          "0.2 min(R1, R2) = %g m (P there is %g N/m): no half-width carries it",
+                          P, amax, out->load);
+        xn = fmin(fmin(xn, x + log(2.0)), xmax);
+      } else { /* P too large so far: narrow */
+        if (x <= xmin)
+          return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m is too small: P(a = %g m) = %g N/m",
+                          P, exp(xmin), out->load);
+        xn = fmax(fmax(xn, x - log(2.0)), xmin);
+      }
     }
     xprev = x;
     fprev = f;
@@ -111,9 +191,10 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
   out->width_iterations = evals;
   out->total_solves = solves;
   out->E_r = 0;
-  nc->warm_a = out->a;
-  nc->warm_P = out->load;
-  nc->warm_Rs = Rs;
+  /* remember the half-width that carries P exactly, to first order: the predictor
+   * extrapolates these, and the raw ones carry a noise of load_rtol / slope */
+  remember(nc, P, Rs, Es, out->a * exp(-flast / slope));
+  nc->last_a = out->a;
   nc->warm_slope = slope;
   return RS_OK;
 }

@@ -169,9 +169,15 @@ rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *s, 
                     s->roll_radius, s->core_radius);
   if (!(isfinite(s->nip_load) && s->nip_load > 0))
     return RS_ERROR(RS_ERR_INPUT, "nip.load must be > 0 (got %g N/m)", s->nip_load);
-  /* the cylinder solution is tested for R0/R <= 0.99: a roll thinner than 1 % of its radius
-   * (the first layers) is modelled with that 1 % (docs/nip.md) */
-  double R = s->roll_radius, R0 = fmin(s->core_radius, 0.99 * R);
+  /* The cylinder solution is tested for R0/R <= 0.99, so a roll thinner than 1 % of its
+   * radius (the first layers, the bare core) is modelled as one of thickness
+   * sqrt(t^2 + t_min^2), t = R - core, t_min = 0.01 R: never below t_min, the true
+   * thickness within 0.5 % from t = 10 t_min on, and smooth in R. (A hard min(core, 0.99 R)
+   * put a kink into T0(R) where it switched: with partial stick T0 depends on the roll's
+   * stiffness, which changes fast with the thickness of a thin roll, ~56 N/m per mm at
+   * 0.8 mm for the newsprint scene.) docs/nip.md. */
+  double R = s->roll_radius, t = R - s->core_radius, tmin = 0.01 * R;
+  double R0 = R - sqrt(t * t + tmin * tmin);
   double Rs = 1.0 / (1.0 / R + 1.0 / nc->R[1]);
   double ps = s->surface_pressure > 0 ? s->surface_pressure : 0.0, E_r = 0;
   rs_status st = nip_radial_modulus(nc, s->nip_load, Rs, ps, &E_r);

@@ -11,6 +11,7 @@
 #include "nip/contact_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,7 +57,7 @@ rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M)
 #define ROW_STICK(k, e) (M + (k) * (M - 1) + (e))
 
 /* Assembles A z = rhs (column-major) for the current active set. */
-static void assemble(rs_nip_contact *nc, double a, double Ti)
+void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
 {
   const int M = nc->M, n = nc->n, E = M - 1;
   const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
@@ -87,7 +88,13 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
   }
   /* contact k, element e: stick (13)/(14), imposed at the element's upstream node x_e
    * (staggered by half a cell from the shear, Kalker-style upwind; docs/nip.md):
-   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,  xi_1 = 0 (wound-on, (22)),
+   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,
+   * xi_2 an unknown, xi_1 from the wound-on condition (22): the wound sheet (tension T0,
+   * strain c11 T0/(2h) from its unstressed state) moves with the roll surface, whose
+   * circumference the nip shrinks by the mean strain eps1_mean = m P (mass balance over a
+   * revolution), so xi_1 = m dx sum p_j - c11 T0/(2h). (xi_1 = 0 would make the sheet on the
+   * roll run c11 T0/(2h) faster than the roll: forward slip everywhere, NIT = mu P even for
+   * rigid cylinders; docs/nip.md, "Wound-on condition".)
    * <N>_e the mean of N over the dual cell [x_e - dx/2, x_e + dx/2] (exact):
    *   N(x_e) + dx/8 (Q_e - Q_{e-1}), Q = q1 + q2;
    * or slip (15): q_k,e = mu_k sigma pbar_e, pbar_e = (p_e + p_{e+1})/2 */
@@ -104,6 +111,10 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
             AT(r, COL_Q(kk, ee)) = f * dx * (ee == e ? 0.125 : ee == e - 1 ? 0.875 : 1.0);
         for (int ee = 0; ee < E; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
         if (k == 1) AT(r, cX) = 1.0;
+        if (k == 0) {
+          AT(r, cT) = -f;
+          for (int j = 1; j < M - 1; ++j) AT(r, COL_P(j)) += nc->roll_mean_strain * dx;
+        }
         b[r] = -f * Ti;
       } else {
         AT(r, COL_Q(k, e)) = 1.0;
@@ -132,7 +143,7 @@ static void assemble(rs_nip_contact *nc, double a, double Ti)
  * delta0 column. Reference values: indentation w_ref = a^2/(2R*), pressure p_ref giving
  * w_ref through the local compliance, strain s_ref = p_ref * the largest local strain
  * compliance, load P_ref = 2 a p_ref. */
-static void scales(const rs_nip_contact *nc, double a, double *col, double *row)
+void rs_nipc_scales(const rs_nip_contact *nc, double a, double *col, double *row)
 {
   const int M = nc->M, n = nc->n, E = M - 1;
   const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
@@ -155,58 +166,6 @@ static void scales(const rs_nip_contact *nc, double a, double *col, double *row)
   row[n - 2] = row[n - 1] = P_ref;
 }
 
-/* Scale physically, equilibrate (dgeequ), factor (dgetrf), estimate the condition number
- * of the scaled matrix (dgecon), solve. The solution lands in nc->z. */
-static rs_status factor_solve(rs_nip_contact *nc, double a, double *cond)
-{
-  const int n = nc->n;
-  lapack_int N = (lapack_int)n, info;
-  double *col = nc->cs, *row = nc->rs;
-  scales(nc, a, col, row);
-  for (int c = 0; c < n; ++c)
-    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= col[c] / row[r];
-  for (int r = 0; r < n; ++r) nc->z[r] = nc->rhs[r] / row[r];
-  double *er = nc->rhs, *ec = malloc((size_t)n * sizeof *ec); /* rhs is consumed above */
-  if (!ec) return RS_ERROR(RS_ERR_MEMORY, "nip work space");
-  double rowcnd, colcnd, amax;
-  info = LAPACKE_dgeequ(LAPACK_COL_MAJOR, N, N, nc->A, N, er, ec, &rowcnd, &colcnd, &amax);
-  if (info != 0) {
-    free(ec);
-    return RS_ERROR(RS_ERR_SOLVER, "nip system has an empty %s %d (dgeequ info %d)",
-                    info <= N ? "row" : "column", (int)(info <= N ? info : info - N), (int)info);
-  }
-  for (int c = 0; c < n; ++c)
-    for (int r = 0; r < n; ++r) nc->A[(size_t)c * n + r] *= er[r] * ec[c];
-  for (int r = 0; r < n; ++r) nc->z[r] *= er[r];
-  double anorm = LAPACKE_dlange(LAPACK_COL_MAJOR, '1', N, N, nc->A, N);
-  info = LAPACKE_dgetrf(LAPACK_COL_MAJOR, N, N, nc->A, N, nc->ipiv);
-  rs_status st = RS_OK;
-  double rcond = 0;
-  if (info > 0) {
-    *cond = INFINITY;
-    st = RS_ERROR(RS_ERR_SOLVER, "nip system is singular (dgetrf: zero pivot %d of %d)", (int)info, n);
-  } else if (info < 0) {
-    st = RS_ERROR(RS_ERR_INTERNAL, "dgetrf argument %d", (int)-info);
-  } else {
-    info = LAPACKE_dgecon(LAPACK_COL_MAJOR, '1', N, nc->A, N, anorm, &rcond);
-    *cond = rcond > 0 ? 1.0 / rcond : INFINITY;
-    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgecon info %d", (int)info);
-    else if (!(rcond > 1e3 * 2.2e-16))
-      st = RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
-  }
-  if (!st) {
-    info = LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'N', N, 1, nc->A, N, nc->ipiv, nc->z, N);
-    if (info != 0) st = RS_ERROR(RS_ERR_INTERNAL, "dgetrs info %d", (int)info);
-  }
-  if (!st)
-    for (int c = 0; c < n; ++c) {
-      nc->z[c] *= ec[c] * col[c];
-      if (!isfinite(nc->z[c])) st = RS_ERROR(RS_ERR_SOLVER, "nip solution is not finite");
-    }
-  free(ec);
-  return st;
-}
-
 /* nodal pressure p_j (Pa) from the solution vector (0 at both ends) */
 static double pnode(const rs_nip_contact *nc, int j)
 {
@@ -214,15 +173,24 @@ static double pnode(const rs_nip_contact *nc, int j)
   return (j <= 0 || j >= M - 1) ? 0.0 : nc->z[COL_P(j)];
 }
 
+/* The wound-on creep xi_1 = eps1_mean - c11 T0/(2h) of the solved state (assemble()). */
+static double xi_upper(const rs_nip_contact *nc, double dx)
+{
+  const int M = nc->M;
+  double P = 0;
+  for (int j = 1; j < M - 1; ++j) P += dx * nc->z[COL_P(j)];
+  return nc->roll_mean_strain * P - nc->cfg.sheet.c11 / (2 * nc->cfg.sheet.h) * nc->z[3 * M - 1];
+}
+
 /* Strains at the upstream nodes x_e of the elements and the slip rates of the solved
  * state (the stick rows of assemble()): pbar_e = (p_e + p_{e+1})/2 is the element mean
- * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k (xi_1 = 0). */
+ * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k. */
 static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
 {
   const int M = nc->M, E = M - 1;
   const double dx = 2 * a / (M - 1);
   const rs_sheet *sh = &nc->cfg.sheet;
-  const double xi[2] = {0.0, nc->z[3 * M - 2]};
+  const double xi[2] = {xi_upper(nc, dx), nc->z[3 * M - 2]};
   double N = Ti, Qprev = 0;
   for (int e = 0; e < E; ++e) {
     double Q = nc->z[COL_Q(0, e)] + nc->z[COL_Q(1, e)];
@@ -275,39 +243,27 @@ static int same_state(const signed char *a, const signed char *b, int n)
 
 /* Steps 2-9 of the seed paper with the normal and tangential problems solved together
  * (the paper alternates them; the coupled solve has the same fixed point and needs no
- * outer loop). Start: full stick, or the previous converged set (warm). Each pass:
+ * outer loop), from the active set in nc->state. Each pass:
  *   stick element with |q| > mu pbar           -> slip, sign of q     (steps 3, 5)
  *   slip element whose slip rate opposes q      -> stick              (step 7)
  * until nothing changes (step 9). Terminates: every visited set is remembered; on a
  * repeat the iteration changes only the worst violation per pass, and a second repeat
- * (or max_iterations) is RS_ERR_SOLVER. */
-rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out)
+ * (or the pass budget) is RS_ERR_SOLVER. On success nc->z and srate hold the state. */
+static rs_status iterate(rs_nip_contact *nc, double a, double Ti, int budget, double *srate_all,
+                         signed char *next, int *passes)
 {
   const int M = nc->M, E = M - 1, S = 2 * E;
   const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
-  const double dx = 2 * a / (M - 1);
-  rs_status st = rs_nipc_kernels(nc, a);
-  if (st) return st;
-  st = rs_nipc_solution_reserve(out, M);
-  if (st) return st;
-  if (!nc->have_warm) memset(nc->state, 0, (size_t)S);
   /* the lower contact needs a stick element to define xi2 */
   int nstick_low = 0;
   for (int e = 0; e < E; ++e) nstick_low += nc->state[E + e] == 0;
   if (!nstick_low) nc->state[E + E / 2] = 0;
-
-  double *srate_all = malloc((size_t)S * sizeof *srate_all);
-  signed char *next = malloc((size_t)S);
-  if (!srate_all || !next) {
-    free(srate_all);
-    free(next);
-    return RS_ERROR(RS_ERR_MEMORY, "nip iteration work space");
-  }
-  int nvis = 0, single = 0, it, changes = 0, converged = 0;
-  double cond = 0, worst = 0;
-  for (it = 1; it <= nc->cfg.max_iterations; ++it) {
-    assemble(nc, a, Ti);
-    st = factor_solve(nc, a, &cond);
+  int nvis = 0, single = 0, it, changes = 0;
+  double worst = 0;
+  rs_status st = RS_OK;
+  for (it = 1; it <= budget; ++it) {
+    rs_nipc_assemble(nc, a, Ti);
+    st = rs_nipc_lin_solve(nc, a);
     if (st) {
       rs_error_wrap("stick/slip pass %d at a = %g m", it, a);
       break;
@@ -354,10 +310,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
           }
         }
       }
-    if (!changes) {
-      converged = 1;
-      break;
-    }
+    if (!changes) break;
     if (single) {
       memcpy(next, nc->state, (size_t)S);
       next[iworst] = sworst;
@@ -385,14 +338,85 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
     if (nvis < nc->cfg.max_iterations) memcpy(nc->visited + (size_t)nvis++ * S, nc->state, (size_t)S);
     memcpy(nc->state, next, (size_t)S);
   }
-  if (!st && !converged)
+  *passes = it > budget ? budget : it;
+  if (!st && it > budget)
     st = RS_ERROR(RS_ERR_SOLVER, "stick/slip iteration did not settle at a = %g m in %d passes "
                   "(last pass changed %d elements, worst violation %.3g relative)",
-                  a, nc->cfg.max_iterations, changes, worst);
+                  a, budget, changes, worst);
+  return st;
+}
+
+/* The stick/slip state at half-width a: the active-set iteration from the warm set (or
+ * full stick); if it fails (cycles, or no state with a stuck rider element), the LCP of
+ * the friction conditions solved by Lemke's method (contact_lcp.c) gives the set to
+ * iterate from again, within the same pass budget (max_iterations). */
+rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out)
+{
+  const int M = nc->M, E = M - 1, S = 2 * E;
+  const double dx = 2 * a / (M - 1);
+  rs_status st = rs_nipc_kernels(nc, a);
+  if (st) return st;
+  st = rs_nipc_solution_reserve(out, M);
+  if (st) return st;
+  if (!nc->have_warm) memset(nc->state, 0, (size_t)S);
+  double *srate_all = malloc((size_t)S * sizeof *srate_all);
+  signed char *next = malloc((size_t)S), *lcp = malloc((size_t)S);
+  if (!srate_all || !next || !lcp) {
+    free(srate_all);
+    free(next);
+    free(lcp);
+    return RS_ERROR(RS_ERR_MEMORY, "nip iteration work space");
+  }
+  int it = 0, it2 = 0, pivots = 0, cold_lcp = 0;
+  double cond = 0;
+  if (!nc->have_warm) {
+    /* cold: the LCP's set is the answer up to round-off (one pass confirms it), where the
+     * active-set iteration from full stick takes tens of passes (33 in bench_nip); if
+     * Lemke fails, the iteration starts from full stick as in the paper */
+    if (!rs_nipc_lcp(nc, a, Ti, lcp, &pivots)) {
+      memcpy(nc->state, lcp, (size_t)S);
+      /* a frictionless contact slips everywhere (q = mu pbar = 0 exactly); "stuck" with a
+       * zero margin is the same state up to round-off */
+      for (int k = 0; k < 2; ++k)
+        if (!(k ? nc->cfg.mu_drum : nc->cfg.mu_roll))
+          for (int e = 0; e < E; ++e) nc->state[k * E + e] = 1;
+      cold_lcp = 1;
+    } else {
+      rs_error_clear();
+      memset(nc->state, 0, (size_t)S);
+    }
+    nc->stats_lcp_pivots += pivots;
+  }
+  st = iterate(nc, a, Ti, nc->cfg.max_iterations, srate_all, next, &it);
+  if (st == RS_ERR_SOLVER && it < nc->cfg.max_iterations && !cold_lcp) {
+    char first[512];
+    snprintf(first, sizeof first, "%s", rs_error_message());
+    rs_status sl = rs_nipc_lcp(nc, a, Ti, lcp, &pivots);
+    nc->stats_lcp_pivots += pivots;
+    if (!sl) {
+      memcpy(nc->state, lcp, (size_t)S);
+      sl = iterate(nc, a, Ti, nc->cfg.max_iterations - it, srate_all, next, &it2);
+    }
+    if (!sl) {
+      rs_error_clear();
+      st = RS_OK;
+      it += it2;
+    } else {
+      char second[512];
+      snprintf(second, sizeof second, "%s", rs_error_message());
+      st = RS_ERROR(RS_ERR_SOLVER, "%s; then from the LCP solution (Lemke, %d pivots): %s", first,
+                    pivots, second);
+    }
+  }
+  if (!st) {
+    st = rs_nipc_lin_cond(nc, a, &cond);
+    if (st) rs_error_wrap("converged stick/slip state at a = %g m", a);
+  }
+  free(next);
+  free(lcp);
   if (st) {
     nc->have_warm = 0;
     free(srate_all);
-    free(next);
     return st;
   }
   /* fill the solution */
@@ -402,10 +426,12 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   out->Ti = Ti;
   out->delta0 = nc->z[3 * M - 4];
   out->eps0 = nc->z[3 * M - 3];
+  out->xi1 = xi_upper(nc, dx);
   out->xi2 = nc->z[3 * M - 2];
   out->T0 = nc->z[3 * M - 1];
   out->condition_number = cond;
   out->iterations = it;
+  out->lcp_pivots = pivots;
   double P = 0, diss = 0;
   for (int i = 0; i < M; ++i) {
     out->x[i] = -a + i * dx;
@@ -426,7 +452,6 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   out->dissipation = diss;
   nc->have_warm = 1;
   free(srate_all);
-  free(next);
   if (!isfinite(P) || !isfinite(out->T0)) return RS_ERROR(RS_ERR_SOLVER, "non-finite nip solution at a = %g m", a);
   return RS_OK;
 }

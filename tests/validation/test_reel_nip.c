@@ -85,10 +85,16 @@ static void friction_curved_adaptive_vs_every(void)
   CHECK(order > 0.4 && order < 0.6);
 }
 
+/* The bound on the solves was 169/4 while the contact nip gave T0 = Ti + mu P (full slip
+ * everywhere, so T0 was linear in the load between the table's kinks). Since the wound-on
+ * fix (docs/nip.md) the nip is in partial slip: T0 is piecewise smooth with a kink wherever
+ * an element switches between stick and slip (coarse with this scene's 24 nodes), and the
+ * policy rewinds there to hold its tolerance: 46 solves (27 %) measured, bound 169/3. The
+ * accuracy checks in compare_policies are unchanged. */
 static void contact_adaptive_vs_every(void)
 {
   long n = compare_policies(RS_TESTS_DIR "/validation/scenes/nip-contact-small.yaml", 1e-3, 2e-3, 1);
-  CHECK_LT(n, 169 / 4);
+  CHECK_LT(n, 169 / 3);
 }
 
 /* every k: solves at layers 0, k, 2k, ...; the record's T0 is the layer's T0 there. */
