@@ -449,8 +449,10 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
   }
   st->n = roll->n;
   st->core_sigma = roll->core_sigma;
-  memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
-  memcpy(st->sigma_theta, roll->sigma_theta, (size_t)roll->n * sizeof(double));
+  if (roll->n > 0) { /* a bare core: the state has no arrays yet, and memcpy(NULL) is UB */
+    memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
+    memcpy(st->sigma_theta, roll->sigma_theta, (size_t)roll->n * sizeof(double));
+  }
   return RS_OK;
 }
 
@@ -461,7 +463,9 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
                     roll->p.max_layers);
   roll->n = st->n;
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
-  memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));
-  memcpy(roll->sigma_theta, st->sigma_theta, (size_t)st->n * sizeof(double));
+  if (st->n > 0) {
+    memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));
+    memcpy(roll->sigma_theta, st->sigma_theta, (size_t)st->n * sizeof(double));
+  }
   return RS_OK;
 }
