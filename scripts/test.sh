@@ -8,14 +8,22 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 echo "== tests (build/) =="
-(cd build && ctest --output-on-failure -j "$(nproc)")
+(cd build && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)
 
 echo "== tests under AddressSanitizer + UBSan (build-asan/) =="
 RS_BUILD_DIR=build-asan RS_BUILD_TYPE=Debug \
   RS_CMAKE_ARGS="-DREELSIM_SANITIZE=ON -DREELSIM_BENCH=OFF" bash scripts/setup.sh
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-(cd build-asan && ctest --output-on-failure -j "$(nproc)")
+(cd build-asan && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)
 
 echo "== fuzzing the scene loader (build-fuzz/) =="
 bash scripts/fuzz.sh "${RS_FUZZ_SECONDS:-60}"
+
+# One closing line for both ctest passes (a failure above has already stopped the script).
+total=0
+for log in build/ctest-summary.log build-asan/ctest-summary.log; do
+  n=$(sed -n 's/.*tests passed, 0 tests failed out of \([0-9]*\).*/\1/p' "$log")
+  total=$((total + ${n:-0}))
+done
+echo "tests: $total passed, 0 failed"
