@@ -33,6 +33,15 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->stage_radius);
   free(res->stage_sigma_r);
   free(res->stage_sigma_theta);
+  free(res->nip_radius);
+  free(res->nip_T0);
+  free(res->nip_Ti);
+  free(res->nip_a);
+  free(res->nip_solve_load);
+  free(res->nip_iterations);
+  for (int i = 0; res->profiles && i < res->n_profiles; ++i) rs_nip_solution_free(&res->profiles[i]);
+  free(res->profiles);
+  free(res->profile_radius);
   free(res);
   *resp = NULL;
 }
