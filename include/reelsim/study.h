@@ -130,6 +130,51 @@ void rs_study_plan_destroy(rs_study_plan **plan); /* accepts NULL and *plan == N
 int rs_study_setting_sets(const rs_study_setting *s, int has_nip, int contact,
                           char sets[RS_STUDY_MAX_SETS][RS_STUDY_SET_LEN]);
 
+/* ---- a finished study ------------------------------------------------------------------ */
+
+typedef struct rs_study_row {
+  double wall_seconds, cpu_seconds;   /* of the winding */
+  long cvode_steps, nip_solves;
+  double core_pressure, peak_pressure; /* Pa */
+  double T0_final;                    /* N/m, wound-on tension of the last layer */
+  double err[RS_N_FIGURES];           /* against the reference (0 for the reference) */
+  double err_front;     /* err[MAX] raised to the reference's uncertainty: what the front uses
+                           (errors below the uncertainty cannot be told apart) */
+  int on_front;         /* on the Pareto front of (wall time, err_front); references excluded */
+  int identical_to_default; /* the same numbers as the default run, bit for bit */
+} rs_study_row;
+
+typedef struct rs_study_knob_order {
+  double order;         /* observed order p in error ~ x^p (x: rtol, m - 1, 1/nodes,
+                           1/terms, T0_rtol, update_every), NAN when not measurable */
+  int points;           /* sweep points the fit used */
+  double floor;         /* errors at or below this were left out (3 x the sweep's least
+                           error or the reference's uncertainty, whichever is larger) */
+} rs_study_knob_order;
+
+typedef struct rs_study_report {
+  const rs_study_plan *plan;
+  int n_layers;
+  rs_study_row *rows;                      /* [plan->n_runs], in plan order */
+  double uncertainty[RS_N_FIGURES];        /* reference2 against the reference */
+  double smallest_error;                   /* least err[MAX] > 0 of the other runs */
+  int smallest_run;                        /* its index, -1 if none */
+  rs_study_knob_order order[RS_N_KNOBS][2]; /* per knob: [0] core pressure, [1] max error */
+  int n_front;
+  int default_on_front;                    /* rs_pareto_within at time_noise, 0 error noise */
+  double time_noise;                       /* relative timing noise allowed (0.1) */
+} rs_study_report;
+
+/* Measures every run against the reference (run 0) and the reference against the second
+ * (run 1); finds the front and the orders. results[i], wall[i], cpu[i] belong to
+ * plan->runs[i]; all must have wound the same reel. results[i] may be NULL for a run that
+ * failed (not the references nor the defaults): its errors are NaN, it is not on the front. rep->rows is allocated (free with
+ * rs_study_report_free). */
+rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *const *results,
+                           const double *wall, const double *cpu, double caliper,
+                           rs_study_report *rep);
+void rs_study_report_free(rs_study_report *rep);
+
 /* ---- convergence order ------------------------------------------------------------------ */
 
 /* Least-squares slope of log(error) against log(x) over the points with error > floor

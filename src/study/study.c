@@ -309,3 +309,133 @@ double rs_study_order(int n, const double *x, const double *error, double floor)
   const double den = k * sxx - sx * sx;
   return den > 0 ? (k * sxy - sx * sy) / den : NAN;
 }
+
+/* ---- a finished study --------------------------------------------------------------------- */
+
+void rs_study_report_free(rs_study_report *rep)
+{
+  if (!rep) return;
+  free(rep->rows);
+  rep->rows = NULL;
+}
+
+/* The x of a knob's level in error ~ x^p (the default run sits at the default level). */
+static double knob_x(rs_study_knob k, const rs_study_setting *s)
+{
+  switch (k) {
+  case RS_KNOB_RTOL: return s->rtol;
+  case RS_KNOB_LAYERS: return s->layers_per_step - 1.0; /* exact at m = 1 */
+  case RS_KNOB_NODES: return s->nodes > 0 ? 1.0 / s->nodes : NAN;
+  case RS_KNOB_TERMS: return s->terms > 0 ? 1.0 / s->terms : NAN;
+  case RS_KNOB_T0_RTOL: return s->update_every == 0 ? s->T0_rtol : NAN;
+  case RS_KNOB_EVERY: return s->update_every > 0 ? s->update_every : NAN;
+  default: return NAN;
+  }
+}
+
+static void knob_orders(const rs_study_plan *plan, rs_study_report *rep)
+{
+  const int n = plan->n_runs;
+  double *x = malloc((size_t)(n + 1) * sizeof *x), *e = malloc((size_t)(n + 1) * sizeof *e);
+  for (int k = 0; k < RS_N_KNOBS; ++k)
+    for (int f = 0; f < 2; ++f) {
+      rs_study_knob_order *o = &rep->order[k][f];
+      o->order = NAN;
+      o->points = 0;
+      o->floor = NAN;
+      if (!x || !e || k == RS_KNOB_REFERENCE || k == RS_KNOB_REFERENCE2 || k == RS_KNOB_DEFAULT ||
+          k == RS_KNOB_HISTORY || k == RS_KNOB_GRID)
+        continue;
+      const rs_study_figure fig = f == 0 ? RS_FIG_CORE : RS_FIG_MAX;
+      int m = 0;
+      for (int i = 0; i < n; ++i) {
+        const rs_study_run *r = &plan->runs[i];
+        if (r->knob != (rs_study_knob)k && r->knob != RS_KNOB_DEFAULT) continue;
+        x[m] = knob_x((rs_study_knob)k, &r->set);
+        e[m] = rep->rows[i].err[fig];
+        if (isfinite(x[m])) ++m;
+      }
+      if (m < 2) continue;
+      double least = INFINITY;
+      for (int i = 0; i < m; ++i) least = fmin(least, e[i]);
+      o->floor = fmax(3.0 * least, 3.0 * rep->uncertainty[fig]);
+      for (int i = 0; i < m; ++i) o->points += e[i] > o->floor && x[i] > 0;
+      double p = rs_study_order(m, x, e, o->floor);
+      /* nodes and terms: x = 1/M, so the slope is the order in M already */
+      o->order = p;
+    }
+  free(x);
+  free(e);
+}
+
+rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *const *results,
+                           const double *wall, const double *cpu, double caliper,
+                           rs_study_report *rep)
+{
+  memset(rep, 0, sizeof *rep);
+  const int n = plan->n_runs;
+  if (n < 3) return RS_ERROR(RS_ERR_INTERNAL, "a study needs its two references and the defaults");
+  rep->plan = plan;
+  rep->time_noise = 0.1;
+  rep->smallest_run = -1;
+  rep->rows = calloc((size_t)n, sizeof *rep->rows);
+  double *t = malloc((size_t)n * sizeof *t), *ef = malloc((size_t)n * sizeof *ef);
+  int *on = malloc((size_t)n * sizeof *on);
+  rs_status st = RS_OK;
+  if (!rep->rows || !t || !ef || !on) {
+    st = RS_ERROR(RS_ERR_MEMORY, "cannot analyse %d study runs", n);
+    goto done;
+  }
+  for (int i = 0; i < 3; ++i)
+    if (!results[i]) {
+      st = RS_ERROR(RS_ERR_INTERNAL, "the study's run '%s' has no result", plan->runs[i].label);
+      goto done;
+    }
+  const rs_reel_result *ref = results[0];
+  rep->n_layers = ref->n_layers;
+  if ((st = rs_study_errors(ref, results[1], caliper, rep->uncertainty))) goto done;
+  const rs_reel_result *def = results[2];
+  for (int i = 0; i < n; ++i) {
+    rs_study_row *row = &rep->rows[i];
+    const rs_reel_result *res = results[i];
+    const int is_ref = plan->runs[i].knob == RS_KNOB_REFERENCE || plan->runs[i].knob == RS_KNOB_REFERENCE2;
+    row->wall_seconds = wall[i];
+    row->cpu_seconds = cpu[i];
+    if (!res) { /* a run that failed: no figures, not on the front */
+      row->core_pressure = row->peak_pressure = row->T0_final = row->err_front = NAN;
+      for (int f = 0; f < RS_N_FIGURES; ++f) row->err[f] = NAN;
+      t[i] = ef[i] = NAN;
+      continue;
+    }
+    rs_reel_summary sum;
+    rs_reel_summarize(res, &sum);
+    row->cvode_steps = res->cvode_steps;
+    row->nip_solves = res->nip_solves;
+    row->core_pressure = sum.core_pressure;
+    row->peak_pressure = sum.peak_pressure;
+    row->T0_final = res->n_layers > 0 ? res->wound_on_tension[res->n_layers - 1] : NAN;
+    if ((st = rs_study_errors(res, ref, caliper, row->err))) {
+      rs_error_wrap("study run '%s'", plan->runs[i].label);
+      goto done;
+    }
+    row->err_front = fmax(row->err[RS_FIG_MAX], rep->uncertainty[RS_FIG_MAX]);
+    row->identical_to_default = rs_study_identical(res, def);
+    t[i] = is_ref ? NAN : wall[i];
+    ef[i] = is_ref ? NAN : row->err_front;
+    if (!is_ref && row->err[RS_FIG_MAX] > 0 &&
+        (rep->smallest_run < 0 || row->err[RS_FIG_MAX] < rep->smallest_error)) {
+      rep->smallest_error = row->err[RS_FIG_MAX];
+      rep->smallest_run = i;
+    }
+  }
+  rep->n_front = rs_pareto_front(n, t, ef, on);
+  for (int i = 0; i < n; ++i) rep->rows[i].on_front = on[i];
+  rep->default_on_front = rs_pareto_within(n, t, ef, on, 2, rep->time_noise, 0.0);
+  knob_orders(plan, rep);
+done:
+  free(t);
+  free(ef);
+  free(on);
+  if (st) rs_study_report_free(rep);
+  return st;
+}
