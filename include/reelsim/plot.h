@@ -35,7 +35,7 @@ rs_status rs_plot_file(const char *file, const char *dir, const rs_plot_options 
 void rs_plot_list_free(char ***list, int n);
 
 /* The accuracy study's picture (reelsim study): the largest relative error of each run
- * against its wall time, log-log, one colour per knob, the Pareto front as a staircase with
+ * against its time (CPU time of its thread), log-log, one colour per knob, the Pareto front as a staircase with
  * its runs named, the shipped defaults and the reference marked, the reference's
  * uncertainty and 0.1 % as dashed lines. Written to `png`, staged. Errors as rs_plot_file. */
 rs_status rs_plot_study(const rs_study_report *rep, const char *title, const char *png,

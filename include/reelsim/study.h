@@ -140,7 +140,9 @@ typedef struct rs_study_row {
   double err[RS_N_FIGURES];           /* against the reference (0 for the reference) */
   double err_front;     /* err[MAX] raised to the reference's uncertainty: what the front uses
                            (errors below the uncertainty cannot be told apart) */
-  int on_front;         /* on the Pareto front of (wall time, err_front); references excluded */
+  int on_front;         /* on the Pareto front of (CPU time, err_front); references excluded.
+                           CPU time of the run's thread, not wall time: on a shared machine
+                           the wall time of a run includes other programs' turns on the core */
   int identical_to_default; /* the same numbers as the default run, bit for bit */
 } rs_study_row;
 

@@ -194,10 +194,10 @@ static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
            rep->uncertainty[RS_FIG_MAX] < rep->smallest_error
                ? "the reference's uncertainty is below it"
                : "NOT above the reference's uncertainty; errors marked '~' are at its noise");
-  printf("defaults: core pressure error %.2e (%s 0.1%%), max %.2e, %.2f s; %s the Pareto front "
-         "(within %.0f%% in time)\n",
+  printf("defaults: core pressure error %.2e (%s 0.1%%), max %.2e, %.2f s CPU; %s the Pareto "
+         "front of CPU time and max error (within %.0f%% in time)\n",
          d->err[RS_FIG_CORE], d->err[RS_FIG_CORE] <= 1e-3 ? "within" : "OVER", d->err[RS_FIG_MAX],
-         d->wall_seconds, rep->default_on_front ? "on" : "NOT on", 100 * rep->time_noise);
+         d->cpu_seconds, rep->default_on_front ? "on" : "NOT on", 100 * rep->time_noise);
   printf("Pareto front (%d runs):", rep->n_front);
   for (int i = 0; i < plan->n_runs; ++i)
     if (rep->rows[i].on_front) printf(" %s;", plan->runs[i].label);
@@ -210,8 +210,10 @@ static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
     printf("  %-16s", rs_study_knob_name((rs_study_knob)k));
     for (int f = 0; f < 2; ++f) {
       const rs_study_knob_order *o = &rep->order[k][f];
-      if (isnan(o->order)) printf(" %s n/a (%d point%s above %.1e)", f ? "/" : "", o->points,
-                                  o->points == 1 ? "" : "s", o->floor);
+      if (isnan(o->order) && isnan(o->floor)) printf(" %s n/a (no sweep)", f ? "/" : "");
+      else if (isnan(o->order))
+        printf(" %s n/a (%d point%s above %.1e)", f ? "/" : "", o->points, o->points == 1 ? "" : "s",
+               o->floor);
       else printf(" %s %5.2f (%d points)", f ? "/" : "", o->order, o->points);
     }
     printf("\n");

@@ -50,7 +50,7 @@ static const column columns[N_COLUMNS] = {
     [C_ERR0 + RS_FIG_T0] = {"err_T0_final", "", "|T0 of the last layer - reference| / reference", COL_DOUBLE},
     [C_ERR0 + RS_FIG_MAX] = {"err_max", "", "the largest of the five errors", COL_DOUBLE},
     [C_ERR_FRONT] = {"err_front", "", "err_max raised to the reference's uncertainty (what the Pareto front uses)", COL_DOUBLE},
-    [C_ON_FRONT] = {"on_front", "", "1: on the Pareto front of (wall_seconds, err_front); references excluded", COL_INT},
+    [C_ON_FRONT] = {"on_front", "", "1: on the Pareto front of (cpu_seconds, err_front); references excluded", COL_INT},
     [C_IDENTICAL] = {"identical_to_default", "", "1: the same numbers as the default run, bit for bit", COL_INT},
 };
 
@@ -249,7 +249,10 @@ rs_status rs_output_write_study_csv(const char *path, const rs_study_report *rep
   for (int c = 0; c < N_COLUMNS; ++c) {
     fputs(c ? "," : "", f);
     fputs(columns[c].name, f);
-    if (columns[c].units[0] && strcmp(columns[c].units, "layers") != 0)
+    /* units as a suffix, as in the run's CSV files (core_pressure_Pa), unless the name
+     * says them already (wall_seconds) or they are a count (layers) */
+    if (columns[c].units[0] && strcmp(columns[c].units, "layers") != 0 &&
+        strcmp(columns[c].units, "s") != 0)
       fprintf(f, "_%s", strcmp(columns[c].units, "N/m") == 0 ? "N_per_m" : columns[c].units);
   }
   fputc('\n', f);

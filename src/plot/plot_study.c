@@ -1,4 +1,4 @@
-/* The accuracy study's picture: error against wall time, both on log scales, one colour
+/* The accuracy study's picture: error against time (CPU time of the run's thread), both on log scales, one colour
  * per knob, the Pareto front as a staircase with its runs named, the shipped defaults and
  * the reference marked (docs/accuracy.md). */
 #include <math.h>
@@ -66,9 +66,9 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
   double tmin = INFINITY, tmax = 0, emin = INFINITY, emax = 0;
   for (int i = 0; i < n; ++i) {
     const rs_study_row *r = &rep->rows[i];
-    if (!(r->wall_seconds > 0) || !isfinite(r->err_front)) continue;
-    tmin = fmin(tmin, r->wall_seconds);
-    tmax = fmax(tmax, r->wall_seconds);
+    if (!(r->cpu_seconds > 0) || !isfinite(r->err_front)) continue;
+    tmin = fmin(tmin, r->cpu_seconds);
+    tmax = fmax(tmax, r->cpu_seconds);
     if (r->err_front > 0) {
       emin = fmin(emin, r->err_front);
       emax = fmax(emax, r->err_front);
@@ -83,7 +83,7 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
   rs_gp_string(&gp, head);
   rs_gp_printf(&gp,
                "\nset logscale xy\nset format y '%%.0e'\n"
-               "set xlabel 'wall time of the winding (s)'\n"
+               "set xlabel 'time of the winding (s, CPU time of its thread: the wall time on a free core)'\n"
                "set ylabel 'largest relative error against the reference'\n"
                "set grid xtics ytics\nset key below left Left reverse maxrows 6 width -8\n"
                "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n",
@@ -94,13 +94,13 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
   for (int i = 0; i < n; ++i) {
     const rs_study_row *r = &rep->rows[i];
     if (!r->on_front) continue;
-    front[2 * nf] = r->wall_seconds;
+    front[2 * nf] = r->cpu_seconds;
     front[2 * nf + 1] = r->err_front;
     ++nf;
     rs_gp_printf(&gp, "set label ");
     rs_gp_string(&gp, plan->runs[i].label);
     rs_gp_printf(&gp, " at %.10g,%.10g offset 0.7,0.6 font ',9' textcolor rgb '#333333'\n",
-                 r->wall_seconds, r->err_front);
+                 r->cpu_seconds, r->err_front);
   }
   qsort(front, (size_t)nf, 2 * sizeof *front, by_time);
 
@@ -109,7 +109,7 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
     size_t m = 0;
     for (int i = 0; i < n; ++i)
       if (plan->runs[i].knob == (rs_study_knob)k) {
-        x[m] = rep->rows[i].wall_seconds;
+        x[m] = rep->rows[i].cpu_seconds;
         y[m++] = rep->rows[i].err_front;
       }
     if (m == 0) continue;
@@ -136,7 +136,7 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
   }
   /* the defaults and the reference */
   if (st == RS_OK) {
-    double dx = rep->rows[2].wall_seconds, dy = rep->rows[2].err_front;
+    double dx = rep->rows[2].cpu_seconds, dy = rep->rows[2].err_front;
     st = points(&gp, &dx, &dy, 1,
                 "with points pointtype 3 pointsize 4 linewidth 3 linecolor rgb '#e41a1c'",
                 plan->contact ? "shipped defaults (rtol 1e-6, 1 layer/step, nip adaptive 1e-3, 64 nodes, 256 terms)"
@@ -144,7 +144,7 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
                                 : "shipped defaults (rtol 1e-6, 1 layer/step)");
   }
   if (st == RS_OK) {
-    double rx = rep->rows[0].wall_seconds, ry = floor;
+    double rx = rep->rows[0].cpu_seconds, ry = floor;
     st = points(&gp, &rx, &ry, 1, "with points pointtype 5 pointsize 2 linecolor rgb '#000000'",
                 "reference, at its change under a tighter one");
   }
