@@ -138,8 +138,9 @@ typedef struct rs_study_row {
   double core_pressure, peak_pressure; /* Pa */
   double T0_final;                    /* N/m, wound-on tension of the last layer */
   double err[RS_N_FIGURES];           /* against the reference (0 for the reference) */
-  double err_front;     /* err[MAX] raised to the reference's uncertainty: what the front uses
-                           (errors below the uncertainty cannot be told apart) */
+  double err_front;     /* err[MAX] raised to the reference's uncertainty and rounded to three
+                           significant digits: what the front uses (errors below the
+                           uncertainty, or equal to three digits, cannot be told apart) */
   int on_front;         /* on the Pareto front of (CPU time, err_front); references excluded.
                            CPU time of the run's thread, not wall time: on a shared machine
                            the wall time of a run includes other programs' turns on the core */

@@ -49,7 +49,7 @@ static const column columns[N_COLUMNS] = {
     [C_ERR0 + RS_FIG_SIGMA_THETA] = {"err_sigma_theta", "", "max over layers of |sigma_theta - reference| / (T0_ref / caliper): hoop stress crosses zero, so against the hoop stress each layer was wound with", COL_DOUBLE},
     [C_ERR0 + RS_FIG_T0] = {"err_T0_final", "", "|T0 of the last layer - reference| / reference", COL_DOUBLE},
     [C_ERR0 + RS_FIG_MAX] = {"err_max", "", "the largest of the five errors", COL_DOUBLE},
-    [C_ERR_FRONT] = {"err_front", "", "err_max raised to the reference's uncertainty (what the Pareto front uses)", COL_DOUBLE},
+    [C_ERR_FRONT] = {"err_front", "", "err_max raised to the reference's uncertainty, to 3 significant digits (what the Pareto front uses)", COL_DOUBLE},
     [C_ON_FRONT] = {"on_front", "", "1: on the Pareto front of (cpu_seconds, err_front); references excluded", COL_INT},
     [C_IDENTICAL] = {"identical_to_default", "", "1: the same numbers as the default run, bit for bit", COL_INT},
 };

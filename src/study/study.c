@@ -370,6 +370,15 @@ static void knob_orders(const rs_study_plan *plan, rs_study_report *rep)
   free(e);
 }
 
+/* x to three significant digits: errors that agree that far are the same error to a user,
+ * and a difference in the twelfth digit must not put a slower run on the front. */
+static double round3(double x)
+{
+  if (!(x > 0) || !isfinite(x)) return x;
+  const double q = pow(10.0, floor(log10(x)) - 2.0);
+  return round(x / q) * q;
+}
+
 rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *const *results,
                            const double *wall, const double *cpu, double caliper,
                            rs_study_report *rep)
@@ -420,7 +429,7 @@ rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *cons
       rs_error_wrap("study run '%s'", plan->runs[i].label);
       goto done;
     }
-    row->err_front = fmax(row->err[RS_FIG_MAX], rep->uncertainty[RS_FIG_MAX]);
+    row->err_front = round3(fmax(row->err[RS_FIG_MAX], rep->uncertainty[RS_FIG_MAX]));
     row->identical_to_default = rs_study_identical(res, def);
     t[i] = is_ref ? NAN : cpu[i];
     ef[i] = is_ref ? NAN : row->err_front;
