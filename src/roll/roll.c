@@ -544,7 +544,7 @@ void rs_roll_state_destroy(rs_roll_state **state)
 
 rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
 {
-  if (st->capacity < roll->n) {
+  if (st->capacity < roll->n || !st->sigma_r) { /* also before the first layer: memcpy needs arrays */
     int cap = roll->p.max_layers;
     double *a = realloc(st->sigma_r, (size_t)cap * sizeof(double));
     if (a) st->sigma_r = a;
