@@ -137,11 +137,15 @@ rs_status rs_plot_study(const rs_study_report *rep, const char *title, const cha
   /* the defaults and the reference */
   if (st == RS_OK) {
     double dx = rep->rows[2].cpu_seconds, dy = rep->rows[2].err_front;
+    const rs_study_setting *d = &plan->runs[2].set;
+    char what[256];
+    int k = snprintf(what, sizeof what, "shipped defaults (rtol %g, %d layer/step", d->rtol,
+                     d->layers_per_step);
+    if (plan->has_nip) k += snprintf(what + k, sizeof what - k, ", nip adaptive T0_rtol %g", d->T0_rtol);
+    if (plan->contact) snprintf(what + k, sizeof what - k, ", %d nodes, %d terms", d->nodes, d->terms);
+    strncat(what, ")", sizeof what - strlen(what) - 1);
     st = points(&gp, &dx, &dy, 1,
-                "with points pointtype 3 pointsize 4 linewidth 3 linecolor rgb '#e41a1c'",
-                plan->contact ? "shipped defaults (rtol 1e-6, 1 layer/step, nip adaptive 1e-3, 64 nodes, 256 terms)"
-                : plan->has_nip ? "shipped defaults (rtol 1e-6, 1 layer/step, nip adaptive 1e-3)"
-                                : "shipped defaults (rtol 1e-6, 1 layer/step)");
+                "with points pointtype 3 pointsize 4 linewidth 3 linecolor rgb '#e41a1c'", what);
   }
   if (st == RS_OK) {
     double rx = rep->rows[0].cpu_seconds, ry = floor;

@@ -82,7 +82,7 @@ void rs_study_defaults(int has_nip, int contact, rs_study_setting *s)
   memset(s, 0, sizeof *s);
   s->rtol = 1e-6;
   s->layers_per_step = 1;
-  if (has_nip) s->T0_rtol = 1e-3; /* adaptive */
+  if (has_nip) s->T0_rtol = 1e-4; /* adaptive (src/scene/defaults.c) */
   if (contact) {
     s->nodes = 64;
     s->terms = 256;
@@ -237,7 +237,7 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
   static const int m_full[] = {2, 5, 10, 20, 50}, m_quick[] = {2, 10, 50};
   static const int M_full[] = {16, 24, 32, 48}, M_quick[] = {16, 32};
   static const int terms_full[] = {16, 32, 64, 128}, terms_quick[] = {16, 64};
-  static const double T0_full[] = {1e-1, 3e-2, 1e-2, 1e-4, 1e-5}, T0_quick[] = {1e-2, 1e-4};
+  static const double T0_full[] = {1e-1, 1e-2, 3e-3, 1e-3, 1e-5}, T0_quick[] = {1e-2, 1e-3, 1e-5};
   static const int every_full[] = {1000, 300, 100, 30, 10}, every_quick[] = {300, 100, 10};
   static const int hist_full[] = {1000, 100, 10}, hist_quick[] = {100};
 #define LEVELS(a) (quick ? a##_quick : a##_full), (quick ? (int)(sizeof a##_quick / sizeof *a##_quick) : (int)(sizeof a##_full / sizeof *a##_full))
@@ -255,7 +255,7 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
 #undef LEVELS
 
   /* a small grid of the knobs that cost the most time: rtol x layers per step (x the nip
-   * update tolerance) */
+   * update tolerance: the default's and ten times it) */
   static const double g_rtol[] = {1e-5, 1e-4};
   static const int g_m[] = {2, 5, 10};
   const int n_m = quick ? 2 : 3, n_T0 = p->has_nip ? 2 : 1;
@@ -268,7 +268,7 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
         g.layers_per_step = g_m[j];
         char label[64];
         if (k == 1) {
-          g.T0_rtol = 1e-2;
+          g.T0_rtol = 10 * def.T0_rtol;
           snprintf(label, sizeof label, "grid rtol=%g m=%d T0_rtol=%g", g.rtol, g.layers_per_step,
                    g.T0_rtol);
         } else {
