@@ -94,6 +94,7 @@ typedef struct rs_reel_job {
   char message[2048];        /* rs_error_message() of the failed job, "" when it succeeded */
   char where[256];           /* rs_error_where() likewise */
   double wall_seconds;       /* wall-clock time of the job, s */
+  double cpu_seconds;        /* CPU time of the job's thread, s (the study's measure) */
 } rs_reel_job;
 
 /* Winds jobs[0..n-1] on up to `threads` POSIX threads (<= 0: one per online processor;

@@ -19,6 +19,15 @@ extern "C" {
 
 typedef struct rs_roll rs_roll;
 
+/* How a lumped increment (m > 1 layers, numerics.layers_per_step) is computed; for m = 1
+ * both are Hakiel accretion, bit for bit. docs/roll-model.md, "Lumped increments". */
+typedef enum rs_lumping {
+  RS_LUMP_CORRECTED = 0, /* each layer's load at its own radius; predictor-corrector on the
+                            modulus (the mean pressure the m layers would have seen) */
+  RS_LUMP_FROZEN = 1     /* the first scheme: the block's load at its outer radius, modulus
+                            frozen before the block (kept for comparison) */
+} rs_lumping;
+
 typedef struct rs_roll_params {
   double core_radius;      /* m */
   double core_stiffness;   /* Pa, effective E_c; INFINITY for a rigid core */
@@ -30,6 +39,7 @@ typedef struct rs_roll_params {
   double rtol;             /* CVODE relative tolerance on (w, ln y) */
   double atol;             /* CVODE absolute tolerance; <= 0: rtol */
   long max_steps;          /* CVODE internal steps per increment; <= 0: 100000 */
+  rs_lumping lumping;      /* lumped increments; 0 = RS_LUMP_CORRECTED */
 } rs_roll_params;
 
 typedef struct rs_roll_stats {

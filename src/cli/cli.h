@@ -38,6 +38,8 @@ int cli_run(const cli_args *a);
 int cli_compare(const cli_args *a);
 /* reelsim plot parses its own arguments (argv[0] is the program, argv[1] "plot"). */
 int cli_plot(int argc, char **argv);
+/* reelsim study SCENE [-o DIR] [--set k=v]... [--quick] [--jobs N] (cmd_study.c), likewise. */
+int cli_study(int argc, char **argv);
 
 /* Help: the general text (cmd NULL) or one command's. 0 if cmd is known, else 2. */
 int cli_usage(FILE *out, const char *cmd);

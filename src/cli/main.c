@@ -22,11 +22,12 @@ int main(int argc, char **argv)
   }
   if (strcmp(cmd, "nip") == 0) return cli_nip(argc, argv, 2);
   if (strcmp(cmd, "plot") == 0) return cli_plot(argc, argv);
+  if (strcmp(cmd, "study") == 0) return cli_study(argc, argv);
   if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0 && strcmp(cmd, "compare") != 0) {
     if (cmd[0] == '-')
       return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
     return cli_fail(CLI_EXIT_USAGE,
-                    "unknown command '%s' (commands: run, check, compare, plot, nip, help)", cmd);
+                    "unknown command '%s' (commands: run, check, compare, plot, study, nip, help)", cmd);
   }
 
   cli_args a;

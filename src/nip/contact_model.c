@@ -118,7 +118,10 @@ rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_mate
   cfg.winder = spec->winder;
   cfg.torque_share = spec->torque_share;
   cfg.nodes = spec->nodes > 0 ? spec->nodes : 64;
-  if (spec->terms > 0) cfg.series.terms = spec->terms;
+  if (spec->terms > 0) { /* the default's series (accelerated), shorter or longer */
+    cfg.series.terms = spec->terms;
+    cfg.series.accelerate = 1;
+  }
   st = rs_nip_contact_create(&cfg, out);
   if (st) return st;
   (*out)->from_spec = 1;

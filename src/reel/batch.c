@@ -24,15 +24,23 @@ static double batch_now(void)
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
+static double thread_cpu(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
 static void run_job(rs_reel_job *job)
 {
-  double t0 = batch_now();
+  double t0 = batch_now(), c0 = thread_cpu();
   rs_error_clear();
   job->result = NULL;
   job->status = rs_reel_wind(job->scene, &job->opts, &job->result);
   snprintf(job->message, sizeof job->message, "%s", job->status ? rs_error_message() : "");
   snprintf(job->where, sizeof job->where, "%s", job->status ? rs_error_where() : "");
   job->wall_seconds = batch_now() - t0;
+  job->cpu_seconds = thread_cpu() - c0;
 }
 
 static void *worker(void *arg)

@@ -21,10 +21,16 @@
  * order instead of shrinking its steps at every layer boundary (measured: 30% fewer steps
  * than linear interpolation), g^2 stays positive, and a constant E_r gives a constant g.
  *
- * A lumped increment of m layers is taken as the sum of its m single-layer increments, each
- * approximated by the outermost one's solution (same frozen modulus) on the radii it covers:
- * below the block every layer contributes; inside it, only the block layers above a node do.
- * For m = 1 this is exact Hakiel accretion. */
+ * A lumped increment of m layers (numerics.layers_per_step) is the sum of its m single-layer
+ * increments, all read off one integration: y comes from the core, so layer i's load can be
+ * put at its own radius s_i exactly (ds_i = -(T_i/s_i) y/y(s_i)). What one integration cannot
+ * give is each layer's own modulus (Hakiel: the pressures just before that layer), so it is
+ * a predictor-corrector: integrate with the modulus frozen before the block, take from those
+ * sub-increments the mean pressure each node would have carried before each of the layers
+ * that reach it, integrate again with the modulus there (RS_LUMP_CORRECTED). Error first
+ * order in m - 1, ~60x below the first scheme's (frozen modulus, the whole block's load at
+ * the outer radius: RS_LUMP_FROZEN, kept for comparison; docs/accuracy.md). For m = 1 both
+ * are exact Hakiel accretion, bit for bit. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,7 +56,10 @@ struct rs_roll {
   double *lg2;
   double *w, *L;        /* (w, ln y) at the nodes */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
-  double *block_share;  /* [m] sum of T of the block layers at or above a node / total */
+  double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
+  double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
+  double *P_mean;       /* [cap + 1] corrected lumping: mean pressure increment seen, Pa */
+  double *dsr, *dsh;    /* [cap + 1] the increment's ds and ds + r ds' at the nodes */
   /* CVODE */
   SUNContext sunctx;
   void *cvode;
@@ -137,6 +146,10 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->L);
   free(roll->xnode);
   free(roll->block_share);
+  free(roll->P_node);
+  free(roll->P_mean);
+  free(roll->dsr);
+  free(roll->dsh);
   free(roll);
   *rollp = NULL;
 }
@@ -158,6 +171,8 @@ static rs_status roll_check_params(const rs_roll_params *p)
                     p->max_layers);
   if (!(p->rtol > 0.0 && p->rtol < 1.0))
     return RS_ERROR(RS_ERR_INPUT, "rtol must lie in (0, 1) (got %g)", p->rtol);
+  if (p->lumping != RS_LUMP_CORRECTED && p->lumping != RS_LUMP_FROZEN)
+    return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
   return RS_OK;
 }
 
@@ -182,8 +197,12 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->L = calloc(cap + 1, sizeof(double));
   roll->xnode = calloc(cap + 1, sizeof(double));
   roll->block_share = calloc(cap + 1, sizeof(double));
+  roll->P_node = calloc(cap + 1, sizeof(double));
+  roll->P_mean = calloc(cap + 1, sizeof(double));
+  roll->dsr = calloc(cap + 1, sizeof(double));
+  roll->dsh = calloc(cap + 1, sizeof(double));
   if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->w || !roll->L || !roll->xnode ||
-      !roll->block_share) {
+      !roll->block_share || !roll->P_node || !roll->P_mean || !roll->dsr || !roll->dsh) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
@@ -315,38 +334,71 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   return RS_OK;
 }
 
-rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
+/* g^2 = E_theta / E_r(P) at the nodes 0..k, P from roll->P_node: the modulus an
+ * integration sees. */
+static rs_status roll_set_modulus(rs_roll *roll, int k)
 {
-  if (m < 1) return RS_ERROR(RS_ERR_INPUT, "an increment winds at least one layer (got %d)", m);
-  if (roll->n + m > roll->p.max_layers)
-    return RS_ERROR(RS_ERR_INPUT, "the roll holds %d layers; cannot wind %d more onto %d",
-                    roll->p.max_layers, m, roll->n);
-  double total = 0.0;
-  for (int i = 0; i < m; ++i) {
-    if (!(T0[i] >= 0.0) || !isfinite(T0[i]))
-      return RS_ERROR(RS_ERR_INPUT, "wound-on tension of layer %d must be finite and >= 0 (got %g N/m)",
-                      roll->n + i + 1, T0[i]);
-    total += T0[i];
-  }
-  const int k_old = roll->n, k = roll->n + m;
-  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + k * t;
-
-  /* the frozen modulus of this increment */
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
   for (int j = 0; j <= k; ++j) {
-    double Er = rs_radial_modulus(&roll->p.radial, roll_node_pressure(roll, j));
+    double P = roll->P_node[j], Er = rs_radial_modulus(&roll->p.radial, P);
     if (!(Er > 0.0) || !isfinite(Er))
       return RS_ERROR(RS_ERR_SOLVER,
                       "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not positive: "
                       "the radial law is outside its range",
-                      Er, rc + j * t, roll_node_pressure(roll, j));
+                      Er, rc + j * t, P);
     roll->g2[j] = roll->p.E_theta / Er;
     roll->lg2[j] = log(roll->g2[j]);
   }
   roll->nodes_in_use = k + 1;
-  rs_status st = roll_integrate(roll, k);
-  if (st) return st;
+  return RS_OK;
+}
 
-  /* share of the block's tension at or above each block node (1 below the block) */
+/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
+ * The sub-increment of block layer i (node k_old + 1 + i, radius s_i) is exactly
+ *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= k_old + 1 + i,
+ * because y, integrated from the core, does not depend on where the load is applied.
+ * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
+ * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
+ * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
+ * it of ds_i (1 + w) (= ds_i + r ds_i'). With mean != NULL also the mean, over the
+ * sub-increments that reach a node, of the pressure the block has added there before each:
+ *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
+ * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
+ * For m = 1 these are the single-layer formulas of Hakiel accretion, operation for
+ * operation. */
+static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+{
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  const double *L = roll->L, *w = roll->w;
+  double S = 0.0, V = 0.0; /* V_b = sum_{i >= b} (m - 1 - i) T_i/s_i exp(L_b - L(s_i)) */
+  for (int b = m - 1; b >= 0; --b) {
+    const int j = k_old + 1 + b;
+    const double decay = b == m - 1 ? 0.0 : exp(L[j] - L[j + 1]);
+    const double above = S * decay, c = T0[b] / (rc + j * t);
+    S = above + c;
+    roll->dsr[j] = -S;
+    roll->dsh[j] = -above * (1.0 + w[j]);
+    if (mean) {
+      V = V * decay + (m - 1 - b) * c;
+      mean[j] = V / (m - b);
+    }
+  }
+  const double Lb = L[k_old + 1];
+  for (int j = 0; j <= k_old; ++j) {
+    const double e = exp(L[j] - Lb), ds = -S * e;
+    roll->dsr[j] = ds;
+    roll->dsh[j] = ds * (1.0 + w[j]);
+    if (mean) mean[j] = V * e / m;
+  }
+}
+
+/* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
+ * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
+ * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
+static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
+{
+  const int k_old = roll->n, k = roll->n + m;
+  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + k * t;
   double above = 0.0;
   for (int i = m - 1; i >= 0; --i) {
     above += T0[i];
@@ -383,6 +435,72 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
       roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
     }
   }
+  return RS_OK;
+}
+
+/* Adds dsr, dsh to the roll (the block's own layers start from their own share). */
+static rs_status roll_commit(rs_roll *roll, int m, const double *T0)
+{
+  const int k_old = roll->n, k = roll->n + m;
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  for (int j = 0; j <= k; ++j)
+    if (!isfinite(roll->dsr[j]) || !isfinite(roll->dsh[j]))
+      return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
+                               "non-finite stress increment at the core (outer radius %.9g m)",
+                               rc + k * t)
+                    : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
+                               rc + j * t, j);
+  roll->core_sigma += roll->dsr[0];
+  for (int j = 1; j <= k_old; ++j) {
+    roll->sigma_r[j - 1] += roll->dsr[j];
+    roll->sigma_theta[j - 1] += roll->dsh[j];
+  }
+  for (int j = k_old + 1; j <= k; ++j) {
+    roll->sigma_r[j - 1] = roll->dsr[j];
+    roll->sigma_theta[j - 1] = T0[j - k_old - 1] / t + roll->dsh[j];
+  }
+  return RS_OK;
+}
+
+rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
+{
+  if (m < 1) return RS_ERROR(RS_ERR_INPUT, "an increment winds at least one layer (got %d)", m);
+  if (roll->n + m > roll->p.max_layers)
+    return RS_ERROR(RS_ERR_INPUT, "the roll holds %d layers; cannot wind %d more onto %d",
+                    roll->p.max_layers, m, roll->n);
+  double total = 0.0;
+  for (int i = 0; i < m; ++i) {
+    if (!(T0[i] >= 0.0) || !isfinite(T0[i]))
+      return RS_ERROR(RS_ERR_INPUT, "wound-on tension of layer %d must be finite and >= 0 (got %g N/m)",
+                      roll->n + i + 1, T0[i]);
+    total += T0[i];
+  }
+  const int k_old = roll->n, k = roll->n + m;
+
+  /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
+  for (int j = 0; j <= k; ++j) roll->P_node[j] = roll_node_pressure(roll, j);
+  rs_status st = roll_set_modulus(roll, k);
+  if (st == RS_OK) st = roll_integrate(roll, k);
+  if (st) return st;
+
+  if (roll->p.lumping == RS_LUMP_FROZEN) {
+    st = roll_commit_frozen(roll, m, T0, total);
+  } else {
+    const int correct = m > 1;
+    roll_block_increment(roll, k_old, m, T0, correct ? roll->P_mean : NULL);
+    if (correct) {
+      /* the corrector: each node's modulus at the mean pressure the m single-layer
+       * increments would have seen there (the pressure before each, averaged over those
+       * that reach the node), from the predictor's sub-increments; integrate again */
+      for (int j = 0; j <= k; ++j) roll->P_node[j] = roll_node_pressure(roll, j) + roll->P_mean[j];
+      st = roll_set_modulus(roll, k);
+      if (st == RS_OK) st = roll_integrate(roll, k);
+      if (st) return st;
+      roll_block_increment(roll, k_old, m, T0, NULL);
+    }
+    st = roll_commit(roll, m, T0);
+  }
+  if (st) return st;
   roll->n = k;
   roll->stats.increments++;
   return RS_OK;
@@ -438,7 +556,7 @@ void rs_roll_state_destroy(rs_roll_state **state)
 
 rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
 {
-  if (st->capacity < roll->n) {
+  if (st->capacity < roll->n || !st->sigma_r) { /* also before the first layer: memcpy needs arrays */
     int cap = roll->p.max_layers;
     double *a = realloc(st->sigma_r, (size_t)cap * sizeof(double));
     if (a) st->sigma_r = a;

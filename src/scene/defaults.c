@@ -89,7 +89,10 @@ rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
     if (strcmp(yn_map_get(nip, "update")->text, "every") == 0)
       st = put_default(nip, "update_every", "1");
     else
-      st = put_default(nip, "T0_rtol", "1e-3");
+      /* 1e-4, not 1e-3: on a reel whose T0 changes (cases/newsprint-surface-taper.yaml) the
+       * policy's error dominated the defaults' and 1e-4 cut it 7x for 3% more time; where T0
+       * does not change it costs nothing (docs/accuracy.md) */
+      st = put_default(nip, "T0_rtol", "1e-4");
     if (st != RS_OK) return st;
     if (strcmp(yn_map_get(nip, "winder")->text, "center-surface") == 0 &&
         (st = put_default(nip, "torque_share", "0.5")) != RS_OK)

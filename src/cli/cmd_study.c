@@ -1,0 +1,395 @@
+/* reelsim study SCENE [-o DIR] [--set k=v ...] [--quick] [--jobs N] [--quiet]:
+ * what accuracy costs in time (docs/accuracy.md, docs/cli.md).
+ *
+ * Plans the runs (src/study: a tight reference, a tighter one, the shipped defaults, each
+ * knob alone, a small grid), loads every run's scene before winding any (bad input: exit
+ * 2, nothing wound), winds them one at a time by default (--jobs N: N at once; the times
+ * are the study's measurements, and runs sharing two cores slow each other down), measures
+ * each against the reference, prints a table and writes DIR/study.h5, DIR/study.csv and
+ * DIR/study.png. A run other than the references and the defaults that fails is reported
+ * and left out of the front; a failed reference or default run stops the study (exit 3). */
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "cli/cli.h"
+#include "reelsim/output.h"
+#include "reelsim/plot.h"
+#include "reelsim/reel.h"
+#include "reelsim/scene.h"
+#include "reelsim/study.h"
+
+static atomic_int interrupted;
+
+static void on_sigint(int sig)
+{
+  (void)sig;
+  atomic_store(&interrupted, 1);
+}
+
+static int on_progress(void *user, int done, int total)
+{
+  (void)user;
+  (void)done;
+  (void)total;
+  return atomic_load(&interrupted) != 0;
+}
+
+static double now_seconds(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+typedef struct study_args {
+  const char *scene, *dir;
+  int quick, quiet, jobs;
+  int n_sets;
+  const char **sets;
+} study_args;
+
+static int parse(int argc, char **argv, study_args *a)
+{
+  memset(a, 0, sizeof *a);
+  a->jobs = 1;
+  if (!(a->sets = calloc((size_t)argc + 1, sizeof *a->sets)))
+    return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  for (int i = 2; i < argc; ++i) {
+    const char *arg = argv[i];
+    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
+      cli_usage(stdout, "study");
+      return CLI_EXIT_OK;
+    } else if (strcmp(arg, "--set") == 0 || strcmp(arg, "-s") == 0) {
+      if (i + 1 >= argc) return cli_fail(CLI_EXIT_USAGE, "study: --set needs key.path=value");
+      a->sets[a->n_sets++] = argv[++i];
+    } else if (strncmp(arg, "--set=", 6) == 0) {
+      a->sets[a->n_sets++] = arg + 6;
+    } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--output") == 0) {
+      if (i + 1 >= argc || !argv[i + 1][0])
+        return cli_fail(CLI_EXIT_USAGE, "study: %s needs a directory", arg);
+      a->dir = argv[++i];
+    } else if (strncmp(arg, "--output=", 9) == 0 && arg[9]) {
+      a->dir = arg + 9;
+    } else if (strcmp(arg, "--quick") == 0) {
+      a->quick = 1;
+    } else if (strcmp(arg, "--jobs") == 0 || strcmp(arg, "-j") == 0 ||
+               strncmp(arg, "--jobs=", 7) == 0) {
+      const char *v = arg[6] == '=' ? arg + 7 : i + 1 < argc ? argv[++i] : "";
+      char *end;
+      long j = strtol(v, &end, 10);
+      if (!v[0] || *end || j < 1 || j > 64)
+        return cli_fail(CLI_EXIT_USAGE, "study: --jobs needs a number of threads in [1, 64] (got '%s')", v);
+      a->jobs = (int)j;
+    } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
+      a->quiet = 1;
+    } else if (arg[0] == '-' && arg[1]) {
+      return cli_fail(CLI_EXIT_USAGE, "study: unknown option '%s' (see reelsim study --help)", arg);
+    } else if (a->scene) {
+      return cli_fail(CLI_EXIT_USAGE, "study: one scene at a time (got '%s' and '%s')", a->scene, arg);
+    } else {
+      a->scene = arg;
+    }
+  }
+  if (!a->scene)
+    return cli_fail(CLI_EXIT_USAGE, "study: missing the scene file (usage: reelsim study SCENE ...)");
+  return -1;
+}
+
+/* "cases/pet-rider.yaml" -> "pet-rider" */
+static void stem(const char *path, char *out, size_t size)
+{
+  const char *base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  const char *dot = strrchr(base, '.');
+  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+  snprintf(out, size, "%.*s", (int)n, base);
+}
+
+/* DIR exists (made here if its parent does) and is a writable directory. */
+static int make_dir(const char *dir)
+{
+  struct stat sb;
+  if (stat(dir, &sb) != 0) {
+    if (errno != ENOENT || mkdir(dir, 0777) != 0)
+      return cli_fail(CLI_EXIT_OTHER, "study: cannot make the directory '%s': %s", dir, strerror(errno));
+    return CLI_EXIT_OK;
+  }
+  if (!S_ISDIR(sb.st_mode)) return cli_fail(CLI_EXIT_OTHER, "study: '%s' is not a directory", dir);
+  return CLI_EXIT_OK;
+}
+
+/* Errors print as %.2e; an exact zero as "0" and errors below the reference's uncertainty
+ * get a '~' (they cannot be told from the reference). */
+static void fmt_err(char *buf, size_t size, double e, double noise)
+{
+  if (isnan(e)) snprintf(buf, size, "-");
+  else if (e == 0.0) snprintf(buf, size, "0");
+  else snprintf(buf, size, "%s%.2e", e <= noise ? "~" : "", e);
+}
+
+static void print_setting(const rs_study_setting *s, int has_nip, int contact)
+{
+  printf("rtol %g, %d layer%s per step", s->rtol, s->layers_per_step, s->layers_per_step == 1 ? "" : "s");
+  if (contact) printf(", nip %d nodes, %d terms", s->nodes, s->terms);
+  if (has_nip) {
+    if (s->update_every > 0) printf(", nip every %d layer%s", s->update_every, s->update_every == 1 ? "" : "s");
+    else printf(", nip adaptive (T0_rtol %g)", s->T0_rtol);
+  }
+}
+
+static void print_report(const rs_study_plan *plan, const rs_study_report *rep,
+                         const rs_reel_job *jobs)
+{
+  static const char *const head[RS_N_FIGURES] = {"core P", "peak P", "sigma_r", "sigma_t", "T0", "max"};
+  char e[RS_N_FIGURES][24];
+  printf("\n%-34s %8s %8s %9s", "run", "wall s", "cpu s", "steps");
+  if (plan->has_nip) printf(" %7s", "nip");
+  for (int f = 0; f < RS_N_FIGURES; ++f) printf(" %10s", head[f]);
+  printf("  front\n");
+  for (int i = 0; i < plan->n_runs; ++i) {
+    const rs_study_row *r = &rep->rows[i];
+    printf("%-34s %8.2f %8.2f %9ld", plan->runs[i].label, r->wall_seconds, r->cpu_seconds,
+           r->cvode_steps);
+    if (plan->has_nip) printf(" %7ld", r->nip_solves);
+    if (jobs[i].status != RS_OK) {
+      printf("  FAILED (%s)\n", rs_status_name(jobs[i].status));
+      continue;
+    }
+    for (int f = 0; f < RS_N_FIGURES; ++f) {
+      fmt_err(e[f], sizeof e[f], r->err[f], rep->uncertainty[f]);
+      printf(" %10s", e[f]);
+    }
+    printf("  %s%s%s\n", r->on_front ? "*" : "", i == 2 ? " <- defaults" : "",
+           plan->runs[i].knob == RS_KNOB_HISTORY
+               ? (r->identical_to_default ? " (answer identical to the defaults)"
+                                          : " (answer DIFFERS from the defaults)")
+               : "");
+  }
+}
+
+static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
+{
+  const rs_study_row *d = &rep->rows[2];
+  printf("\nerrors are relative to the reference: core and peak pressure, sigma_r (max over layers),\n"
+         "sigma_t = hoop stress (max over layers, against T0/caliper of each layer: it crosses zero),\n"
+         "T0 at the finish; '~' marks an error below the reference's uncertainty.\n");
+  printf("reference:  ");
+  print_setting(&plan->runs[0].set, plan->has_nip, plan->contact);
+  printf("\nreference2: ");
+  print_setting(&plan->runs[1].set, plan->has_nip, plan->contact);
+  printf("\nreference uncertainty (reference2 against it): core %.2e, peak %.2e, sigma_r %.2e, "
+         "sigma_t %.2e, T0 %.2e\n",
+         rep->uncertainty[RS_FIG_CORE], rep->uncertainty[RS_FIG_PEAK], rep->uncertainty[RS_FIG_SIGMA_R],
+         rep->uncertainty[RS_FIG_SIGMA_THETA], rep->uncertainty[RS_FIG_T0]);
+  if (rep->smallest_run >= 0)
+    printf("smallest error reported: %.2e (%s): %s\n", rep->smallest_error,
+           plan->runs[rep->smallest_run].label,
+           rep->uncertainty[RS_FIG_MAX] < rep->smallest_error
+               ? "the reference's uncertainty is below it"
+               : "NOT above the reference's uncertainty; errors marked '~' are at its noise");
+  printf("defaults: core pressure error %.2e (%s 0.1%%), max %.2e, %.2f s CPU; %s the Pareto "
+         "front of CPU time and max error (within %.0f%% in time)\n",
+         d->err[RS_FIG_CORE], d->err[RS_FIG_CORE] <= 1e-3 ? "within" : "OVER", d->err[RS_FIG_MAX],
+         d->cpu_seconds, rep->default_on_front ? "on" : "NOT on", 100 * rep->time_noise);
+  printf("Pareto front (%d runs):", rep->n_front);
+  for (int i = 0; i < plan->n_runs; ++i)
+    if (rep->rows[i].on_front) printf(" %s;", plan->runs[i].label);
+  printf("\nobserved order p in error ~ x^p per knob (core pressure / max error; x = rtol, "
+         "layers_per_step - 1,\n  1/nodes, 1/terms, T0_rtol, update_every; points above the floor):\n");
+  for (int k = RS_KNOB_RTOL; k <= RS_KNOB_EVERY; ++k) {
+    int used = 0;
+    for (int i = 0; i < plan->n_runs; ++i) used |= plan->runs[i].knob == (rs_study_knob)k;
+    if (!used) continue;
+    printf("  %-16s", rs_study_knob_name((rs_study_knob)k));
+    for (int f = 0; f < 2; ++f) {
+      const rs_study_knob_order *o = &rep->order[k][f];
+      if (isnan(o->order) && isnan(o->floor)) printf(" %s n/a (no sweep)", f ? "/" : "");
+      else if (isnan(o->order))
+        printf(" %s n/a (%d point%s above %.1e)", f ? "/" : "", o->points, o->points == 1 ? "" : "s",
+               o->floor);
+      else printf(" %s %5.2f (%d points)", f ? "/" : "", o->order, o->points);
+    }
+    printf("\n");
+  }
+  int hist = 0, same = 1;
+  for (int i = 0; i < plan->n_runs; ++i)
+    if (plan->runs[i].knob == RS_KNOB_HISTORY) {
+      hist = 1;
+      same &= rep->rows[i].identical_to_default;
+    }
+  if (hist)
+    printf("output.history_every: only time; the answers are %s those of the defaults\n",
+           same ? "bit for bit" : "NOT");
+}
+
+/* Releases the stress history of a finished run: the study only times it (a fine history
+ * of a long reel holds hundreds of MB). */
+static void slim(rs_reel_result *res)
+{
+  if (!res) return;
+  free(res->stage_layers);
+  free(res->stage_radius);
+  free(res->stage_sigma_r);
+  free(res->stage_sigma_theta);
+  res->stage_layers = NULL;
+  res->stage_radius = res->stage_sigma_r = res->stage_sigma_theta = NULL;
+  res->n_stages = 0;
+}
+
+static int n_runs_of(const rs_study_plan *p) { return p ? p->n_runs : 0; }
+
+int cli_study(int argc, char **argv)
+{
+  study_args a;
+  int code = parse(argc, argv, &a);
+  if (code >= 0) {
+    free(a.sets);
+    return code;
+  }
+  code = CLI_EXIT_OK;
+  double t_start = now_seconds();
+  rs_scene *base = NULL, **scenes = NULL;
+  rs_study_plan *plan = NULL;
+  rs_reel_job *jobs = NULL;
+  const rs_reel_result **results = NULL;
+  double *wall = NULL, *cpu = NULL;
+  const char **sets = NULL;
+  rs_study_report rep = {0};
+  char name[256], dir[RS_PATH_MAX], path[RS_PATH_MAX + 32];
+  struct sigaction sa, old;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_sigint;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &sa, &old);
+  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
+  atomic_store(&interrupted, 0);
+
+  rs_status st = rs_scene_load(a.scene, a.n_sets, a.sets, &base);
+  if (st == RS_OK) st = rs_study_plan_create(base, a.quick, &plan);
+  if (st != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+  const int n = plan->n_runs;
+  scenes = calloc((size_t)n, sizeof *scenes);
+  jobs = calloc((size_t)n, sizeof *jobs);
+  results = calloc((size_t)n, sizeof *results);
+  wall = calloc((size_t)n, sizeof *wall);
+  cpu = calloc((size_t)n, sizeof *cpu);
+  sets = calloc((size_t)a.n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
+  if (!scenes || !jobs || !results || !wall || !cpu || !sets) {
+    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+    goto done;
+  }
+  /* every run is the scene with the user's overrides, then the run's own */
+  for (int i = 0; i < n; ++i) {
+    const rs_study_run *r = &plan->runs[i];
+    for (int k = 0; k < a.n_sets; ++k) sets[k] = a.sets[k];
+    for (int k = 0; k < r->n_sets; ++k) sets[a.n_sets + k] = r->sets[k];
+    if ((st = rs_scene_load(a.scene, a.n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
+      rs_error_wrap("study run '%s'", r->label);
+      code = cli_fail_status(st);
+      fprintf(stderr, "reelsim: study: nothing was wound\n");
+      goto done;
+    }
+  }
+  stem(a.scene, name, sizeof name);
+  if (a.dir) snprintf(dir, sizeof dir, "%s", a.dir);
+  else snprintf(dir, sizeof dir, "study-%s", name);
+  if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
+  snprintf(path, sizeof path, "%s/study.h5", dir);
+  if ((st = rs_output_check_target(path)) != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+
+  if (!a.quiet) {
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, base->title,
+           base->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+    fflush(stdout);
+  }
+  for (int i = 0; i < n; ++i) {
+    jobs[i].scene = scenes[i];
+    jobs[i].opts.progress = on_progress;
+  }
+  for (int first = 0; first < n; first += a.jobs) {
+    int m = n - first < a.jobs ? n - first : a.jobs;
+    if ((st = rs_reel_wind_many(m, jobs + first, m, NULL)) != RS_OK) {
+      code = cli_fail_status(st);
+      goto done;
+    }
+    if (atomic_load(&interrupted)) {
+      code = cli_fail(CLI_EXIT_INTERRUPTED, "study: interrupted (no output written)");
+      goto done;
+    }
+    for (int i = first; i < first + m; ++i) {
+      rs_reel_job *job = &jobs[i];
+      slim(job->result);
+      wall[i] = job->wall_seconds;
+      cpu[i] = job->cpu_seconds;
+      results[i] = job->status == RS_OK ? job->result : NULL;
+      if (!a.quiet) {
+        printf("  [%2d/%d] %-34s %8.2f s%s%s\n", i + 1, n, plan->runs[i].label, job->wall_seconds,
+               job->status ? "  FAILED: " : "", job->status ? job->message : "");
+        fflush(stdout);
+      }
+      if (job->status != RS_OK && i < 3) {
+        code = cli_fail(rs_status_exit_code(job->status), "study: the %s run failed: %s",
+                        plan->runs[i].label, job->message);
+        goto done;
+      }
+    }
+  }
+
+  if ((st = rs_study_analyze(plan, results, wall, cpu, base->material.caliper, &rep)) != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+  if (!a.quiet) {
+    print_report(plan, &rep, jobs);
+    print_summary(plan, &rep);
+  }
+  st = rs_output_write_study(path, base, &rep);
+  if (st == RS_OK) {
+    snprintf(path, sizeof path, "%s/study.csv", dir);
+    st = rs_output_write_study_csv(path, &rep);
+  }
+  if (st != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+  snprintf(path, sizeof path, "%s/study.png", dir);
+  st = rs_plot_study(&rep, base->title, path, NULL);
+  if (st != RS_OK) {
+    code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
+                    rs_error_message());
+    goto done;
+  }
+  if (!a.quiet)
+    printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
+           now_seconds() - t_start);
+
+done:
+  rs_study_report_free(&rep);
+  for (int i = 0; jobs && i < n_runs_of(plan); ++i) rs_reel_result_destroy(&jobs[i].result);
+  for (int i = 0; scenes && i < n_runs_of(plan); ++i) rs_scene_destroy(&scenes[i]);
+  free(scenes);
+  free(jobs);
+  free(results);
+  free(wall);
+  free(cpu);
+  free(sets);
+  rs_study_plan_destroy(&plan);
+  rs_scene_destroy(&base);
+  free(a.sets);
+  sigaction(SIGINT, &old, NULL);
+  return code;
+}
