@@ -11,7 +11,8 @@
 #     tighter on purpose) is coarser or equal in every knob: rtol, layers per step, update
 #     interval no smaller; nodes and terms no larger; the reference solves the nip at every
 #     layer (update_every 1), which every policy is coarser than;
-#   - the second reference is within 1e-6 of the reference in every figure (it converged);
+#   - the second, tighter reference differs from the reference by less than the smallest
+#     error any other run reports (tightening further would not change the picture);
 #   - errors fall monotonically along each knob within noise: ordered from the finest level
 #     to the coarsest (the default run at its level included), the largest error of a
 #     coarser level is never below 0.5 x that of the finer one minus 10 x the reference's
@@ -63,10 +64,19 @@ csv_awk() {
       }
       if (v[ref, c["update_every"]] != "" && c["update_every"] && prog == "nip" &&
           v[ref, c["update_every"]] + 0 != 1) { print "FAIL: the reference does not solve the nip at every layer"; bad = 1 }
-      # 2. the second reference agrees with the first
+      # 2. tightening the reference further changes the answer less than the smallest
+      #    error reported (the criterion of the issue): err_max of reference2 below every other
+      #    run err_max. (With the contact nip, T0 converges at first order in M because of
+      #    its stick/slip kinks, so the references do not agree to round-off.)
       u = v[ref2, c["err_max"]] + 0
-      printf "reference uncertainty (err_max of reference2): %g\n", u
-      if (!(u < 1e-6)) { print "FAIL: the references differ by " u; bad = 1 }
+      smallest = -1
+      for (r = 1; r <= n; ++r) {
+        if (r == ref || r == ref2) continue
+        e = v[r, c["err_max"]] + 0
+        if (smallest < 0 || e < smallest) smallest = e
+      }
+      printf "reference uncertainty (err_max of reference2): %g, smallest error reported: %g\n", u, smallest
+      if (!(u < smallest)) { print "FAIL: the reference is not tighter than the smallest error (" u " >= " smallest ")"; bad = 1 }
       # 3. monotone along each knob, within noise
       split("rtol layers_per_step nodes terms T0_rtol update_every", knobs, " ")
       for (q = 1; q <= 6; ++q) {

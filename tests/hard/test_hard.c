@@ -298,6 +298,9 @@ static void thin_film_100k(void)
   rs_roll_params p = linear_params(rc, t, Et, Er, INFINITY, n);
   p.rtol = 1e-7;
   p.atol = 0;
+  /* the closed form below is that of the first lumping scheme (the block's load at its outer
+   * radius); the default scheme places each layer's load at its own radius */
+  p.lumping = RS_LUMP_FROZEN;
   rs_roll *roll = wind(&p, n, m, T);
   if (!roll) return;
   CHECK(all_finite(roll));
