@@ -8,6 +8,23 @@
 #include "output/h5_util.h"
 #include "reelsim/nip_contact.h"
 
+/* One 1-D dataset of doubles, for the tables below. */
+typedef struct nip_column {
+  const char *name;
+  const double *data;
+  size_t n;
+  const char *units, *description;
+} nip_column;
+
+static rs_status write_columns(hid_t g, const nip_column *cols, size_t count)
+{
+  rs_status st = RS_OK;
+  for (size_t k = 0; st == RS_OK && k < count; ++k)
+    st = rs_h5_write_1d(g, cols[k].name, cols[k].data, cols[k].n, cols[k].units,
+                        cols[k].description);
+  return st;
+}
+
 static rs_status write_flags(hid_t g, const char *name, const unsigned char *flags, size_t n,
                              const char *description)
 {
@@ -34,15 +51,13 @@ static rs_status write_profile(hid_t parent, int i, double radius, const rs_nip_
   for (size_t k = 0; st == RS_OK && k < sizeof attrs / sizeof attrs[0]; ++k)
     st = rs_h5_attr_double(g, attrs[k].name, attrs[k].v);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "iterations", s->iterations);
-  if (st == RS_OK) st = rs_h5_write_1d(g, "x", s->x, M, "m", "nodes across the nip, in the direction of travel");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "pressure", s->pressure, M, "Pa", "contact pressure at the nodes, compression positive");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "x_shear", s->x_shear, E, "m", "element midpoints, where the shears live");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "shear_upper", s->shear_upper, E, "Pa", "shear tau+ on the sheet's roll face");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "shear_lower", s->shear_lower, E, "Pa", "shear tau- on the sheet's drum face");
+  const nip_column cols[] = {
+      {"x", s->x, M, "m", "nodes across the nip, in the direction of travel"},
+      {"pressure", s->pressure, M, "Pa", "contact pressure at the nodes, compression positive"},
+      {"x_shear", s->x_shear, E, "m", "element midpoints, where the shears live"},
+      {"shear_upper", s->shear_upper, E, "Pa", "shear tau+ on the sheet's roll face"},
+      {"shear_lower", s->shear_lower, E, "Pa", "shear tau- on the sheet's drum face"}};
+  if (st == RS_OK) st = write_columns(g, cols, sizeof cols / sizeof cols[0]);
   if (st == RS_OK)
     st = write_flags(g, "slip_upper", s->slip_upper, E, "1 where the sheet slips on the roll, 0 where it sticks");
   if (st == RS_OK)
@@ -69,16 +84,13 @@ rs_status rs_h5_write_nip(hid_t loc, const rs_scene *scene, const rs_reel_result
   long long *it = malloc((n ? n : 1) * sizeof *it);
   if (!it && st == RS_OK) st = RS_ERROR(RS_ERR_MEMORY, "out of memory for the nip record");
   for (size_t i = 0; it && i < n; ++i) it[i] = res->nip_iterations[i];
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "radius", res->nip_radius, n, "m", "roll radius where the nip was solved (kept solves)");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "wound_on_tension", res->nip_T0, n, "N/m", "wound-on tension T0 found there");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "web_tension", res->nip_Ti, n, "N/m", "web tension Ti there (recipe)");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "half_width", res->nip_a, n, "m", "contact half-width a (0: friction model)");
-  if (st == RS_OK)
-    st = rs_h5_write_1d(g, "load", res->nip_solve_load, n, "N/m", "nip load P of the converged nip (eq. (21))");
+  const nip_column cols[] = {
+      {"radius", res->nip_radius, n, "m", "roll radius where the nip was solved (kept solves)"},
+      {"wound_on_tension", res->nip_T0, n, "N/m", "wound-on tension T0 found there"},
+      {"web_tension", res->nip_Ti, n, "N/m", "web tension Ti there (recipe)"},
+      {"half_width", res->nip_a, n, "m", "contact half-width a (0: friction model)"},
+      {"load", res->nip_solve_load, n, "N/m", "nip load P of the converged nip (eq. (21))"}};
+  if (st == RS_OK) st = write_columns(g, cols, sizeof cols / sizeof cols[0]);
   if (st == RS_OK)
     st = rs_h5_write_1d_int64(g, "iterations", it, n, "", "stick/slip iterations of the solve");
   free(it);
