@@ -151,6 +151,7 @@ static rs_status read_nd(const rs_reader *r, const char *path, int max_rank, dou
 {
   hid_t d;
   *data = NULL;
+  dims[0] = dims[1] = 1; /* set by open_dataset on success; -O3 cannot see that */
   rs_status st = open_dataset(r, path, max_rank, &d, rank, dims);
   if (st == RS_OK) {
     st = read_all(r, path, d, (size_t)(dims[0] * dims[1]), data);
