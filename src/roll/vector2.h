@@ -1,0 +1,13 @@
+/* CVODE's hot vector operations for the roll engine's 2-component state (w, ln y).
+ * Private to src/roll. */
+#ifndef REELSIM_ROLL_VECTOR2_H
+#define REELSIM_ROLL_VECTOR2_H
+
+#include <nvector/nvector_serial.h>
+
+/* Replaces, in the ops table of v (a serial vector of length 2), the operations CVODE's
+ * BDF/Newton step calls most with straight-line 2-component versions. Vectors CVODE
+ * clones from v inherit them. Returns 0, or -1 if v is not a serial vector of length 2. */
+int rs_roll_vector2_specialise(N_Vector v);
+
+#endif
