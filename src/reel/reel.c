@@ -268,15 +268,20 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
   }
 
   for (int first = 0; first < N;) {
-    int m = N - first < per_step ? N - first : per_step;
+    int m = N - first < per_step ? N - first : per_step, solved = 0, force = 0;
     if (nip) {
       const double R = rs_roll_outer_radius(roll);
       const int want_profile = next_prof < n_prof && R >= prof_r[next_prof];
       if (rs_nip_policy_due(&pol, first) || want_profile) {
         const int n = rs_roll_layers(roll);
+        /* The web tension of the layer about to go on (its radius rs_roll_layer_radius(roll,
+         * first) = R + caliper), the Ti that layer gets below: with Ti(R) the layer's T0 was
+         * Ti(R + t) + (T0 - Ti)(R), off the nip's T0 by t dTi/dr, and where T0 -> 0 under a
+         * taper (center-surface winder, mu_roll = 0: T0 = share Ti exactly) that made it
+         * negative and stopped the run as "slack" (tests/hard/test_hard_nip.c). */
         rs_nip_state ns = {.roll_radius = R,
                            .core_radius = sc->core.radius,
-                           .web_tension = rs_recipe_eval(&sc->tension, R),
+                           .web_tension = rs_recipe_eval(&sc->tension, rs_roll_layer_radius(roll, first)),
                            .nip_load = rs_recipe_eval(&sc->nip.load, R),
                            .surface_modulus = rs_roll_surface_modulus(roll),
                            .surface_pressure = n > 0 ? -rs_roll_sigma_r(roll)[n - 1] : 0.0};
@@ -312,6 +317,7 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
         }
         while (want_profile && next_prof < n_prof && prof_r[next_prof] <= R) ++next_prof;
         if (snap && (st = rs_roll_save(roll, snap))) goto done;
+        solved = 1;
       }
     }
     for (int b = 0; b < m; ++b) {
@@ -319,8 +325,30 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
       double r = rs_roll_layer_radius(roll, j);
       double Ti = rs_recipe_eval(&sc->tension, r), T0 = Ti;
       double load = nip ? rs_recipe_eval(&sc->nip.load, r) : 0.0;
-      /* the nip's part of T0, as solved or predicted at the radius the layer goes on at */
-      if (nip) T0 = Ti + rs_nip_policy_predict(&pol, r - sc->material.caliper);
+      /* the nip's part of T0, as solved or predicted at the radius the layer goes on at
+       * (the roll's outer radius then, computed as rs_roll_outer_radius does, so that at a
+       * solve the prediction is the solve's NIT bit for bit; r - caliper differs by an ulp,
+       * which the slope of NIT turns into 1e-13 N/m) */
+      if (nip) {
+        double nit = rs_nip_policy_predict(&pol, rs_roll_layer_radius(roll, j - 1));
+        T0 = Ti + nit;
+        /* T0 = 0 exactly (a taper to 0 on a center-surface winder with mu_roll = 0, where
+         * T0 = share Ti; mu_roll = 0 on a surface winder) comes out of Ti + NIT with a
+         * round-off of ~1e-13 N/m either way: below the nip's accuracy (load_rtol 1e-9) of
+         * the tensions it is made of, it is 0, not a slack web (tests/hard/test_hard_nip.c) */
+        if (T0 < 0.0 && T0 >= -1e-9 * (fabs(Ti) + fabs(pol.n1) + fabs(pol.n2))) T0 = 0.0;
+        /* A negative PREDICTED T0 is not yet a slack web: the linear prediction of NIT
+         * overshoots where NIT has a kink (a tension table's kink when T0 does not follow
+         * Ti), and the adaptive check would only see it at the next solve. Solve here
+         * instead; a solve's own T0 < 0 stops the run above. Terminates: the solve is due
+         * at once, and after it layer `first` gets the solve's T0 (>= 0) or the policy
+         * rewinds with a shorter interval. */
+        if (!(T0 >= 0.0) && isfinite(T0) && b == 0 && !solved) {
+          pol.next = first;
+          force = 1;
+          break;
+        }
+      }
       if (!(T0 >= 0.0) || !isfinite(T0)) {
         st = RS_ERROR(RS_ERR_SOLVER,
                       "wound-on tension %g N/m at r = %.6g m (layer %d of %d) is %s: the web would "
@@ -334,6 +362,7 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
       res->wound_on_tension[j] = T0;
       block[b] = T0;
     }
+    if (force) continue;
     if ((st = rs_roll_add_layers(roll, m, block))) {
       rs_error_wrap("winding layers %d-%d of %d (r = %.6g m)", first + 1, first + m, N,
                     rs_roll_layer_radius(roll, first + m - 1));
