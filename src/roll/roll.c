@@ -54,7 +54,8 @@ struct rs_roll {
   double *sigma_theta;  /* [cap] */
   /* work arrays over nodes 0..n (node 0 = core) */
   double *g2;           /* g^2 at the nodes for the current increment */
-  double *lg2;
+  double *lg2;          /* ln g^2, computed when the interpolation first needs it */
+  unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch */
   double *w, *L;        /* (w, ln y) at the nodes */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
   double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
@@ -77,7 +78,16 @@ struct rs_roll {
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
  * the layer coordinate xi = (r - r_c)/t. With dg2 != NULL also d(g^2)/dx = g^2 v'(xi) r/t
  * (continuous: the interpolant is C^1), which the node interpolation needs. */
-static double roll_g2_at(const rs_roll *roll, double x, double *dg2)
+static inline double roll_lg2(rs_roll *roll, int j)
+{
+  if (roll->lg2_epoch[j] != roll->epoch) {
+    roll->lg2[j] = log(roll->g2[j]);
+    roll->lg2_epoch[j] = roll->epoch;
+  }
+  return roll->lg2[j];
+}
+
+static double roll_g2_at(rs_roll *roll, double x, double *dg2)
 {
   const double r = exp(x), xi = (r - roll->p.core_radius) / roll->p.caliper;
   const int last = roll->nodes_in_use - 1;
@@ -87,10 +97,9 @@ static double roll_g2_at(const rs_roll *roll, double x, double *dg2)
     return roll->g2[j < 0 ? 0 : last];
   }
   double f = xi - j;
-  const double *lg = roll->lg2;
-  double y0 = lg[j], y1 = lg[j + 1];
-  double m0 = j > 0 ? 0.5 * (lg[j + 1] - lg[j - 1]) : lg[j + 1] - lg[j];
-  double m1 = j + 1 < last ? 0.5 * (lg[j + 2] - lg[j]) : lg[j + 1] - lg[j];
+  double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
+  double m0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
+  double m1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
   double f2 = f * f, f3 = f2 * f;
   double v = (2 * f3 - 3 * f2 + 1) * y0 + (f3 - 2 * f2 + f) * m0 + (-2 * f3 + 3 * f2) * y1 + (f3 - f2) * m1;
   double g2 = exp(v);
@@ -149,6 +158,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->sigma_theta);
   free(roll->g2);
   free(roll->lg2);
+  free(roll->lg2_epoch);
   free(roll->w);
   free(roll->L);
   free(roll->xnode);
@@ -200,6 +210,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->sigma_theta = calloc(cap, sizeof(double));
   roll->g2 = calloc(cap + 1, sizeof(double));
   roll->lg2 = calloc(cap + 1, sizeof(double));
+  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
   roll->w = calloc(cap + 1, sizeof(double));
   roll->L = calloc(cap + 1, sizeof(double));
   roll->xnode = calloc(cap + 1, sizeof(double));
@@ -208,7 +219,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->P_mean = calloc(cap + 1, sizeof(double));
   roll->dsr = calloc(cap + 1, sizeof(double));
   roll->dsh = calloc(cap + 1, sizeof(double));
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->w || !roll->L || !roll->xnode ||
+  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->lg2_epoch || !roll->w || !roll->L || !roll->xnode ||
       !roll->block_share || !roll->P_node || !roll->P_mean || !roll->dsr || !roll->dsh) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
@@ -264,35 +275,54 @@ typedef struct roll_jet {
   double x, w, dw, d2w, L;
 } roll_jet;
 
-static roll_jet roll_jet_at(const rs_roll *roll, double x, double w, double L)
+static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
 {
   double dg2 = 0.0, g2 = roll_g2_at(roll, x, &dg2);
   double dw = g2 - 1.0 - 2.0 * w - w * w;
   return (roll_jet){x, w, dw, dg2 - 2.0 * (1.0 + w) * dw, L};
 }
 
-/* (w, L) at x inside the step [a, b] by the quintic Hermite interpolant of the values and
- * first two derivatives at its ends (error h^6 y^(6) / 46080 at most: far below the
- * step's own local error, h^6 y^(6) / 6 order of magnitude for BDF5), instead of asking
- * CVODE for its interpolant node by node (CVodeGetDky was a tenth of the engine's time). */
-static void roll_interpolate(const roll_jet *a, const roll_jet *b, double x, double *w, double *L)
+/* (w, L) inside the step [a, b] by the quintic Hermite interpolant of the values and first
+ * two derivatives at its ends (error h^6 y^(6) / 46080 at most: far below the step's own
+ * local error, of order h^6 y^(6) / 6 for BDF5), instead of asking CVODE for its
+ * interpolant node by node (CVodeGetDky was a tenth of the engine's time). The quintic is
+ * kept as its monomial coefficients in s = (x - a)/h, so a node costs two Horner sums. */
+typedef struct roll_quintic {
+  double a, inv_h, cw[6], cL[6];
+} roll_quintic;
+
+/* coefficients of p(s) from p, h p', h^2 p'' at s = 0 (p0, d0, c0) and s = 1 (p1, d1, c1) */
+static void roll_quintic_coef(double p0, double d0, double c0, double p1, double d1, double c1,
+                              double c[6])
 {
-  const double h = b->x - a->x, s = (x - a->x) / h;
-  const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
-  const double h0 = 1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5; /* value at a */
-  const double h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5;       /* h x slope at a */
-  const double h2 = 0.5 * (s2 - 3.0 * s3 + 3.0 * s4 - s5);    /* h^2 x curvature at a */
-  const double h3 = 0.5 * (s3 - 2.0 * s4 + s5);               /* h^2 x curvature at b */
-  const double h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;          /* h x slope at b */
-  const double h5 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;         /* value at b */
-  const double hh = h * h;
-  *w = h0 * a->w + h5 * b->w + h * (h1 * a->dw + h4 * b->dw) + hh * (h2 * a->d2w + h3 * b->d2w);
-  *L = h0 * a->L + h5 * b->L + h * (h1 * a->w + h4 * b->w) + hh * (h2 * a->dw + h3 * b->dw);
+  c[0] = p0;
+  c[1] = d0;
+  c[2] = 0.5 * c0;
+  c[3] = 10.0 * (p1 - p0) - 6.0 * d0 - 4.0 * d1 - 1.5 * c0 + 0.5 * c1;
+  c[4] = 15.0 * (p0 - p1) + 8.0 * d0 + 7.0 * d1 + 1.5 * c0 - c1;
+  c[5] = 6.0 * (p1 - p0) - 3.0 * (d0 + d1) - 0.5 * (c0 - c1);
+}
+
+static void roll_quintic_make(const roll_jet *a, const roll_jet *b, roll_quintic *q)
+{
+  const double h = b->x - a->x, hh = h * h;
+  q->a = a->x;
+  q->inv_h = 1.0 / h;
+  roll_quintic_coef(a->w, h * a->dw, hh * a->d2w, b->w, h * b->dw, hh * b->d2w, q->cw);
+  roll_quintic_coef(a->L, h * a->w, hh * a->dw, b->L, h * b->w, hh * b->dw, q->cL);
+}
+
+static inline void roll_quintic_eval(const roll_quintic *q, double x, double *w, double *L)
+{
+  const double s = (x - q->a) * q->inv_h;
+  const double *cw = q->cw, *cL = q->cL;
+  *w = ((((cw[5] * s + cw[4]) * s + cw[3]) * s + cw[2]) * s + cw[1]) * s + cw[0];
+  *L = ((((cL[5] * s + cL[4]) * s + cL[3]) * s + cL[2]) * s + cL[1]) * s + cL[0];
 }
 
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k.
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
- * (roll_interpolate), so the cost per node is a short polynomial, not a CVODE call. */
+ * (roll_quintic_eval), so the cost per node is a short polynomial, not a CVODE call. */
 static rs_status roll_integrate(rs_roll *roll, int k)
 {
   const double *xn = roll->xnode, x0 = xn[0], xs = xn[k];
@@ -327,8 +357,16 @@ static rs_status roll_integrate(rs_roll *roll, int k)
                       exp(tret), exp(xs),
                       roll->cvode_msg[0] ? roll->cvode_msg : CVodeGetReturnFlagName(flag));
     const roll_jet cur = roll_jet_at(roll, tret, y[0], y[1]);
-    for (; next <= k && xn[next] <= tret; ++next)
-      roll_interpolate(&prev, &cur, xn[next], &roll->w[next], &roll->L[next]);
+    if (xn[next] <= tret) {
+      roll_quintic q;
+      roll_quintic_make(&prev, &cur, &q);
+      for (; next <= k && xn[next] <= tret; ++next)
+        roll_quintic_eval(&q, xn[next], &roll->w[next], &roll->L[next]);
+      if (next > k) { /* the outer node is the step's end: exact, not interpolated */
+        roll->w[k] = cur.w;
+        roll->L[k] = cur.L;
+      }
+    }
     prev = cur;
   }
   long nfe = 0, nje = 0;
@@ -353,10 +391,23 @@ static rs_status roll_set_modulus(rs_roll *roll, int k)
                       "the radial law is outside its range",
                       Er, rc + j * t, P);
     roll->g2[j] = roll->p.E_theta / Er;
-    roll->lg2[j] = log(roll->g2[j]);
   }
+  /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
+   * long roll): a log at every node at every increment was 7 % of the engine's time */
+  roll->epoch++;
   roll->nodes_in_use = k + 1;
   return RS_OK;
+}
+
+/* exp(d) for the decay over one layer, d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
+ * the Taylor sum to d^7 (relative error d^8/8! < 2e-17 for |d| < 0.03) costs 8 flops where
+ * exp() costs ~20 ns, and the product down the roll carries ~N x 1e-16 of rounding (1e-12
+ * for 10,000 layers). A larger step (a very soft web, g t / r > 0.03) takes exp(). */
+static inline double roll_exp_step(double d)
+{
+  if (fabs(d) >= 0.03) return exp(d);
+  return 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
+         d * (1.0 / 720 + d * (1.0 / 5040)))))));
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
@@ -389,9 +440,11 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
       mean[j] = V / (m - b);
     }
   }
-  const double Lb = L[k_old + 1];
-  for (int j = 0; j <= k_old; ++j) {
-    const double e = exp(L[j] - Lb), ds = -S * e;
+  /* below the block, from the top down: e_j = y(r_j)/y(s_b) = e_{j+1} exp(L_j - L_{j+1}) */
+  double e = 1.0;
+  for (int j = k_old; j >= 0; --j) {
+    e = e > 1e-290 ? e * roll_exp_step(L[j] - L[j + 1]) : 0.0; /* no subnormals */
+    const double ds = -S * e;
     roll->dsr[j] = ds;
     roll->dsh[j] = ds * (1.0 + w[j]);
     if (mean) mean[j] = V * e / m;
@@ -410,23 +463,27 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
     above += T0[i];
     roll->block_share[i] = total > 0.0 ? above / total : 0.0;
   }
-  const double Ls = roll->L[k], scale = -total / s;
+  const double scale = -total / s;
   /* First every node's increment (ds into L, ds + r ds' into w, which are spent), then the
    * state: an increment that fails leaves the roll exactly as it was, every finished
-   * layer intact. */
-  for (int j = 0; j <= k; ++j) {
-    double ds = scale * exp(roll->L[j] - Ls);
-    double hoop = ds * (1.0 + roll->w[j]);
-    if (!isfinite(ds) || !isfinite(hoop)) {
+   * layer intact. From the top down, e_j = y(r_j)/y(s) by the same one-layer decays as the
+   * corrected scheme (roll_block_increment), so that m = 1 is the same arithmetic in both. */
+  double e = 1.0, L_above = roll->L[k];
+  for (int j = k; j >= 0; --j) {
+    if (j < k) e = e > 1e-290 ? e * roll_exp_step(roll->L[j] - L_above) : 0.0;
+    L_above = roll->L[j];
+    double ds = scale * e;
+    roll->L[j] = ds;
+    roll->w[j] = ds * (1.0 + roll->w[j]);
+  }
+  for (int j = 0; j <= k; ++j)
+    if (!isfinite(roll->L[j]) || !isfinite(roll->w[j])) {
       if (j == 0)
         return RS_ERROR(RS_ERR_SOLVER,
                         "non-finite stress increment at the core (outer radius %.9g m)", s);
       return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
                       rc + j * t, j);
     }
-    roll->L[j] = ds;
-    roll->w[j] = hoop;
-  }
   roll->core_sigma += roll->L[0];
   for (int j = 1; j <= k; ++j) {
     double ds = roll->L[j], hoop = roll->w[j];
