@@ -37,7 +37,6 @@
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "reelsim/roll.h"
@@ -243,7 +242,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (CVodeSStolerances(roll->cvode, roll->p.rtol, roll->p.atol) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
   roll->J = SUNDenseMatrix(2, 2, roll->sunctx);
-  roll->LS = SUNLinSol_Dense(roll->y, roll->J, roll->sunctx);
+  roll->LS = rs_roll_linsol2_create(roll->sunctx); /* src/roll/vector2.c */
   if (!roll->J || !roll->LS) goto cvode_fail;
   if (CVodeSetLinearSolver(roll->cvode, roll->LS, roll->J) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetJacFn(roll->cvode, roll_jac) != CV_SUCCESS) goto cvode_fail;
