@@ -52,8 +52,8 @@ int main(int argc, char **argv)
   for (int m = n / 8; m <= n; m *= 2) {
     rs_roll_stats st;
     double core, dt = wind(m, rtol, &st, &core);
-    printf("%8d %10.4f %12.3e %14ld %12.1f %14.6e\n", m, dt, dt / ((double)m * m), st.cvode_steps,
-           (double)st.cvode_steps / st.increments, core);
+    printf("%8d %10.4f %12.3e %14ld %12.1f %14.6e %8.2f\n", m, dt, dt / ((double)m * m), st.cvode_steps,
+           (double)st.cvode_steps / st.increments, core, (double)st.rhs_evals / st.cvode_steps);
     if (m * 2 > n && m != n) m = n / 2;
   }
   return 0;
