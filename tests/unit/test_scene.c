@@ -203,7 +203,7 @@ static void defaults_filled(void)
     CHECK(s->core.kind == RS_CORE_RIGID);
     CHECK(s->n_layers == 100);
     CHECK(s->nip.model == RS_NIP_NONE);
-    CHECK(s->numerics.layers_per_step == 1 && s->numerics.rtol == 1e-6);
+    CHECK(s->numerics.layers_per_step == 1 && s->numerics.rtol == 1e-5);
     CHECK(s->numerics.atol == 0.0 && s->numerics.max_steps == 0);
     CHECK(strcmp(s->output.file, "plain-roll.h5") == 0 && s->output.history_every == 0);
     CHECK(strstr(s->resolved_text, "layers_per_step: 1") != NULL);
