@@ -2,6 +2,7 @@
  * give the web tension and nip load, the nip model (if the scene has one) gives the
  * wound-on tension T0, and the build-up engine winds it on. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -290,6 +291,15 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
         if ((st = rs_nip_wound_on_tension(nip, &ns, &T0))) {
           rs_error_wrap("nip model '%s' at roll radius %.6g m (layer %d of %d)", rs_nip_name(nip),
                         R, first + 1, N);
+          if (st == RS_ERR_INPUT && n > 0) {
+            /* the recipe turned impossible part-way (e.g. a tension the drum cannot carry
+             * beyond some radius): the scene was sound at the start and the finished
+             * layers stand, so this is the run failing there (exit 3, --keep-partial),
+             * not a scene to reject (exit 2, nothing wound) */
+            char why[1024];
+            snprintf(why, sizeof why, "%s", rs_error_message());
+            st = RS_ERROR(RS_ERR_SOLVER, "cannot wind past layer %d: %s", n, why);
+          }
           goto done;
         }
         if (!(T0 >= 0.0) || !isfinite(T0)) {

@@ -37,3 +37,10 @@ rs_cli_script(disk_full_readonly disk_full.sh ${SC}/small.yaml readonly)
 set_tests_properties(cli.disk_full_readonly PROPERTIES SKIP_RETURN_CODE 77)
 rs_cli_test(keep_partial_check_refused 2 [[check: unknown option '--keep-partial']]
             check ${SC}/small.yaml --keep-partial)
+# the nip refuses part-way (the drum cannot carry the rising tension): exit 3, finished
+# layers kept with --keep-partial
+rs_cli_fails(fail_drum_midrun 3
+  [[solver failure: .*cannot wind past layer [0-9]+: .*nip\.friction\.drum]]
+  [[^reelsim:   [1-9][0-9]* of [0-9]+ layers were wound; no output written$]]
+  -- ${SC}/drum-midrun.yaml)
+rs_cli_script(keep_partial_drum_midrun keep_partial.sh ${SC}/drum-midrun.yaml)
