@@ -37,6 +37,9 @@ rs_status rs_radial_law_prepare(rs_radial_law *law);
 /* Tangent radial modulus E_r(P) in Pa at interlayer pressure P >= 0 (Pa, compression
  * positive). Table: monotone cubic between points, the end values held outside them. */
 double rs_radial_modulus(const rs_radial_law *law, double P);
+/* The same at n pressures: E[i] = E_r(P[i]) (one dispatch on the law for the whole array,
+ * so that the loops vectorise; the roll engine evaluates every layer at every increment). */
+void rs_radial_modulus_n(const rs_radial_law *law, const double *P, double *E, int n);
 
 typedef struct rs_material {
   char name[RS_NAME_MAX];

@@ -93,6 +93,24 @@ rs_status rs_radial_law_prepare(rs_radial_law *law)
  *   pfeiffer  K2 (P + K1)                    (Pfeiffer 1968: P = K1 (exp(K2 eps) - 1))
  *   hakiel    sum_i C_i P^i                  (Hakiel 1987)
  *   table     monotone cubic Hermite through (P_i, E_i), end values held outside. */
+void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, double *restrict E,
+                         int n)
+{
+  switch (law->law) {
+  case RS_RADIAL_LINEAR:
+    for (int i = 0; i < n; ++i) E[i] = law->E_r;
+    return;
+  case RS_RADIAL_PFEIFFER: {
+    const double K1 = law->K1, K2 = law->K2;
+    for (int i = 0; i < n; ++i) E[i] = K2 * ((P[i] < 0.0 ? 0.0 : P[i]) + K1);
+    return;
+  }
+  default:
+    for (int i = 0; i < n; ++i) E[i] = rs_radial_modulus(law, P[i]);
+    return;
+  }
+}
+
 double rs_radial_modulus(const rs_radial_law *law, double P)
 {
   if (P < 0.0) P = 0.0; /* a layer never pulls on its neighbour: separation = no stiffness gain */

@@ -52,7 +52,7 @@ struct rs_roll {
   double *sigma_r;      /* [cap] per layer at s_j */
   double *sigma_theta;  /* [cap] */
   /* work arrays over nodes 0..n (node 0 = core) */
-  double *g2;           /* g^2 at the nodes for the current increment */
+  double *Er;           /* E_r at the nodes for the current increment; g^2 = E_theta/E_r */
   double *lg2;          /* ln g^2, computed when the interpolation first needs it */
   unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch */
   double *w, *L;        /* (w, ln y) at the nodes */
@@ -80,7 +80,7 @@ struct rs_roll {
 static inline double roll_lg2(rs_roll *roll, int j)
 {
   if (roll->lg2_epoch[j] != roll->epoch) {
-    roll->lg2[j] = log(roll->g2[j]);
+    roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
     roll->lg2_epoch[j] = roll->epoch;
   }
   return roll->lg2[j];
@@ -93,7 +93,7 @@ static double roll_g2_at(rs_roll *roll, double x, double *dg2)
   int j = xi <= 0.0 ? -1 : (int)xi;
   if (j < 0 || j >= last) {
     if (dg2) *dg2 = 0.0;
-    return roll->g2[j < 0 ? 0 : last];
+    return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
   }
   double f = xi - j;
   double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
@@ -155,7 +155,7 @@ void rs_roll_destroy(rs_roll **rollp)
   if (roll->sunctx) SUNContext_Free(&roll->sunctx);
   free(roll->sigma_r);
   free(roll->sigma_theta);
-  free(roll->g2);
+  free(roll->Er);
   free(roll->lg2);
   free(roll->lg2_epoch);
   free(roll->w);
@@ -207,7 +207,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   size_t cap = (size_t)params->max_layers;
   roll->sigma_r = calloc(cap, sizeof(double));
   roll->sigma_theta = calloc(cap, sizeof(double));
-  roll->g2 = calloc(cap + 1, sizeof(double));
+  roll->Er = calloc(cap + 1, sizeof(double));
   roll->lg2 = calloc(cap + 1, sizeof(double));
   roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
   roll->w = calloc(cap + 1, sizeof(double));
@@ -218,7 +218,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->P_mean = calloc(cap + 1, sizeof(double));
   roll->dsr = calloc(cap + 1, sizeof(double));
   roll->dsh = calloc(cap + 1, sizeof(double));
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->g2 || !roll->lg2 || !roll->lg2_epoch || !roll->w || !roll->L || !roll->xnode ||
+  if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch || !roll->w || !roll->L || !roll->xnode ||
       !roll->block_share || !roll->P_node || !roll->P_mean || !roll->dsr || !roll->dsh) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
@@ -337,7 +337,7 @@ static rs_status roll_integrate(rs_roll *roll, int k)
        * softer than the web: kc = E_theta/E_c - 1) like 1/(x - x_c + 1/kc), over dx ~ 1/kc:
        * start inside the shorter scale, or the first Newton iterations diverge */
       CVodeSetInitStep(roll->cvode,
-                       0.05 / fmax(sqrt(roll->g2[0] + 1.0), fabs(roll->kc) + 1.0)) != CV_SUCCESS)
+                       0.05 / fmax(sqrt(roll->p.E_theta / roll->Er[0] + 1.0), fabs(roll->kc) + 1.0)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
 
   int next = 1; /* next node to fill */
@@ -377,20 +377,20 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   return RS_OK;
 }
 
-/* g^2 = E_theta / E_r(P) at the nodes 0..k, P from roll->P_node: the modulus an
- * integration sees. */
+/* E_r(P) at the nodes 0..k, P from roll->P_node: the modulus an integration sees
+ * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
 static rs_status roll_set_modulus(rs_roll *roll, int k)
 {
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
-  for (int j = 0; j <= k; ++j) {
-    double P = roll->P_node[j], Er = rs_radial_modulus(&roll->p.radial, P);
-    if (!(Er > 0.0) || !isfinite(Er))
-      return RS_ERROR(RS_ERR_SOLVER,
-                      "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not positive: "
-                      "the radial law is outside its range",
-                      Er, rc + j * t, P);
-    roll->g2[j] = roll->p.E_theta / Er;
-  }
+  rs_radial_modulus_n(&roll->p.radial, roll->P_node, roll->Er, k + 1);
+  int ok = 1;
+  for (int j = 0; j <= k; ++j) ok &= roll->Er[j] > 0.0 && roll->Er[j] < INFINITY;
+  if (!ok)
+    for (int j = 0; j <= k; ++j)
+      if (!(roll->Er[j] > 0.0 && roll->Er[j] < INFINITY))
+        return RS_ERROR(RS_ERR_SOLVER,
+                        "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
+                        "positive: the radial law is outside its range",
+                        roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
   /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
    * long roll): a log at every node at every increment was 7 % of the engine's time */
   roll->epoch++;
@@ -540,7 +540,9 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   const int k_old = roll->n, k = roll->n + m;
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  for (int j = 0; j <= k; ++j) roll->P_node[j] = roll_node_pressure(roll, j);
+  roll->P_node[0] = -roll->core_sigma;
+  for (int j = 1; j <= k_old; ++j) roll->P_node[j] = -roll->sigma_r[j - 1];
+  for (int j = k_old + 1; j <= k; ++j) roll->P_node[j] = 0.0; /* being wound: no pressure yet */
   rs_status st = roll_set_modulus(roll, k);
   if (st == RS_OK) st = roll_integrate(roll, k);
   if (st) return st;
