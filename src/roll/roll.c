@@ -311,17 +311,23 @@ static void roll_quintic_make(const roll_jet *a, const roll_jet *b, roll_quintic
   roll_quintic_coef(a->L, h * a->w, hh * a->dw, b->L, h * b->w, hh * b->dw, q->cL);
 }
 
-static inline void roll_quintic_eval(const roll_quintic *q, double x, double *w, double *L)
+/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises) */
+static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
+                              double *restrict L, int n)
 {
-  const double s = (x - q->a) * q->inv_h;
-  const double *cw = q->cw, *cL = q->cL;
-  *w = ((((cw[5] * s + cw[4]) * s + cw[3]) * s + cw[2]) * s + cw[1]) * s + cw[0];
-  *L = ((((cL[5] * s + cL[4]) * s + cL[3]) * s + cL[2]) * s + cL[1]) * s + cL[0];
+  const double a = q->a, inv_h = q->inv_h;
+  const double w0 = q->cw[0], w1 = q->cw[1], w2 = q->cw[2], w3 = q->cw[3], w4 = q->cw[4], w5 = q->cw[5];
+  const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
+  for (int i = 0; i < n; ++i) {
+    const double s = (x[i] - a) * inv_h;
+    w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+    L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+  }
 }
 
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k.
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
- * (roll_quintic_eval), so the cost per node is a short polynomial, not a CVODE call. */
+ * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
 static rs_status roll_integrate(rs_roll *roll, int k)
 {
   const double *xn = roll->xnode, x0 = xn[0], xs = xn[k];
@@ -359,8 +365,15 @@ static rs_status roll_integrate(rs_roll *roll, int k)
     if (xn[next] <= tret) {
       roll_quintic q;
       roll_quintic_make(&prev, &cur, &q);
-      for (; next <= k && xn[next] <= tret; ++next)
-        roll_quintic_eval(&q, xn[next], &roll->w[next], &roll->L[next]);
+      /* the last node inside the step: r_j = r_c + j t, so j = (e^x - r_c)/t up to rounding,
+       * settled against the stored ln r_j */
+      int last = (int)((exp(tret) - roll->p.core_radius) / roll->p.caliper);
+      if (last < next) last = next;
+      if (last > k) last = k;
+      while (last > next && xn[last] > tret) --last;
+      while (last < k && xn[last + 1] <= tret) ++last;
+      roll_quintic_fill(&q, xn + next, roll->w + next, roll->L + next, last - next + 1);
+      next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;
         roll->L[k] = cur.L;
@@ -382,9 +395,11 @@ static rs_status roll_integrate(rs_roll *roll, int k)
 static rs_status roll_set_modulus(rs_roll *roll, int k)
 {
   rs_radial_modulus_n(&roll->p.radial, roll->P_node, roll->Er, k + 1);
-  int ok = 1;
-  for (int j = 0; j <= k; ++j) ok &= roll->Er[j] > 0.0 && roll->Er[j] < INFINITY;
-  if (!ok)
+  /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
+   * E_r > 0 checked at load; the pressures are finite: roll_commit); a polynomial or a
+   * table can leave its range */
+  const rs_radial_kind law = roll->p.radial.law;
+  if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER)
     for (int j = 0; j <= k; ++j)
       if (!(roll->Er[j] > 0.0 && roll->Er[j] < INFINITY))
         return RS_ERROR(RS_ERR_SOLVER,
@@ -407,6 +422,28 @@ static inline double roll_exp_step(double d)
   if (fabs(d) >= 0.03) return exp(d);
   return 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
          d * (1.0 / 720 + d * (1.0 / 5040)))))));
+}
+
+/* e_j = y(r_j)/y(r_top) for j = top-1 .. 0, into e[0..top): the products, from the top
+ * down, of the one-layer decays exp(L_j - L_{j+1}) (roll_exp_step: the Taylor sums in a
+ * plain loop that vectorises, then the running product, which takes exp() where a decay
+ * is large). Below 1e-290 the product is 0: no subnormals. */
+static void roll_decays(const double *restrict L, double *restrict e, int top)
+{
+  for (int j = 0; j < top; ++j) {
+    const double d = L[j] - L[j + 1];
+    e[j] = 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
+           d * (1.0 / 720 + d * (1.0 / 5040)))))));
+  }
+  double p = 1.0;
+  for (int j = top - 1; j >= 0; --j) {
+    double t = e[j];
+    /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
+     * increasing there, and far below 1 or negative for d < -0.03): look only then */
+    if (!(t > 0.9705 && t < 1.0304)) t = roll_exp_step(L[j] - L[j + 1]);
+    p = p > 1e-290 ? p * t : 0.0;
+    e[j] = p;
+  }
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
@@ -439,14 +476,15 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
       mean[j] = V / (m - b);
     }
   }
-  /* below the block, from the top down: e_j = y(r_j)/y(s_b) = e_{j+1} exp(L_j - L_{j+1}) */
-  double e = 1.0;
-  for (int j = k_old; j >= 0; --j) {
-    e = e > 1e-290 ? e * roll_exp_step(L[j] - L[j + 1]) : 0.0; /* no subnormals */
-    const double ds = -S * e;
-    roll->dsr[j] = ds;
-    roll->dsh[j] = ds * (1.0 + w[j]);
-    if (mean) mean[j] = V * e / m;
+  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b) */
+  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
+  roll_decays(L, dsr, k_old + 1);
+  if (mean)
+    for (int j = 0; j <= k_old; ++j) mean[j] = V * dsr[j] / m;
+  for (int j = 0; j <= k_old; ++j) {
+    const double ds = -S * dsr[j];
+    dsr[j] = ds;
+    dsh[j] = ds * (1.0 + w[j]);
   }
 }
 
@@ -467,11 +505,10 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
    * state: an increment that fails leaves the roll exactly as it was, every finished
    * layer intact. From the top down, e_j = y(r_j)/y(s) by the same one-layer decays as the
    * corrected scheme (roll_block_increment), so that m = 1 is the same arithmetic in both. */
-  double e = 1.0, L_above = roll->L[k];
-  for (int j = k; j >= 0; --j) {
-    if (j < k) e = e > 1e-290 ? e * roll_exp_step(roll->L[j] - L_above) : 0.0;
-    L_above = roll->L[j];
-    double ds = scale * e;
+  roll_decays(roll->L, roll->dsr, k); /* e_j = y(r_j)/y(s), j < k */
+  roll->dsr[k] = 1.0;
+  for (int j = 0; j <= k; ++j) {
+    double ds = scale * roll->dsr[j];
     roll->L[j] = ds;
     roll->w[j] = ds * (1.0 + roll->w[j]);
   }
@@ -505,7 +542,13 @@ static rs_status roll_commit(rs_roll *roll, int m, const double *T0)
 {
   const int k_old = roll->n, k = roll->n + m;
   const double rc = roll->p.core_radius, t = roll->p.caliper;
-  for (int j = 0; j <= k; ++j)
+  /* 0 x (finite) = 0, 0 x (inf or NaN) = NaN: one sum says whether all are finite */
+  double z0 = 0.0, z1 = 0.0;
+  for (int j = 0; j <= k; ++j) {
+    z0 += 0.0 * roll->dsr[j];
+    z1 += 0.0 * roll->dsh[j];
+  }
+  for (int j = 0; (z0 + z1 != 0.0) && j <= k; ++j)
     if (!isfinite(roll->dsr[j]) || !isfinite(roll->dsh[j]))
       return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                "non-finite stress increment at the core (outer radius %.9g m)",
