@@ -359,6 +359,24 @@ static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, d
   }
 }
 
+/* The first step: BDF starts at order 1 (backward Euler), local error h^2 |w''| / 2, so
+ * h0 = sqrt(2 (rtol |w0| + atol) / |w''(x_c)|) passes the first error test instead of
+ * failing it and shrinking; capped by the relaxation scales (w relaxes from kc towards
+ * g - 1 over dx ~ 1/(2g), and from a large kc (a core much softer than the web) like
+ * 1/(x - x_c + 1/kc): start inside the shorter one, or the first Newton iterations
+ * diverge). */
+static double roll_first_step(rs_roll *roll, double x0)
+{
+  const double cap = 0.05 / fmax(sqrt(roll->p.E_theta / roll->Er[0] + 1.0), fabs(roll->kc) + 1.0);
+  roll->x_anchor = x0;
+  roll->r_anchor = exp(x0);
+  const roll_jet j0 = roll_jet_at(roll, x0, roll->kc, 0.0);
+  const double tol = roll->p.rtol * fabs(roll->kc) + roll->p.atol, d2 = fabs(j0.d2w);
+  if (!(d2 > 0.0)) return cap;
+  const double h = 0.5 * sqrt(2.0 * tol / d2); /* half: a margin for the error estimate */
+  return h < cap ? h : cap;
+}
+
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k.
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
  * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
@@ -376,8 +394,7 @@ static rs_status roll_integrate(rs_roll *roll, int k)
       /* w relaxes from kc towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much
        * softer than the web: kc = E_theta/E_c - 1) like 1/(x - x_c + 1/kc), over dx ~ 1/kc:
        * start inside the shorter scale, or the first Newton iterations diverge */
-      CVodeSetInitStep(roll->cvode,
-                       0.05 / fmax(sqrt(roll->p.E_theta / roll->Er[0] + 1.0), fabs(roll->kc) + 1.0)) != CV_SUCCESS)
+      CVodeSetInitStep(roll->cvode, roll_first_step(roll, x0)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
 
   int next = 1; /* next node to fill */
