@@ -166,6 +166,12 @@ typedef struct rs_study_report {
   int n_front;
   int default_on_front;                    /* rs_pareto_within at time_noise, 0 error noise */
   double time_noise;                       /* relative timing noise allowed (0.1) */
+  /* The defaults' work is timed more than once (runs whose answer is the default's, bit for
+   * bit: history_every, and the nip knobs when T0 never changes). Timing noise only adds
+   * time, so the least of those CPU times is the defaults' time on the front. */
+  double default_cpu;                      /* s: that least time */
+  int default_timings;                     /* how many runs it is the least of (>= 1) */
+  double default_spread;                   /* (most - least) / least of those times */
 } rs_study_report;
 
 /* Measures every run against the reference (run 0) and the reference against the second

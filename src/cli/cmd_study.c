@@ -194,10 +194,12 @@ static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
            rep->uncertainty[RS_FIG_MAX] < rep->smallest_error
                ? "the reference's uncertainty is below it"
                : "NOT above the reference's uncertainty; errors marked '~' are at its noise");
-  printf("defaults: core pressure error %.2e (%s 0.1%%), max %.2e, %.2f s CPU; %s the Pareto "
-         "front of CPU time and max error (within %.0f%% in time)\n",
+  printf("defaults: core pressure error %.2e (%s 0.1%%), max %.2e, %.2f s CPU (the least of %d "
+         "runs of the same work, which spread by %.0f%%); %s the Pareto front of CPU time and max "
+         "error (within %.0f%% in time)\n",
          d->err[RS_FIG_CORE], d->err[RS_FIG_CORE] <= 1e-3 ? "within" : "OVER", d->err[RS_FIG_MAX],
-         d->cpu_seconds, rep->default_on_front ? "on" : "NOT on", 100 * rep->time_noise);
+         rep->default_cpu, rep->default_timings, 100 * rep->default_spread,
+         rep->default_on_front ? "on" : "NOT on", 100 * rep->time_noise);
   printf("Pareto front (%d runs):", rep->n_front);
   for (int i = 0; i < plan->n_runs; ++i)
     if (rep->rows[i].on_front) printf(" %s;", plan->runs[i].label);

@@ -189,6 +189,8 @@ static rs_status build_study(hid_t file, const void *vctx)
   if (st == RS_OK) st = rs_h5_attr_int64(g, "front_runs", rep->n_front);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "default_on_front", rep->default_on_front);
   if (st == RS_OK) st = rs_h5_attr_double(g, "time_noise", rep->time_noise);
+  if (st == RS_OK) st = rs_h5_attr_double(g, "default_cpu_seconds", rep->default_cpu);
+  if (st == RS_OK) st = rs_h5_attr_int64(g, "default_timings", rep->default_timings);
   if (st == RS_OK) st = rs_h5_attr_double(g, "smallest_error", rep->smallest_error);
   if (st == RS_OK)
     st = rs_h5_attr_string(g, "docs", "docs/accuracy.md (errors, reference, front), docs/output.md");

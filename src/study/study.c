@@ -439,6 +439,18 @@ rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *cons
       rep->smallest_run = i;
     }
   }
+  /* the defaults' time: the least of the runs that did exactly the defaults' work */
+  rep->default_cpu = t[2];
+  rep->default_timings = 1;
+  double most = t[2];
+  for (int i = 3; i < n; ++i)
+    if (rep->rows[i].identical_to_default && isfinite(t[i])) {
+      rep->default_timings++;
+      if (t[i] < rep->default_cpu) rep->default_cpu = t[i];
+      if (t[i] > most) most = t[i];
+    }
+  rep->default_spread = rep->default_cpu > 0.0 ? (most - rep->default_cpu) / rep->default_cpu : 0.0;
+  t[2] = rep->default_cpu;
   rep->n_front = rs_pareto_front(n, t, ef, on);
   for (int i = 0; i < n; ++i) rep->rows[i].on_front = on[i];
   rep->default_on_front = rs_pareto_within(n, t, ef, on, 2, rep->time_noise, 0.0);
