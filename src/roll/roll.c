@@ -80,9 +80,6 @@ struct rs_roll {
 
 /* ---- the increment ODE --------------------------------------------------------------- */
 
-/* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
- * the layer coordinate xi = (r - r_c)/t. With dg2 != NULL also d(g^2)/dx = g^2 v'(xi) r/t
- * (continuous: the interpolant is C^1), which the node interpolation needs. */
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
 static inline double roll_exp_small(double d)
 {
@@ -113,6 +110,9 @@ static inline double roll_radius_at(rs_roll *roll, double x)
   return roll->r_anchor * roll_exp_small(d);
 }
 
+/* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
+ * the layer coordinate xi = (r - r_c)/t. With dg2 != NULL also d(g^2)/dx = g^2 v'(xi) r/t
+ * (continuous: the interpolant is C^1), which the node interpolation needs. */
 static double roll_g2_at(rs_roll *roll, double x, double *dg2)
 {
   const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
@@ -294,12 +294,18 @@ cvode_fail:
 
 /* ---- one increment ----------------------------------------------------------------- */
 
-/* Pressure (Pa, compression positive) at node j before the increment. */
-static double roll_node_pressure(const rs_roll *roll, int j)
+/* P_node = the pressures (Pa, compression positive) at the nodes 0..k before the
+ * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Plain
+ * loops: they vectorise. */
+static void roll_gather_pressure(rs_roll *roll, int k, const double *add)
 {
-  if (j == 0) return -roll->core_sigma;
-  if (j <= roll->n) return -roll->sigma_r[j - 1];
-  return 0.0; /* a layer being wound carries no pressure yet */
+  double *restrict P = roll->P_node;
+  const int n = roll->n < k ? roll->n : k;
+  P[0] = -roll->core_sigma;
+  for (int j = 1; j <= n; ++j) P[j] = -roll->sigma_r[j - 1];
+  for (int j = n + 1; j <= k; ++j) P[j] = 0.0;
+  if (add)
+    for (int j = 0; j <= k; ++j) P[j] += add[j];
 }
 
 /* The state (w, L) at x with its first two x-derivatives, from the equations:
@@ -365,13 +371,10 @@ static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, d
  * g - 1 over dx ~ 1/(2g), and from a large kc (a core much softer than the web) like
  * 1/(x - x_c + 1/kc): start inside the shorter one, or the first Newton iterations
  * diverge). */
-static double roll_first_step(rs_roll *roll, double x0)
+static double roll_first_step(const rs_roll *roll, const roll_jet *j0)
 {
   const double cap = 0.05 / fmax(sqrt(roll->p.E_theta / roll->Er[0] + 1.0), fabs(roll->kc) + 1.0);
-  roll->x_anchor = x0;
-  roll->r_anchor = exp(x0);
-  const roll_jet j0 = roll_jet_at(roll, x0, roll->kc, 0.0);
-  const double tol = roll->p.rtol * fabs(roll->kc) + roll->p.atol, d2 = fabs(j0.d2w);
+  const double tol = roll->p.rtol * fabs(roll->kc) + roll->p.atol, d2 = fabs(j0->d2w);
   if (!(d2 > 0.0)) return cap;
   const double h = 0.5 * sqrt(2.0 * tol / d2); /* half: a margin for the error estimate */
   return h < cap ? h : cap;
@@ -389,20 +392,18 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   roll->w[0] = roll->kc;
   roll->L[0] = 0.0;
   roll->cvode_msg[0] = '\0';
+  /* every integration anchors r = e^x afresh: its numbers do not depend on the last one's */
+  roll->x_anchor = x0;
+  roll->r_anchor = exp(x0);
+  roll_jet prev = roll_jet_at(roll, x0, roll->kc, 0.0);
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      /* w relaxes from kc towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much
-       * softer than the web: kc = E_theta/E_c - 1) like 1/(x - x_c + 1/kc), over dx ~ 1/kc:
-       * start inside the shorter scale, or the first Newton iterations diverge */
-      CVodeSetInitStep(roll->cvode, roll_first_step(roll, x0)) != CV_SUCCESS)
+      CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
 
   int next = 1; /* next node to fill */
   long steps = 0;
   sunrealtype tret = x0;
-  roll->x_anchor = x0;
-  roll->r_anchor = exp(x0);
-  roll_jet prev = roll_jet_at(roll, x0, roll->kc, 0.0);
   while (next <= k) {
     if (++steps > roll->p.max_steps)
       return RS_ERROR(RS_ERR_SOLVER,
@@ -538,6 +539,27 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
   }
 }
 
+/* RS_OK when ds[0..k] and dh[0..k] (an increment's radial and hoop stress at the nodes)
+ * are all finite; else the error naming the lowest node that is not. */
+static rs_status roll_check_increment(const rs_roll *roll, const double *ds, const double *dh, int k)
+{
+  /* 0 x (finite) = 0, 0 x (inf or NaN) = NaN: one sum says whether all are finite */
+  double z0 = 0.0, z1 = 0.0;
+  for (int j = 0; j <= k; ++j) {
+    z0 += 0.0 * ds[j];
+    z1 += 0.0 * dh[j];
+  }
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  for (int j = 0; (z0 + z1 != 0.0) && j <= k; ++j)
+    if (!isfinite(ds[j]) || !isfinite(dh[j]))
+      return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
+                               "non-finite stress increment at the core (outer radius %.9g m)",
+                               rc + k * t)
+                    : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
+                               rc + j * t, j);
+  return RS_OK;
+}
+
 /* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
  * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
  * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
@@ -562,14 +584,8 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
     roll->L[j] = ds;
     roll->w[j] = ds * (1.0 + roll->w[j]);
   }
-  for (int j = 0; j <= k; ++j)
-    if (!isfinite(roll->L[j]) || !isfinite(roll->w[j])) {
-      if (j == 0)
-        return RS_ERROR(RS_ERR_SOLVER,
-                        "non-finite stress increment at the core (outer radius %.9g m)", s);
-      return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
-                      rc + j * t, j);
-    }
+  rs_status st = roll_check_increment(roll, roll->L, roll->w, k);
+  if (st) return st;
   roll->core_sigma += roll->L[0];
   for (int j = 1; j <= k; ++j) {
     double ds = roll->L[j], hoop = roll->w[j];
@@ -591,20 +607,9 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
 static rs_status roll_commit(rs_roll *roll, int m, const double *T0)
 {
   const int k_old = roll->n, k = roll->n + m;
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
-  /* 0 x (finite) = 0, 0 x (inf or NaN) = NaN: one sum says whether all are finite */
-  double z0 = 0.0, z1 = 0.0;
-  for (int j = 0; j <= k; ++j) {
-    z0 += 0.0 * roll->dsr[j];
-    z1 += 0.0 * roll->dsh[j];
-  }
-  for (int j = 0; (z0 + z1 != 0.0) && j <= k; ++j)
-    if (!isfinite(roll->dsr[j]) || !isfinite(roll->dsh[j]))
-      return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
-                               "non-finite stress increment at the core (outer radius %.9g m)",
-                               rc + k * t)
-                    : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
-                               rc + j * t, j);
+  const double t = roll->p.caliper;
+  rs_status st = roll_check_increment(roll, roll->dsr, roll->dsh, k);
+  if (st) return st;
   roll->core_sigma += roll->dsr[0];
   for (int j = 1; j <= k_old; ++j) {
     roll->sigma_r[j - 1] += roll->dsr[j];
@@ -633,9 +638,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   const int k_old = roll->n, k = roll->n + m;
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  roll->P_node[0] = -roll->core_sigma;
-  for (int j = 1; j <= k_old; ++j) roll->P_node[j] = -roll->sigma_r[j - 1];
-  for (int j = k_old + 1; j <= k; ++j) roll->P_node[j] = 0.0; /* being wound: no pressure yet */
+  roll_gather_pressure(roll, k, NULL);
   rs_status st = roll_set_modulus(roll, k);
   if (st == RS_OK) st = roll_integrate(roll, k);
   if (st) return st;
@@ -649,7 +652,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
       /* the corrector: each node's modulus at the mean pressure the m single-layer
        * increments would have seen there (the pressure before each, averaged over those
        * that reach the node), from the predictor's sub-increments; integrate again */
-      for (int j = 0; j <= k; ++j) roll->P_node[j] = roll_node_pressure(roll, j) + roll->P_mean[j];
+      roll_gather_pressure(roll, k, roll->P_mean);
       st = roll_set_modulus(roll, k);
       if (st == RS_OK) st = roll_integrate(roll, k);
       if (st) return st;
