@@ -42,14 +42,25 @@ static rs_status write_ranges(hid_t g, const rs_defect_range *ranges, int n)
   return st;
 }
 
+/* Opens the rule's group /defects/<name> with its verdict and rule; *g is open on success. */
+static rs_status rule_group(hid_t parent, const char *name, rs_defect_verdict verdict,
+                            const char *rule, hid_t *g)
+{
+  rs_status st = rs_h5_group_create(parent, name, g);
+  if (st != RS_OK) return st;
+  st = rs_h5_attr_string(*g, "verdict", rs_defect_verdict_name(verdict));
+  if (st == RS_OK) st = rs_h5_attr_string(*g, "rule", rule);
+  if (st != RS_OK) H5Gclose(*g);
+  return st;
+}
+
 static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
-  rs_status st = rs_h5_group_create(parent, "hoop_compression", &g);
+  rs_status st = rule_group(parent, "hoop_compression", rep->hoop.verdict,
+                            "risk where sigma_theta < 0", &g);
   if (st != RS_OK) return st;
-  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->hoop.verdict));
-  if (st == RS_OK) st = rs_h5_attr_string(g, "rule", "risk where sigma_theta < 0");
-  if (st == RS_OK && rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED) {
+  if (rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_int64(g, "layers", rep->hoop.layers);
     if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta", rep->hoop.min);
     if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta_radius", rep->hoop.min_radius);
@@ -62,14 +73,12 @@ static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
 static rs_status write_pressure(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
-  rs_status st = rs_h5_group_create(parent, "pressure", &g);
+  rs_status st = rule_group(parent, "pressure", rep->pressure.verdict,
+                            "risk where the greatest pressure on the web > "
+                            "material.pressure_limit",
+                            &g);
   if (st != RS_OK) return st;
-  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->pressure.verdict));
-  if (st == RS_OK)
-    st = rs_h5_attr_string(g, "rule",
-                           "risk where the greatest pressure on the web > "
-                           "material.pressure_limit");
-  if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure", rep->pressure.max);
+  st = rs_h5_attr_double(g, "max_pressure", rep->pressure.max);
   if (st == RS_OK) st = rs_h5_attr_double(g, "max_pressure_radius", rep->pressure.max_radius);
   if (st == RS_OK && rep->pressure.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_double(g, "limit", rep->pressure.limit);
@@ -82,12 +91,10 @@ static rs_status write_pressure(hid_t parent, const rs_defect_report *rep)
 static rs_status write_slip(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
-  rs_status st = rs_h5_group_create(parent, "interlayer_slip", &g);
+  rs_status st = rule_group(parent, "interlayer_slip", rep->slip.verdict,
+                            "risk where mu P 2 pi r^2 < winding.accel_torque", &g);
   if (st != RS_OK) return st;
-  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->slip.verdict));
-  if (st == RS_OK)
-    st = rs_h5_attr_string(g, "rule", "risk where mu P 2 pi r^2 < winding.accel_torque");
-  if (st == RS_OK && rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) {
+  if (rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_double(g, "accel_torque", rep->slip.torque);
     if (st == RS_OK) st = rs_h5_attr_double(g, "friction_layer", rep->slip.mu);
     if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->slip.layers);
@@ -102,11 +109,10 @@ static rs_status write_slip(hid_t parent, const rs_defect_report *rep)
 static rs_status write_core(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
-  rs_status st = rs_h5_group_create(parent, "core", &g);
+  rs_status st = rule_group(parent, "core", rep->core.verdict,
+                            "risk where core pressure > core.rating", &g);
   if (st != RS_OK) return st;
-  st = rs_h5_attr_string(g, "verdict", rs_defect_verdict_name(rep->core.verdict));
-  if (st == RS_OK) st = rs_h5_attr_string(g, "rule", "risk where core pressure > core.rating");
-  if (st == RS_OK) st = rs_h5_attr_double(g, "core_pressure", rep->core.pressure);
+  st = rs_h5_attr_double(g, "core_pressure", rep->core.pressure);
   if (st == RS_OK && rep->core.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_double(g, "rating", rep->core.rating);
     if (st == RS_OK) st = rs_h5_attr_double(g, "ratio", rep->core.ratio);
