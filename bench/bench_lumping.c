@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "reelsim/roll.h"
+#include "bench_newsprint.h"
 
 static double cpu_now(void)
 {
@@ -48,18 +48,9 @@ static rs_roll *wind(const rs_roll_params *p, int n, int m, double T0, double *c
 int main(int argc, char **argv)
 {
   const int n = argc > 1 ? atoi(argv[1]) : 6054;
-  const double rtol = argc > 2 ? atof(argv[2]) : 1e-6, T0 = 682.5, t = 70e-6;
+  const double rtol = argc > 2 ? atof(argv[2]) : 1e-6, T0 = BENCH_NEWSPRINT_T0;
   FILE *data = argc > 3 ? fopen(argv[3], "w") : NULL;
-  rs_roll_params p = {0};
-  p.core_radius = 0.0762;
-  p.caliper = t;
-  p.E_theta = 3.5e9;
-  p.core_stiffness = 1e9;
-  p.radial.law = RS_RADIAL_PFEIFFER;
-  p.radial.K1 = 5e3;
-  p.radial.K2 = 60;
-  p.max_layers = n;
-  p.rtol = rtol;
+  rs_roll_params p = bench_newsprint_params(n, rtol);
   if (rs_radial_law_prepare(&p.radial)) return 1;
 
   double cpu_ref;
@@ -86,7 +77,7 @@ int main(int argc, char **argv)
       for (int j = 0; j < n; ++j) {
         peak = fmax(peak, -sr[j]);
         er = fmax(er, fabs(sr[j] - sr0[j]) / fabs(sr0[j]));
-        et = fmax(et, fabs(st[j] - st0[j]) / (T0 / t));
+        et = fmax(et, fabs(st[j] - st0[j]) / (T0 / p.caliper));
       }
       double ec = fabs(rs_roll_core_pressure(r) / rs_roll_core_pressure(ref) - 1);
       double ep = fabs(peak / peak0 - 1);

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "reelsim/roll.h"
+#include "bench_newsprint.h"
 
 static double now(void)
 {
@@ -18,18 +18,9 @@ static double now(void)
 
 static double wind(int n, double rtol, rs_roll_stats *stats, double *core)
 {
-  rs_roll_params p = {0};
-  p.core_radius = 0.0762;
-  p.caliper = 70e-6;
-  p.E_theta = 3.5e9;
-  p.core_stiffness = 1e9;
-  p.radial.law = RS_RADIAL_PFEIFFER;
-  p.radial.K1 = 5e3;
-  p.radial.K2 = 60;
-  p.max_layers = n;
-  p.rtol = rtol;
+  rs_roll_params p = bench_newsprint_params(n, rtol);
   rs_roll *roll = NULL;
-  double T0 = 350.0 + 0.19 * 1750.0, t0 = now();
+  double T0 = BENCH_NEWSPRINT_T0, t0 = now();
   if (rs_roll_create(&p, &roll)) return NAN;
   for (int k = 0; k < n; ++k)
     if (rs_roll_add_layers(roll, 1, &T0)) {

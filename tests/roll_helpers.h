@@ -1,5 +1,5 @@
-/* Helpers shared by the roll-engine tests (validation/test_roll.c, hard/test_hard.c):
- * parameters of a linear-law roll, winding at a constant tension, and Altmann's closed
+/* Helpers shared by the roll-engine tests (validation/test_roll.c, hard/test_hard.c,
+ * unit/test_roll_state.c): parameters of a linear-law or a Pfeiffer roll, winding at a constant tension, and Altmann's closed
  * form for constant E_r. Needs check.h included first. */
 #ifndef RS_TESTS_ROLL_HELPERS_H
 #define RS_TESTS_ROLL_HELPERS_H
@@ -25,6 +25,17 @@ static inline rs_roll_params linear_params(double rc, double t, double Et, doubl
   p.rtol = 1e-10;
   p.atol = 1e-12;
   p.max_steps = 0;
+  return p;
+}
+
+static inline rs_roll_params pfeiffer_params(double rc, double t, double Et, double K1, double K2,
+                                             double Ec, int n)
+{
+  rs_roll_params p = linear_params(rc, t, Et, 1.0, Ec, n);
+  p.radial.law = RS_RADIAL_PFEIFFER;
+  p.radial.K1 = K1;
+  p.radial.K2 = K2;
+  CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
   return p;
 }
 

@@ -28,17 +28,6 @@
 
 /* ---- helpers ------------------------------------------------------------------------ */
 
-static rs_roll_params pfeiffer_params(double rc, double t, double Et, double K1, double K2,
-                                      double Ec, int n)
-{
-  rs_roll_params p = linear_params(rc, t, Et, 1.0, Ec, n);
-  p.radial.law = RS_RADIAL_PFEIFFER;
-  p.radial.K1 = K1;
-  p.radial.K2 = K2;
-  CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
-  return p;
-}
-
 static int all_finite(const rs_roll *roll)
 {
   int n = rs_roll_layers(roll);

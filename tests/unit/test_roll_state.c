@@ -4,26 +4,19 @@
 #include <string.h>
 
 #include "check.h"
-#include "reelsim/roll.h"
+#include "roll_helpers.h"
 
 static rs_roll *newsprint(int n)
 {
-  rs_roll_params p = {0};
-  p.core_radius = 0.0762;
-  p.caliper = 70e-6;
-  p.E_theta = 3.5e9;
-  p.core_stiffness = 1e9;
-  p.radial.law = RS_RADIAL_PFEIFFER;
-  p.radial.K1 = 5e3;
-  p.radial.K2 = 60;
-  p.max_layers = n;
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, n);
   p.rtol = 1e-6;
+  p.atol = 0.0; /* = rtol */
   rs_roll *roll = NULL;
   CHECK(rs_roll_create(&p, &roll) == RS_OK);
   return roll;
 }
 
-static void wind(rs_roll *roll, int m, double T)
+static void wind_more(rs_roll *roll, int m, double T)
 {
   for (int i = 0; i < m; ++i) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
 }
@@ -34,14 +27,14 @@ static void rewind_is_exact(void)
   rs_roll_state *st = NULL;
   CHECK(rs_roll_state_create(&st) == RS_OK);
   if (!a || !b || !st) return;
-  wind(a, 20, 500);
-  wind(b, 20, 500);
+  wind_more(a, 20, 500);
+  wind_more(b, 20, 500);
   CHECK(rs_roll_save(b, st) == RS_OK);
-  wind(b, 15, 900); /* a detour */
+  wind_more(b, 15, 900); /* a detour */
   CHECK(rs_roll_restore(b, st) == RS_OK);
   CHECK(rs_roll_layers(b) == 20);
-  wind(a, 30, 450);
-  wind(b, 30, 450);
+  wind_more(a, 30, 450);
+  wind_more(b, 30, 450);
   CHECK(rs_roll_layers(a) == rs_roll_layers(b));
   CHECK(memcmp(rs_roll_sigma_r(a), rs_roll_sigma_r(b), 50 * sizeof(double)) == 0);
   CHECK(memcmp(rs_roll_sigma_theta(a), rs_roll_sigma_theta(b), 50 * sizeof(double)) == 0);

@@ -71,10 +71,7 @@ static void one_layer_rigid(void)
  * the radial stress -T0/s it presses with. */
 static void outer_layer_hoop(void)
 {
-  rs_roll_params p = linear_params(0.0762, 70e-6, 3.5e9, 0, INFINITY, 500);
-  p.radial.law = RS_RADIAL_PFEIFFER;
-  p.radial.K1 = 5e3;
-  p.radial.K2 = 60;
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, INFINITY, 500);
   p.rtol = 1e-6;
   p.atol = 0;
   rs_roll *roll = wind(&p, 500, 1, 682.5);
