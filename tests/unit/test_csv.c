@@ -13,6 +13,7 @@
 #include <hdf5.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "reelsim/output.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
@@ -20,52 +21,6 @@
 #ifndef RS_ROOT_DIR
 #error "RS_ROOT_DIR must name the project root"
 #endif
-
-static char *make_tmpdir(void)
-{
-  char *d = strdup("/tmp/rs_test_csv_XXXXXX");
-  if (!d || !mkdtemp(d)) exit(2);
-  return d;
-}
-
-static char *join(const char *dir, const char *name)
-{
-  size_t n = strlen(dir) + strlen(name) + 2;
-  char *p = malloc(n);
-  snprintf(p, n, "%s/%s", dir, name);
-  return p;
-}
-
-static int count_entries(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (!d) return -1;
-  int n = 0;
-  struct dirent *e;
-  while ((e = readdir(d))) {
-    if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-    printf("  entry: %s\n", e->d_name);
-    ++n;
-  }
-  closedir(d);
-  return n;
-}
-
-static void remove_dir(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (d) {
-    struct dirent *e;
-    while ((e = readdir(d))) {
-      if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-      char *p = join(dir, e->d_name);
-      if (rmdir(p) != 0) unlink(p);
-      free(p);
-    }
-    closedir(d);
-  }
-  rmdir(dir);
-}
 
 /* Linerboard with a tension table and a tapered friction nip, cut to 60 m (107 layers):
  * every CSV column varies. */
@@ -131,17 +86,17 @@ static int parse_csv(const char *path, const char *header, int cols, double **va
 
 static void round_trip(void)
 {
-  char *dir = make_tmpdir();
+  char *dir = scratch_dir("csv");
   rs_scene *sc = NULL;
   rs_reel_result *res = wind_small(&sc);
   CHECK(res != NULL);
   if (!res) return;
   int n = res->n_layers;
-  char *h5 = join(dir, "r.h5");
+  char *h5 = scratch_join(dir, "r.h5");
   CHECK(rs_output_write(h5, sc, res) == RS_OK);
   CHECK(rs_output_write_csv(dir, "small", res) == RS_OK);
   CHECK(n == 107);
-  CHECK(count_entries(dir) == 3);
+  CHECK(scratch_count_entries(dir) == 3);
 
   hid_t f = H5Fopen(h5, H5F_ACC_RDONLY, H5P_DEFAULT);
   CHECK(f >= 0);
@@ -160,7 +115,7 @@ static void round_trip(void)
     p[c] = malloc((size_t)n * sizeof(double));
   for (int c = 0; c < 4; ++c)
     w[c] = malloc((size_t)n * sizeof(double));
-  char *prof = join(dir, "small-profile.csv"), *wot = join(dir, "small-wot.csv");
+  char *prof = scratch_join(dir, "small-profile.csv"), *wot = scratch_join(dir, "small-wot.csv");
   int rp = parse_csv(prof,
                      "layer,radius_m,sigma_r_Pa,sigma_theta_Pa,pressure_Pa,"
                      "wound_on_tension_N_per_m\n",
@@ -193,7 +148,7 @@ static void round_trip(void)
   free(prof);
   free(wot);
   free(h5);
-  remove_dir(dir);
+  scratch_remove_tree(dir);
   free(dir);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&sc);
@@ -201,23 +156,23 @@ static void round_trip(void)
 
 static void bad_directory(void)
 {
-  char *dir = make_tmpdir();
+  char *dir = scratch_dir("csv");
   rs_scene *sc = NULL;
   rs_reel_result *res = wind_small(&sc);
-  char *missing = join(dir, "no-such-dir");
+  char *missing = scratch_join(dir, "no-such-dir");
   CHECK(rs_output_write_csv(missing, "small", res) == RS_ERR_INPUT);
   printf("  %s\n", rs_error_message());
   CHECK(strstr(rs_error_message(), "no such directory") != NULL);
   /* a regular file where the directory should be */
-  char *file = join(dir, "plain");
+  char *file = scratch_join(dir, "plain");
   FILE *fp = fopen(file, "w");
   if (fp) fclose(fp);
   CHECK(rs_output_write_csv(file, "small", res) == RS_ERR_INPUT);
   printf("  %s\n", rs_error_message());
-  CHECK(count_entries(dir) == 1); /* only "plain" */
+  CHECK(scratch_count_entries(dir) == 1); /* only "plain" */
   free(missing);
   free(file);
-  remove_dir(dir);
+  scratch_remove_tree(dir);
   free(dir);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&sc);
@@ -227,45 +182,35 @@ static void bad_directory(void)
  * appear either, and no temporary is left. */
 static void nothing_half_written(void)
 {
-  char *dir = make_tmpdir();
+  char *dir = scratch_dir("csv");
   rs_scene *sc = NULL;
   rs_reel_result *res = wind_small(&sc);
-  char *blocker = join(dir, "small-wot.csv");
+  char *blocker = scratch_join(dir, "small-wot.csv");
   CHECK(mkdir(blocker, 0700) == 0);
   CHECK(rs_output_write_csv(dir, "small", res) == RS_ERR_IO);
   printf("  %s\n", rs_error_message());
-  CHECK(count_entries(dir) == 1); /* only the blocking directory */
-  char *prof = join(dir, "small-profile.csv");
+  CHECK(scratch_count_entries(dir) == 1); /* only the blocking directory */
+  char *prof = scratch_join(dir, "small-profile.csv");
   CHECK(access(prof, F_OK) != 0);
   free(prof);
   free(blocker);
-  remove_dir(dir);
+  scratch_remove_tree(dir);
   free(dir);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&sc);
-}
-
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  char *buf = malloc(1 << 20);
-  *len = fread(buf, 1, 1 << 20, f);
-  fclose(f);
-  return buf;
 }
 
 /* A disk that fills up after the first file's temporary (a file-size limit between the
  * two files' sizes): the earlier pair stays byte for byte, no temporary is left. */
 static void failed_write_keeps_old_files(void)
 {
-  char *dir = make_tmpdir();
+  char *dir = scratch_dir("csv");
   rs_scene *sc = NULL;
   rs_reel_result *res = wind_small(&sc);
   CHECK(rs_output_write_csv(dir, "small", res) == RS_OK);
-  char *prof = join(dir, "small-profile.csv"), *wot = join(dir, "small-wot.csv");
+  char *prof = scratch_join(dir, "small-profile.csv"), *wot = scratch_join(dir, "small-wot.csv");
   size_t np = 0, nw = 0, np2 = 0, nw2 = 0;
-  char *old_p = slurp(prof, &np), *old_w = slurp(wot, &nw);
+  char *old_p = scratch_slurp(prof, &np), *old_w = scratch_slurp(wot, &nw);
   CHECK_LOG("profile bytes", np);
   CHECK_LOG("wot bytes", nw);
   CHECK(old_p && old_w && nw < np);
@@ -284,18 +229,18 @@ static void failed_write_keeps_old_files(void)
   CHECK(st == RS_ERR_IO);
   printf("  %s\n", rs_error_message());
 
-  char *new_p = slurp(prof, &np2), *new_w = slurp(wot, &nw2);
+  char *new_p = scratch_slurp(prof, &np2), *new_w = scratch_slurp(wot, &nw2);
   CHECK(new_p && new_w && np2 == np && nw2 == nw);
   if (new_p && new_w && old_p && old_w && np2 == np && nw2 == nw)
     CHECK(memcmp(new_p, old_p, np) == 0 && memcmp(new_w, old_w, nw) == 0);
-  CHECK(count_entries(dir) == 2);
+  CHECK(scratch_count_entries(dir) == 2);
   free(old_p);
   free(old_w);
   free(new_p);
   free(new_w);
   free(prof);
   free(wot);
-  remove_dir(dir);
+  scratch_remove_tree(dir);
   free(dir);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&sc);

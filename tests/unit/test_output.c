@@ -14,6 +14,7 @@
 #include <hdf5.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "output/h5_util.h"
 #include "output/staging.h"
 #include "reelsim/output.h"
@@ -26,62 +27,6 @@ static const char *yaml_text = "title: round trip\n"
 
 /* ---- scratch directories ------------------------------------------------------------ */
 
-static char *make_tmpdir(void)
-{
-  char *d = strdup("/tmp/rs_test_output_XXXXXX");
-  if (!d || !mkdtemp(d)) {
-    fprintf(stderr, "mkdtemp failed: %s\n", strerror(errno));
-    exit(2);
-  }
-  return d;
-}
-
-static char *join(const char *dir, const char *name)
-{
-  size_t n = strlen(dir) + strlen(name) + 2;
-  char *p = malloc(n);
-  snprintf(p, n, "%s/%s", dir, name);
-  return p;
-}
-
-/* Number of entries in `dir` (without . and ..); prints them so a failure shows them. */
-static int count_entries(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (!d) return -1;
-  int n = 0;
-  struct dirent *e;
-  while ((e = readdir(d))) {
-    if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-    printf("  entry in %s: %s\n", dir, e->d_name);
-    ++n;
-  }
-  closedir(d);
-  return n;
-}
-
-/* Removes a directory tree at most two levels deep (all these tests make). */
-static void remove_tree(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (d) {
-    struct dirent *e;
-    chmod(dir, 0700);
-    while ((e = readdir(d))) {
-      if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-      char *p = join(dir, e->d_name);
-      struct stat sb;
-      if (lstat(p, &sb) == 0 && S_ISDIR(sb.st_mode))
-        remove_tree(p);
-      else
-        unlink(p);
-      free(p);
-    }
-    closedir(d);
-  }
-  rmdir(dir);
-}
-
 static void write_text(const char *path, const char *text)
 {
   FILE *f = fopen(path, "wb");
@@ -89,23 +34,6 @@ static void write_text(const char *path, const char *text)
   if (!f) return;
   fputs(text, f);
   fclose(f);
-}
-
-/* The whole file in a malloc'd buffer (NULL if it cannot be read). */
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 4096, n = 0;
-  char *buf = malloc(cap);
-  size_t got;
-  while ((got = fread(buf + n, 1, cap - n, f)) > 0) {
-    n += got;
-    if (n == cap) buf = realloc(buf, cap *= 2);
-  }
-  fclose(f);
-  *len = n;
-  return buf;
 }
 
 /* ---- a synthetic scene and result ---------------------------------------------------- */
@@ -288,7 +216,7 @@ static void check_dataset(hid_t file, const char *name, const double *expected, 
 static void round_trip(void)
 {
   const int n = 1000;
-  char *dir = make_tmpdir(), *path = join(dir, "reel.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "reel.h5");
   rs_scene *scene = make_scene(yaml_text);
   rs_reel_result *res = make_result(n);
   rs_error_clear();
@@ -340,14 +268,14 @@ static void round_trip(void)
   free_result(res);
   free_scene(scene);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
 /* An interrupted run may finish no layer: the file is still well formed. */
 static void zero_layers(void)
 {
-  char *dir = make_tmpdir(), *path = join(dir, "empty.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "empty.h5");
   rs_scene *scene = make_scene(NULL); /* no resolved text: written as "" */
   rs_reel_result *res = make_result(0);
   rs_status st = rs_output_write(path, scene, res);
@@ -367,7 +295,7 @@ static void zero_layers(void)
   free_result(res);
   free_scene(scene);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
@@ -375,7 +303,7 @@ static void zero_layers(void)
  * limit for compact attributes: the variable-length string must still go through. */
 static void large_scene_text(void)
 {
-  char *dir = make_tmpdir(), *path = join(dir, "big.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "big.h5");
   size_t len = 300000;
   char *text = malloc(len + 1);
   for (size_t i = 0; i < len; ++i) text[i] = i % 61 == 60 ? '\n' : (char)('a' + i % 26);
@@ -397,21 +325,21 @@ static void large_scene_text(void)
   free_result(res);
   free_scene(scene);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
 /* A successful write leaves exactly the file; writing again replaces it whole. */
 static void no_temp_left(void)
 {
-  char *dir = make_tmpdir(), *path = join(dir, "reel.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "reel.h5");
   rs_scene *scene = make_scene(yaml_text);
   rs_reel_result *res = make_result(50);
   CHECK(rs_output_write(path, scene, res) == RS_OK);
-  CHECK(count_entries(dir) == 1);
+  CHECK(scratch_count_entries(dir) == 1);
   res->core_pressure = 42.0;
   CHECK(rs_output_write(path, scene, res) == RS_OK);
-  CHECK(count_entries(dir) == 1);
+  CHECK(scratch_count_entries(dir) == 1);
   hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   CHECK(f >= 0);
   if (f >= 0) {
@@ -424,11 +352,11 @@ static void no_temp_left(void)
   CHECK(chdir(dir) == 0);
   CHECK(rs_output_write("bare.h5", scene, res) == RS_OK);
   CHECK(chdir(cwd) == 0);
-  CHECK(count_entries(dir) == 2);
+  CHECK(scratch_count_entries(dir) == 2);
   free_result(res);
   free_scene(scene);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
@@ -441,7 +369,7 @@ static int message_names(const char *path)
 
 static void missing_directory(void)
 {
-  char *dir = make_tmpdir(), *missing = join(dir, "no_such_dir"), *path = join(missing, "x.h5");
+  char *dir = scratch_dir("output"), *missing = scratch_join(dir, "no_such_dir"), *path = scratch_join(missing, "x.h5");
   rs_scene *scene = make_scene(yaml_text);
   rs_reel_result *res = make_result(10);
   rs_error_clear();
@@ -450,28 +378,28 @@ static void missing_directory(void)
   CHECK(strstr(rs_error_message(), "does not exist") != NULL);
   struct stat sb;
   CHECK(stat(missing, &sb) != 0 && errno == ENOENT);
-  CHECK(count_entries(dir) == 0);
+  CHECK(scratch_count_entries(dir) == 0);
 
   /* A file where a directory should be. */
-  char *file = join(dir, "plain"), *under = join(file, "x.h5");
+  char *file = scratch_join(dir, "plain"), *under = scratch_join(file, "x.h5");
   write_text(file, "plain\n");
   CHECK(rs_output_write(under, scene, res) == RS_ERR_IO);
   CHECK(message_names(under));
-  CHECK(count_entries(dir) == 1);
+  CHECK(scratch_count_entries(dir) == 1);
   free(file);
   free(under);
   free_result(res);
   free_scene(scene);
   free(missing);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
 /* Output path is a directory, or a link to a device: refused, and nothing changes. */
 static void not_a_regular_target(void)
 {
-  char *dir = make_tmpdir(), *sub = join(dir, "sub"), *link = join(dir, "null.h5");
+  char *dir = scratch_dir("output"), *sub = scratch_join(dir, "sub"), *link = scratch_join(dir, "null.h5");
   rs_scene *scene = make_scene(yaml_text);
   rs_reel_result *res = make_result(10);
   CHECK(mkdir(sub, 0700) == 0);
@@ -484,13 +412,13 @@ static void not_a_regular_target(void)
   CHECK(stat(sub, &sb) == 0 && S_ISDIR(sb.st_mode));
   CHECK(lstat(link, &sb) == 0 && S_ISLNK(sb.st_mode));
   CHECK(stat("/dev/null", &sb) == 0 && S_ISCHR(sb.st_mode));
-  CHECK(count_entries(dir) == 2);
-  CHECK(count_entries(sub) == 0);
+  CHECK(scratch_count_entries(dir) == 2);
+  CHECK(scratch_count_entries(sub) == 0);
   free_result(res);
   free_scene(scene);
   free(sub);
   free(link);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
@@ -509,7 +437,7 @@ static int write_into_readonly(const char *path)
 
 static void readonly_directory(void)
 {
-  char *dir = make_tmpdir(), *ro = join(dir, "ro"), *path = join(ro, "x.h5");
+  char *dir = scratch_dir("output"), *ro = scratch_join(dir, "ro"), *path = scratch_join(ro, "x.h5");
   CHECK(mkdir(ro, 0700) == 0);
   CHECK(chmod(ro, 0555) == 0);
   if (geteuid() != 0) {
@@ -538,10 +466,10 @@ static void readonly_directory(void)
     else
       CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   }
-  CHECK(count_entries(ro) == 0);
+  CHECK(scratch_count_entries(ro) == 0);
   free(path);
   free(ro);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
@@ -549,7 +477,7 @@ static void readonly_directory(void)
  * the error names the file, the old file at the path is untouched, no temporary left. */
 static void failed_write_keeps_old_file(void)
 {
-  char *dir = make_tmpdir(), *path = join(dir, "reel.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "reel.h5");
   const char *old = "previous results, not HDF5 at all\n";
   write_text(path, old);
   rs_scene *scene = make_scene(yaml_text);
@@ -569,19 +497,19 @@ static void failed_write_keeps_old_file(void)
   CHECK(st == RS_ERR_IO);
   CHECK(message_names(path));
   size_t len = 0;
-  char *now = slurp(path, &len);
+  char *now = scratch_slurp(path, &len);
   CHECK(now && len == strlen(old) && memcmp(now, old, len) == 0);
   free(now);
-  CHECK(count_entries(dir) == 1);
+  CHECK(scratch_count_entries(dir) == 1);
 
   /* With the limit gone the same write succeeds and replaces the old file. */
   CHECK(rs_output_write(path, scene, res) == RS_OK);
-  CHECK(count_entries(dir) == 1);
+  CHECK(scratch_count_entries(dir) == 1);
   CHECK(H5Fis_hdf5(path) > 0);
   free_result(res);
   free_scene(scene);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
@@ -589,7 +517,7 @@ static void failed_write_keeps_old_file(void)
  * and compressed, and the dataset can grow with NaN in what was never written. */
 static void chunked_2d(void)
 {
-  char *dir = make_tmpdir(), *path = join(dir, "h.h5");
+  char *dir = scratch_dir("output"), *path = scratch_join(dir, "h.h5");
   const size_t S = 37, N = 5000; /* chunks cut both ways: 37 rows, 5000 > 4096 columns */
   double *a = malloc(S * N * sizeof *a);
   for (size_t s = 0; s < S; ++s)
@@ -686,7 +614,7 @@ static void chunked_2d(void)
   free(a);
   free(b);
   free(path);
-  remove_tree(dir);
+  scratch_remove_tree(dir);
   free(dir);
 }
 
