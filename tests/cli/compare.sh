@@ -11,9 +11,7 @@ set -u
 bin="$1"; sc="$2"; case="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 w="$tmp/w"; mkdir "$w"   # where outputs go; logs stay beside it
-fail() { echo "FAIL: $*"; exit 1; }
-run() { out="$("$@" 2>&1)"; got=$?; printf '%s\n' "$out"; echo "exit status: $got"; }
-has() { printf '%s\n' "$out" | grep -Eq -- "$1" || fail "output lacks /$1/"; }
+. "$(dirname "$0")/lib.sh" # fail, run, has, is_png
 no_files() { [ -z "$(ls -A "$w")" ] || { ls -la "$w"; fail "files were written"; }; }
 
 case "$case" in

@@ -22,11 +22,7 @@
 set -u
 bin="$1"; sc="$2"; case="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-run() { out="$("$@" 2>&1)"; got=$?; printf '%s\n' "$out"; echo "exit status: $got"; }
-has() { printf '%s\n' "$out" | grep -Eq -- "$1" || fail "output lacks /$1/"; }
-is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] ||
-             fail "$1 is not a PNG"; [ "$(stat -c %s "$1")" -gt 10000 ] || fail "$1 is tiny"; }
+. "$(dirname "$0")/lib.sh" # fail, run, has, is_png
 export TMPDIR="$tmp"
 
 # awk over the CSV with columns by name: c["rtol"] is the rtol column's index
