@@ -27,6 +27,11 @@ int rs_nip_policy_due(const rs_nip_policy *p, int layers)
   return p->have == 0 || layers >= p->next;
 }
 
+void rs_nip_policy_solve_at(rs_nip_policy *p, int layers)
+{
+  if (layers < p->next) p->next = layers;
+}
+
 double rs_nip_policy_predict(const rs_nip_policy *p, double r)
 {
   if (p->have == 0) return 0.0;

@@ -40,6 +40,10 @@ void rs_nip_policy_init(rs_nip_policy *p, const rs_nip_spec *spec, int layers_pe
 /* Is a solve due with `layers` on the roll? */
 int rs_nip_policy_due(const rs_nip_policy *p, int layers);
 
+/* Makes a solve due with `layers` on the roll, whatever the interval says (a prediction
+ * that cannot be used there, e.g. one that gives a negative T0). */
+void rs_nip_policy_solve_at(rs_nip_policy *p, int layers);
+
 /* The predicted NIT (N/m) at roll radius r from the accepted solves (hold with one). */
 double rs_nip_policy_predict(const rs_nip_policy *p, double r);
 

@@ -354,7 +354,7 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
          * at once, and after it layer `first` gets the solve's T0 (>= 0) or the policy
          * rewinds with a shorter interval. */
         if (!(T0 >= 0.0) && isfinite(T0) && b == 0 && !solved) {
-          pol.next = first;
+          rs_nip_policy_solve_at(&pol, first);
           force = 1;
           break;
         }
