@@ -88,11 +88,14 @@ rs_status rs_radial_law_prepare(rs_radial_law *law)
   return RS_ERROR(RS_ERR_INPUT, "unknown radial law %d", (int)law->law);
 }
 
-/* E_r(P), Pa:
- *   linear    E_r
- *   pfeiffer  K2 (P + K1)                    (Pfeiffer 1968: P = K1 (exp(K2 eps) - 1))
- *   hakiel    sum_i C_i P^i                  (Hakiel 1987)
- *   table     monotone cubic Hermite through (P_i, E_i), end values held outside. */
+/* Pfeiffer's tangent modulus K2 (P + K1) at P >= 0 (a layer never pulls on its
+ * neighbour: separation = no stiffness gain) */
+static inline double pfeiffer_modulus(double K1, double K2, double P)
+{
+  return K2 * ((P < 0.0 ? 0.0 : P) + K1);
+}
+
+/* The same law over an array: one dispatch, loops that vectorise. */
 void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, double *restrict E,
                          int n)
 {
@@ -102,7 +105,7 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
     return;
   case RS_RADIAL_PFEIFFER: {
     const double K1 = law->K1, K2 = law->K2;
-    for (int i = 0; i < n; ++i) E[i] = K2 * ((P[i] < 0.0 ? 0.0 : P[i]) + K1);
+    for (int i = 0; i < n; ++i) E[i] = pfeiffer_modulus(K1, K2, P[i]);
     return;
   }
   default:
@@ -111,12 +114,17 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
   }
 }
 
+/* E_r(P), Pa:
+ *   linear    E_r
+ *   pfeiffer  K2 (P + K1)                    (Pfeiffer 1968: P = K1 (exp(K2 eps) - 1))
+ *   hakiel    sum_i C_i P^i                  (Hakiel 1987)
+ *   table     monotone cubic Hermite through (P_i, E_i), end values held outside. */
 double rs_radial_modulus(const rs_radial_law *law, double P)
 {
   if (P < 0.0) P = 0.0; /* a layer never pulls on its neighbour: separation = no stiffness gain */
   switch (law->law) {
   case RS_RADIAL_LINEAR: return law->E_r;
-  case RS_RADIAL_PFEIFFER: return law->K2 * (P + law->K1);
+  case RS_RADIAL_PFEIFFER: return pfeiffer_modulus(law->K1, law->K2, P);
   case RS_RADIAL_HAKIEL: {
     double e = 0.0;
     for (int i = law->n_coef - 1; i >= 0; --i) e = e * P + law->C[i];
