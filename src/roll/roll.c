@@ -60,6 +60,10 @@ struct rs_roll {
   int hj;
   unsigned long long hepoch;
   double hy0, hy1, hm0, hm1;
+  /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
+   * its end all look at the same x */
+  double gx, g2x, dg2x;
+  unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
   double *w, *L;        /* (w, ln y) at the nodes */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
@@ -73,6 +77,7 @@ struct rs_roll {
   N_Vector y;
   SUNMatrix J;
   SUNLinearSolver LS;
+  SUNNonlinearSolver NLS;
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
   int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
@@ -113,13 +118,26 @@ static inline double roll_radius_at(rs_roll *roll, double x)
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
  * the layer coordinate xi = (r - r_c)/t. With dg2 != NULL also d(g^2)/dx = g^2 v'(xi) r/t
  * (continuous: the interpolant is C^1), which the node interpolation needs. */
+static double roll_g2_eval(rs_roll *roll, double x, double *dg2);
+
 static double roll_g2_at(rs_roll *roll, double x, double *dg2)
+{
+  if (x != roll->gx || roll->gepoch != roll->epoch) {
+    roll->g2x = roll_g2_eval(roll, x, &roll->dg2x);
+    roll->gx = x;
+    roll->gepoch = roll->epoch;
+  }
+  if (dg2) *dg2 = roll->dg2x;
+  return roll->g2x;
+}
+
+static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
 {
   const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
   if (j < 0 || j >= last) {
-    if (dg2) *dg2 = 0.0;
+    *dg2 = 0.0;
     return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
   }
   double f = xi - j;
@@ -136,10 +154,8 @@ static double roll_g2_at(rs_roll *roll, double x, double *dg2)
   double f2 = f * f, f3 = f2 * f;
   double v = (2 * f3 - 3 * f2 + 1) * y0 + (f3 - 2 * f2 + f) * m0 + (-2 * f3 + 3 * f2) * y1 + (f3 - f2) * m1;
   double g2 = exp(v);
-  if (dg2) {
-    double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
-    *dg2 = g2 * dv * r / roll->p.caliper;
-  }
+  double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
+  *dg2 = g2 * dv * r / roll->p.caliper;
   return g2;
 }
 
@@ -155,16 +171,43 @@ static int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
   return isfinite(f[0]) ? 0 : 1; /* recoverable: CVODE retries with a smaller step */
 }
 
-/* J = [[-(2 + 2w), 0], [1, 0]] */
-static int roll_jac(sunrealtype x, N_Vector yv, N_Vector fy, SUNMatrix Jm, void *user,
-                    N_Vector t1, N_Vector t2, N_Vector t3)
+/* J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
+static int roll_jac(double x, const double y[2], double J[2][2], void *user)
 {
-  (void)x; (void)fy; (void)user; (void)t1; (void)t2; (void)t3;
+  (void)x;
+  (void)user;
+  J[0][0] = -(2.0 + 2.0 * y[0]);
+  J[0][1] = 0.0;
+  J[1][0] = 1.0;
+  J[1][1] = 0.0;
+  return 0;
+}
+
+/* the same for CVODE's linear-solver setup, which keeps its step heuristics (the Newton
+ * iterations themselves use roll_jac: rs_roll_newton2_create) */
+static int roll_jac_matrix(sunrealtype x, N_Vector yv, N_Vector fy, SUNMatrix Jm, void *user,
+                           N_Vector t1, N_Vector t2, N_Vector t3)
+{
+  (void)fy; (void)t1; (void)t2; (void)t3;
+  double J[2][2];
+  roll_jac(x, N_VGetArrayPointer(yv), J, user);
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) SM_ELEMENT_D(Jm, i, j) = J[i][j];
+  return 0;
+}
+
+/* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in
+ * one function instead of five vector operations */
+static int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
+{
+  const rs_roll *roll = user;
   const sunrealtype *y = N_VGetArrayPointer(yv);
-  SM_ELEMENT_D(Jm, 0, 0) = -(2.0 + 2.0 * y[0]);
-  SM_ELEMENT_D(Jm, 0, 1) = 0.0;
-  SM_ELEMENT_D(Jm, 1, 0) = 1.0;
-  SM_ELEMENT_D(Jm, 1, 1) = 0.0;
+  sunrealtype *e = N_VGetArrayPointer(ewt);
+  const double rtol = roll->p.rtol, atol = roll->p.atol;
+  const double d0 = rtol * fabs(y[0]) + atol, d1 = rtol * fabs(y[1]) + atol;
+  if (!(d0 > 0.0 && d1 > 0.0)) return -1;
+  e[0] = 1.0 / d0;
+  e[1] = 1.0 / d1;
   return 0;
 }
 
@@ -183,6 +226,7 @@ void rs_roll_destroy(rs_roll **rollp)
   if (!rollp || !*rollp) return;
   rs_roll *roll = *rollp;
   if (roll->cvode) CVodeFree(&roll->cvode);
+  if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
   if (roll->LS) SUNLinSolFree(roll->LS);
   if (roll->J) SUNMatDestroy(roll->J);
   if (roll->y) N_VDestroy(roll->y);
@@ -273,13 +317,16 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (!roll->cvode) goto cvode_fail;
   if (CVodeSetErrHandlerFn(roll->cvode, roll_cvode_err, roll) != CV_SUCCESS) goto cvode_fail;
   if (CVodeInit(roll->cvode, roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSStolerances(roll->cvode, roll->p.rtol, roll->p.atol) != CV_SUCCESS) goto cvode_fail;
+  if (CVodeWFtolerances(roll->cvode, roll_ewt) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
+  /* Newton with the exact 2 x 2 Jacobian (src/roll/vector2.c) */
+  roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, roll_jac, roll);
   roll->J = SUNDenseMatrix(2, 2, roll->sunctx);
-  roll->LS = rs_roll_linsol2_create(roll->sunctx); /* src/roll/vector2.c */
-  if (!roll->J || !roll->LS) goto cvode_fail;
+  roll->LS = rs_roll_linsol2_create(roll->sunctx);
+  if (!roll->NLS || !roll->J || !roll->LS) goto cvode_fail;
+  if (CVodeSetNonlinearSolver(roll->cvode, roll->NLS) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetLinearSolver(roll->cvode, roll->LS, roll->J) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSetJacFn(roll->cvode, roll_jac) != CV_SUCCESS) goto cvode_fail;
+  if (CVodeSetJacFn(roll->cvode, roll_jac_matrix) != CV_SUCCESS) goto cvode_fail;
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
   *out = roll;
@@ -435,12 +482,11 @@ static rs_status roll_integrate(rs_roll *roll, int k)
     }
     prev = cur;
   }
-  long nfe = 0, nje = 0;
+  long nfe = 0;
   CVodeGetNumRhsEvals(roll->cvode, &nfe); /* counters restart at every CVodeReInit */
-  CVodeGetNumJacEvals(roll->cvode, &nje);
   roll->stats.cvode_steps += steps;
   roll->stats.rhs_evals += nfe;
-  roll->stats.jac_evals += nje;
+  roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS); /* counts across increments */
   return RS_OK;
 }
 
