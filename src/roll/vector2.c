@@ -135,7 +135,8 @@ typedef struct newton2 {
   void *user;
   N_Vector res, delta;
   int maxiters, curiter;
-  long niters, nconvfails, njac;
+  long niters, nconvfails; /* in the last solve */
+  long njac;               /* in all solves */
 } newton2;
 
 #define NEWTON2(S) ((newton2 *)(S)->content)
@@ -169,6 +170,8 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
   sunrealtype *yc = D(ycor), *r = D(c->res), *d = D(c->delta);
   const sunrealtype *yp = D(y0);
   int flag;
+  /* CVODE adds these counts to its own after every solve: they are per solve */
+  c->niters = c->nconvfails = 0;
   /* CVODE decides when a setup is due (every 20 steps, a large change of gamma, after a
    * failure) and resets its convergence-rate estimate there; the matrix it forms is not
    * used here, but the test below is CVODE's and depends on that estimate */
