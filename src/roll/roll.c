@@ -37,7 +37,6 @@
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include "reelsim/roll.h"
 #include "vector2.h"
@@ -75,8 +74,6 @@ struct rs_roll {
   SUNContext sunctx;
   void *cvode;
   N_Vector y;
-  SUNMatrix J;
-  SUNLinearSolver LS;
   SUNNonlinearSolver NLS;
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
@@ -183,19 +180,6 @@ static int roll_jac(double x, const double y[2], double J[2][2], void *user)
   return 0;
 }
 
-/* the same for CVODE's linear-solver setup, which keeps its step heuristics (the Newton
- * iterations themselves use roll_jac: rs_roll_newton2_create) */
-static int roll_jac_matrix(sunrealtype x, N_Vector yv, N_Vector fy, SUNMatrix Jm, void *user,
-                           N_Vector t1, N_Vector t2, N_Vector t3)
-{
-  (void)fy; (void)t1; (void)t2; (void)t3;
-  double J[2][2];
-  roll_jac(x, N_VGetArrayPointer(yv), J, user);
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) SM_ELEMENT_D(Jm, i, j) = J[i][j];
-  return 0;
-}
-
 /* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in
  * one function instead of five vector operations */
 static int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
@@ -227,8 +211,6 @@ void rs_roll_destroy(rs_roll **rollp)
   rs_roll *roll = *rollp;
   if (roll->cvode) CVodeFree(&roll->cvode);
   if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
-  if (roll->LS) SUNLinSolFree(roll->LS);
-  if (roll->J) SUNMatDestroy(roll->J);
   if (roll->y) N_VDestroy(roll->y);
   if (roll->sunctx) SUNContext_Free(&roll->sunctx);
   free(roll->sigma_r);
@@ -321,12 +303,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
   /* Newton with the exact 2 x 2 Jacobian (src/roll/vector2.c) */
   roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, roll_jac, roll);
-  roll->J = SUNDenseMatrix(2, 2, roll->sunctx);
-  roll->LS = rs_roll_linsol2_create(roll->sunctx);
-  if (!roll->NLS || !roll->J || !roll->LS) goto cvode_fail;
-  if (CVodeSetNonlinearSolver(roll->cvode, roll->NLS) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSetLinearSolver(roll->cvode, roll->LS, roll->J) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSetJacFn(roll->cvode, roll_jac_matrix) != CV_SUCCESS) goto cvode_fail;
+  if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) goto cvode_fail;
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
   *out = roll;

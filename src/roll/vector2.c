@@ -9,9 +9,9 @@
  * serial ones (a x + b y is evaluated as written, so where the serial code factors
  * c (x + y) the last bit may differ). Everything else stays SUNDIALS' own.
  * The same for Newton's method on the 2 x 2 corrector equations: SUNDIALS' Newton solver,
- * the linear-solver interface and the dense LU spent more on their bookkeeping (when to
- * re-form the matrix, scaling for a stale one, loops and checks) than the six flops of a
- * 2 x 2 elimination; CVODE accepts any nonlinear solver that solves its residual. */
+ * the linear-solver interface and the dense LU spent more on their bookkeeping (scaling
+ * for a stale matrix, copies, loops and checks) than the six flops of a 2 x 2
+ * elimination; CVODE accepts any nonlinear solver that solves its residual. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -131,6 +131,8 @@ typedef struct newton2 {
   SUNNonlinSolConvTestFn ctest;   /* CVODE's convergence test */
   void *ctest_data;
   void *cvode;
+  SUNLinearSolver setup_only; /* attached beside it, with a matrix it never forms: */
+  SUNMatrix unused;           /* see rs_roll_newton2_attach */
   rs_roll_jac2_fn jac;
   void *user;
   N_Vector res, delta;
@@ -270,11 +272,55 @@ static int newton2_free(SUNNonlinearSolver S)
   if (S->content) {
     N_VDestroy(NEWTON2(S)->res);
     N_VDestroy(NEWTON2(S)->delta);
+    if (NEWTON2(S)->setup_only) SUNLinSolFreeEmpty(NEWTON2(S)->setup_only);
+    if (NEWTON2(S)->unused) SUNMatDestroy(NEWTON2(S)->unused);
     free(S->content);
     S->content = NULL;
   }
   SUNNonlinSolFreeEmpty(S);
   return SUN_NLS_SUCCESS;
+}
+
+/* The linear solver attached beside the Newton solver: it has nothing to set up and is
+ * never asked to solve (newton2_solve eliminates its own 2 x 2 systems). */
+static SUNLinearSolver_Type setup_only_type(SUNLinearSolver S)
+{
+  (void)S;
+  return SUNLINEARSOLVER_DIRECT;
+}
+
+/* CVODE's linear-system function for it: the matrix is never read, so nothing is formed */
+static int setup_only_system(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A,
+                             sunbooleantype jok, sunbooleantype *jcur, sunrealtype gamma,
+                             void *user, N_Vector t1, N_Vector t2, N_Vector t3)
+{
+  (void)t; (void)y; (void)fy; (void)A; (void)jok; (void)gamma; (void)user;
+  (void)t1; (void)t2; (void)t3;
+  *jcur = SUNTRUE;
+  return 0;
+}
+
+static int setup_only_setup(SUNLinearSolver S, SUNMatrix A)
+{
+  (void)S;
+  (void)A;
+  return SUNLS_SUCCESS;
+}
+
+static int setup_only_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, sunrealtype tol)
+{
+  (void)S; (void)A; (void)x; (void)b; (void)tol;
+  return SUNLS_PACKAGE_FAIL_UNREC; /* not called: a call would be a wiring error */
+}
+
+static SUNLinearSolver setup_only_create(SUNContext ctx)
+{
+  SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
+  if (!S) return NULL;
+  S->ops->gettype = setup_only_type;
+  S->ops->setup = setup_only_setup;
+  S->ops->solve = setup_only_solve;
+  return S;
 }
 
 SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *cvode_mem,
@@ -287,8 +333,10 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
   if (c) {
     c->res = N_VClone(tmpl);
     c->delta = N_VClone(tmpl);
+    c->setup_only = setup_only_create(ctx);
+    c->unused = SUNDenseMatrix(2, 2, ctx);
   }
-  if (!c || !c->res || !c->delta) {
+  if (!c || !c->res || !c->delta || !c->setup_only || !c->unused) {
     newton2_free(S);
     return NULL;
   }
@@ -310,86 +358,16 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
   return S;
 }
 
+int rs_roll_newton2_attach(SUNNonlinearSolver S)
+{
+  newton2 *c = NEWTON2(S);
+  if (CVodeSetNonlinearSolver(c->cvode, S) != CV_SUCCESS ||
+      CVodeSetLinearSolver(c->cvode, c->setup_only, c->unused) != CV_SUCCESS)
+    return -1;
+  return CVodeSetLinSysFn(c->cvode, setup_only_system) == CV_SUCCESS ? 0 : -1;
+}
+
 long rs_roll_newton2_jacobians(SUNNonlinearSolver S)
 {
   return S && S->content ? NEWTON2(S)->njac : 0;
-}
-/* ---- the 2 x 2 direct solver --------------------------------------------------------- */
-
-typedef struct linsol2 {
-  int swap;          /* rows exchanged by the pivoting */
-  double a, b, l, u; /* [[1, 0], [l, 1]] [[a, b], [0, u]] = P A */
-} linsol2;
-
-static SUNLinearSolver_Type ls2_type(SUNLinearSolver S)
-{
-  (void)S;
-  return SUNLINEARSOLVER_DIRECT;
-}
-
-static SUNLinearSolver_ID ls2_id(SUNLinearSolver S)
-{
-  (void)S;
-  return SUNLINEARSOLVER_CUSTOM;
-}
-
-static int ls2_setup(SUNLinearSolver S, SUNMatrix A)
-{
-  linsol2 *f = S->content;
-  double a00 = SM_ELEMENT_D(A, 0, 0), a01 = SM_ELEMENT_D(A, 0, 1);
-  double a10 = SM_ELEMENT_D(A, 1, 0), a11 = SM_ELEMENT_D(A, 1, 1);
-  f->swap = fabs(a10) > fabs(a00);
-  if (f->swap) {
-    double t0 = a00, t1 = a01;
-    a00 = a10, a01 = a11, a10 = t0, a11 = t1;
-  }
-  if (a00 == 0.0) return SUNLS_LUFACT_FAIL; /* singular: CVODE retries with a smaller step */
-  f->a = a00;
-  f->b = a01;
-  f->l = a10 / a00;
-  f->u = a11 - f->l * a01;
-  return f->u == 0.0 ? SUNLS_LUFACT_FAIL : SUNLS_SUCCESS;
-}
-
-static int ls2_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, sunrealtype tol)
-{
-  (void)A;
-  (void)tol;
-  const linsol2 *f = S->content;
-  double b0 = D(b)[0], b1 = D(b)[1];
-  if (f->swap) {
-    double t = b0;
-    b0 = b1, b1 = t;
-  }
-  b1 -= f->l * b0;
-  const double x1 = b1 / f->u;
-  D(x)[0] = (b0 - f->b * x1) / f->a;
-  D(x)[1] = x1;
-  return SUNLS_SUCCESS;
-}
-
-static int ls2_free(SUNLinearSolver S)
-{
-  if (!S) return 0;
-  free(S->content);
-  S->content = NULL;
-  SUNLinSolFreeEmpty(S);
-  return 0;
-}
-
-SUNLinearSolver rs_roll_linsol2_create(SUNContext ctx)
-{
-  SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
-  if (!S) return NULL;
-  S->content = calloc(1, sizeof(linsol2));
-  if (!S->content) {
-    SUNLinSolFreeEmpty(S);
-    return NULL;
-  }
-  S->ops->gettype = ls2_type;
-  S->ops->getid = ls2_id;
-  S->ops->setup = ls2_setup;
-  S->ops->solve = ls2_solve;
-  S->ops->free = ls2_free;
-  return S;
 }

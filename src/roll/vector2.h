@@ -4,7 +4,6 @@
 #define REELSIM_ROLL_VECTOR2_H
 
 #include <nvector/nvector_serial.h>
-#include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_nonlinearsolver.h>
 
 /* Replaces, in the ops table of v (a serial vector of length 2), the operations CVODE's
@@ -18,19 +17,19 @@ typedef int (*rs_roll_jac2_fn)(double t, const double y[2], double J[2][2], void
 /* A nonlinear solver for CVODE's BDF corrector equations on a 2-component state: Newton's
  * method with the exact Jacobian (jac) at every iterate and a 2 x 2 pivoted elimination,
  * in place of SUNDIALS' Newton solver with a linear-solver module (whose bookkeeping for
- * a 2 x 2 system cost more than the system). Attach with CVodeSetNonlinearSolver and no
- * linear solver. tmpl: a vector like the state. NULL if out of memory. Free with
- * SUNNonlinSolFree. */
+ * a 2 x 2 system cost more than the system). tmpl: a vector like the state. NULL if out
+ * of memory. Free with SUNNonlinSolFree, after CVodeFree. */
 SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *cvode_mem,
                                           rs_roll_jac2_fn jac, void *user);
+/* Attaches the solver to its CVODE, with a linear solver beside it that forms nothing and
+ * solves nothing (and a 2 x 2 matrix it never fills): CVODE keeps its own setup decisions
+ * (a setup every 20 steps, after a large change of gamma or a failure) and resets its
+ * convergence-rate estimate at each, which its convergence test needs. Without a
+ * matrix-based linear solver CVODE resets the estimate at every step, and the corrector
+ * takes two iterations where one does (measured: 2.1 right-hand sides a step against
+ * 1.6). 0, or -1 if CVODE refuses. */
+int rs_roll_newton2_attach(SUNNonlinearSolver S);
 /* Jacobians formed so far (one per Newton iteration) */
 long rs_roll_newton2_jacobians(SUNNonlinearSolver S);
-
-/* A direct linear solver for CVODE's 2 x 2 Newton matrix (a SUNDenseMatrix that CVODE
- * fills with I - gamma J): Gaussian elimination with partial pivoting. The roll engine
- * attaches it beside rs_roll_newton2 only so that CVODE's setup decisions (when a setup
- * is due, the convergence-rate reset there) stay CVODE's own; the Newton iterations do not
- * call its solve. NULL if out of memory. Free with SUNLinSolFree. */
-SUNLinearSolver rs_roll_linsol2_create(SUNContext ctx);
 
 #endif
