@@ -1,5 +1,5 @@
 /* Scratch directories for the tests that write files (unit/test_output.c,
- * unit/test_csv.c): make one under /tmp, name files in it, count and read what is there,
+ * unit/test_csv.c, and through synthetic.h the reader, compare and plot tests): make one under /tmp, name files in it, count and read what is there,
  * remove it. Needs check.h included first. */
 #ifndef RS_TESTS_SCRATCH_H
 #define RS_TESTS_SCRATCH_H

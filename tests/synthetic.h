@@ -4,17 +4,14 @@
 #ifndef RS_TESTS_SYNTHETIC_H
 #define RS_TESTS_SYNTHETIC_H
 
-#include <dirent.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "scratch.h" /* scratch_dir, scratch_join, ... for the files these tests write */
 
 static inline rs_scene *syn_scene(const char *path, const char *title)
 {
@@ -61,58 +58,6 @@ static inline rs_reel_result *syn_result(int n, double variant)
   r->rhs_evals = 30L * n;
   r->wall_seconds = 0.25 * variant;
   return r;
-}
-
-static inline char *syn_tmpdir(const char *tag)
-{
-  char *d = malloc(256);
-  snprintf(d, 256, "/tmp/rs_test_%s_XXXXXX", tag);
-  if (!mkdtemp(d)) {
-    fprintf(stderr, "mkdtemp failed: %s\n", strerror(errno));
-    exit(2);
-  }
-  return d;
-}
-
-static inline char *syn_join(const char *dir, const char *name)
-{
-  size_t n = strlen(dir) + strlen(name) + 2;
-  char *p = malloc(n);
-  snprintf(p, n, "%s/%s", dir, name);
-  return p;
-}
-
-/* Entries of dir (without . and ..), each printed so a failure shows them. */
-static inline int syn_count_entries(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (!d) return -1;
-  int n = 0;
-  struct dirent *e;
-  while ((e = readdir(d))) {
-    if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-    printf("  entry in %s: %s\n", dir, e->d_name);
-    ++n;
-  }
-  closedir(d);
-  return n;
-}
-
-/* Removes a flat directory and its files. */
-static inline void syn_remove_dir(const char *dir)
-{
-  DIR *d = opendir(dir);
-  if (d) {
-    struct dirent *e;
-    while ((e = readdir(d))) {
-      if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-      char *p = syn_join(dir, e->d_name);
-      unlink(p);
-      free(p);
-    }
-    closedir(d);
-  }
-  rmdir(dir);
 }
 
 #endif

@@ -19,14 +19,14 @@ static const uint32_t BLUE = 0x1f77b4, RED = 0xd62728, GREEN = 0x2ca02c, LAST_ST
 /* A private TMPDIR, so the test can see that the plot's temporary directory is removed. */
 static char *private_tmpdir(void)
 {
-  char *t = syn_tmpdir("plot_tmp");
+  char *t = scratch_dir("plot_tmp");
   setenv("TMPDIR", t, 1);
   return t;
 }
 
 static char *write_run_file(const char *dir, const char *name, int n)
 {
-  char *path = syn_join(dir, name);
+  char *path = scratch_join(dir, name);
   rs_scene *s = syn_scene("cases/synthetic-reel.yaml", "Synthetic reel \"quoted\" \\ 100% {x}");
   rs_reel_result *r = syn_result(n, 1.0);
   CHECK(rs_output_write(path, s, r) == RS_OK);
@@ -145,12 +145,12 @@ static int ends_with(const char *s, const char *tail)
 static void remove_plots(const char *dir)
 {
   if (getenv("RS_KEEP_PLOTS")) printf("  kept %s\n", dir);
-  else syn_remove_dir(dir);
+  else scratch_remove_tree(dir);
 }
 
 static void rich_run(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
   char *file = write_run_file(dir, "reel.h5", N_LAYERS);
   add_optional_groups(file);
   char **out = NULL;
@@ -177,7 +177,7 @@ static void rich_run(void)
   }
   rs_plot_list_free(&out, n);
   CHECK(out == NULL);
-  CHECK(syn_count_entries(tmp) == 0); /* the private directory is gone */
+  CHECK(scratch_count_entries(tmp) == 0); /* the private directory is gone */
   remove_plots(dir);
   rmdir(tmp);
   free(file);
@@ -188,7 +188,7 @@ static void rich_run(void)
 /* Without the optional groups: three plots, and nothing of what they would add. */
 static void plain_run(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
   char *file = write_run_file(dir, "plain.h5", N_LAYERS);
   char **out = NULL;
   int n = 0;
@@ -201,9 +201,9 @@ static void plain_run(void)
     CHECK(png_count(&img, LAST_STAGE) == 0);
     free(img.rgb);
   }
-  CHECK(syn_count_entries(dir) == 4); /* the file and three plots, no temporaries */
+  CHECK(scratch_count_entries(dir) == 4); /* the file and three plots, no temporaries */
   rs_plot_list_free(&out, n);
-  CHECK(syn_count_entries(tmp) == 0);
+  CHECK(scratch_count_entries(tmp) == 0);
   remove_plots(dir);
   rmdir(tmp);
   free(file);
@@ -215,7 +215,7 @@ static void plain_run(void)
  * pressure): the plots are drawn without them rather than failing. */
 static void odd_optional_groups(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
   char *file = write_run_file(dir, "odd.h5", N_LAYERS);
   hid_t f = H5Fopen(file, H5F_ACC_RDWR, H5P_DEFAULT), g, n, h;
   double v[3] = {1, 2, 3};
@@ -242,7 +242,7 @@ static void odd_optional_groups(void)
     free(img.rgb);
   }
   rs_plot_list_free(&out, k);
-  CHECK(syn_count_entries(tmp) == 0);
+  CHECK(scratch_count_entries(tmp) == 0);
   remove_plots(dir);
   rmdir(tmp);
   free(file);
@@ -253,8 +253,8 @@ static void odd_optional_groups(void)
 /* A comparison: each run in its own colour in every overlay. */
 static void compare_overlay(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
-  char *file = syn_join(dir, "cmp.h5");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
+  char *file = scratch_join(dir, "cmp.h5");
   rs_scene *sc[3];
   rs_reel_result *res[3];
   rs_output_run runs[3];
@@ -284,7 +284,7 @@ static void compare_overlay(void)
     syn_scene_free(sc[i]);
     rs_reel_result_destroy(&res[i]);
   }
-  CHECK(syn_count_entries(tmp) == 0);
+  CHECK(scratch_count_entries(tmp) == 0);
   remove_plots(dir);
   rmdir(tmp);
   free(file);
@@ -295,7 +295,7 @@ static void compare_overlay(void)
 /* A run stopped before any layer: frames that say so, still valid, not blank. */
 static void empty_run(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
   char *file = write_run_file(dir, "empty.h5", 0);
   char **out = NULL;
   int n = 0;
@@ -315,8 +315,8 @@ static void empty_run(void)
 
 static void refuses_bad_input(void)
 {
-  char *dir = syn_tmpdir("plot");
-  char *file = write_run_file(dir, "reel.h5", 10), *missing = syn_join(dir, "no-such-dir");
+  char *dir = scratch_dir("plot");
+  char *file = write_run_file(dir, "reel.h5", 10), *missing = scratch_join(dir, "no-such-dir");
   char **out = (char **)1;
   int n = 7;
   CHECK(rs_plot_file(file, missing, NULL, &out, &n) == RS_ERR_INPUT);
@@ -325,14 +325,14 @@ static void refuses_bad_input(void)
   CHECK(out == NULL && n == 0);
   CHECK(rs_plot_file(file, file, NULL, NULL, NULL) == RS_ERR_INPUT); /* a file, not a dir */
   CHECK(strstr(rs_error_message(), "not a directory") != NULL);
-  char *text = syn_join(dir, "scene.yaml");
+  char *text = scratch_join(dir, "scene.yaml");
   FILE *f = fopen(text, "w");
   fputs("title: x\n", f);
   fclose(f);
   CHECK(rs_plot_file(text, dir, NULL, NULL, NULL) == RS_ERR_INPUT);
   CHECK(strstr(rs_error_message(), "scene.yaml") && strstr(rs_error_message(), "not an HDF5"));
-  CHECK(syn_count_entries(dir) == 2); /* nothing drawn */
-  syn_remove_dir(dir);
+  CHECK(scratch_count_entries(dir) == 2); /* nothing drawn */
+  scratch_remove_tree(dir);
   free(text);
   free(missing);
   free(file);
@@ -342,7 +342,7 @@ static void refuses_bad_input(void)
 /* gnuplot missing, or failing: RS_ERR_IO, no PNG, no temporary directory left. */
 static void gnuplot_missing_or_failing(void)
 {
-  char *tmp = private_tmpdir(), *dir = syn_tmpdir("plot");
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
   char *file = write_run_file(dir, "reel.h5", 10);
   rs_plot_options o = {.gnuplot = "reelsim-test-no-such-gnuplot"};
   CHECK(rs_plot_file(file, dir, &o, NULL, NULL) == RS_ERR_IO);
@@ -352,9 +352,9 @@ static void gnuplot_missing_or_failing(void)
   CHECK(rs_plot_file(file, dir, &o, NULL, NULL) == RS_ERR_IO);
   printf("  %s\n", rs_error_message());
   CHECK(strstr(rs_error_message(), "failed (exit status 1)") != NULL);
-  CHECK(syn_count_entries(dir) == 1);
-  CHECK(syn_count_entries(tmp) == 0);
-  syn_remove_dir(dir);
+  CHECK(scratch_count_entries(dir) == 1);
+  CHECK(scratch_count_entries(tmp) == 0);
+  scratch_remove_tree(dir);
   rmdir(tmp);
   free(file);
   free(dir);
@@ -422,8 +422,8 @@ static void write_png(const char *path, uint32_t w, uint32_t h, uint32_t dots)
 
 static void checker_sees_blank(void)
 {
-  char *dir = syn_tmpdir("plot"), *blank = syn_join(dir, "blank.png"),
-       *dots = syn_join(dir, "dots.png");
+  char *dir = scratch_dir("plot"), *blank = scratch_join(dir, "blank.png"),
+       *dots = scratch_join(dir, "dots.png");
   write_png(blank, 64, 48, 0);
   write_png(dots, 64, 48, 5);
   png_image img;
@@ -437,7 +437,7 @@ static void checker_sees_blank(void)
   fputs("not a png", f);
   fclose(f);
   CHECK(png_read(blank, &img) != 0);
-  syn_remove_dir(dir);
+  scratch_remove_tree(dir);
   free(blank);
   free(dots);
   free(dir);

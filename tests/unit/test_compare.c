@@ -136,8 +136,8 @@ static long long root_int(hid_t f, const char *obj, const char *name)
 /* Every run's layout equals a run file's; /summary holds rs_reel_summarize's figures. */
 static void compare_layout(void)
 {
-  char *dir = syn_tmpdir("compare");
-  char *cmp = syn_join(dir, "cmp.h5"), *one = syn_join(dir, "one.h5");
+  char *dir = scratch_dir("compare");
+  char *cmp = scratch_join(dir, "cmp.h5"), *one = scratch_join(dir, "one.h5");
   rs_scene *sc[2] = {syn_scene("x/first.yaml", "first"), syn_scene("second.yml", "second")};
   rs_reel_result *res[2] = {syn_result(30, 1.0), syn_result(45, 2.0)};
   rs_output_run runs[2] = {{sc[0], res[0]}, {sc[1], res[1]}};
@@ -218,15 +218,15 @@ static void compare_layout(void)
   rs_reader_close(&b);
 
   /* a missing directory fails first, and nothing is left */
-  char *bad = syn_join(dir, "missing/cmp.h5");
+  char *bad = scratch_join(dir, "missing/cmp.h5");
   CHECK(rs_output_write_compare(bad, 2, runs) == RS_ERR_IO);
   CHECK(strstr(rs_error_message(), "does not exist") != NULL);
-  CHECK(syn_count_entries(dir) == 2);
+  CHECK(scratch_count_entries(dir) == 2);
   for (int i = 0; i < 2; ++i) {
     syn_scene_free(sc[i]);
     rs_reel_result_destroy(&res[i]);
   }
-  syn_remove_dir(dir);
+  scratch_remove_tree(dir);
   free(bad);
   free(cmp);
   free(one);

@@ -17,7 +17,7 @@ static int same_bits(const double *a, const double *b, size_t n)
 /* Writes a run file of n layers; returns its path (malloc'd). */
 static char *write_run(const char *dir, const char *name, int n, double variant)
 {
-  char *path = syn_join(dir, name);
+  char *path = scratch_join(dir, name);
   rs_scene *s = syn_scene("cases/some-reel.yaml", "A synthetic reel");
   rs_reel_result *r = syn_result(n, variant);
   CHECK(rs_output_write(path, s, r) == RS_OK);
@@ -28,7 +28,7 @@ static char *write_run(const char *dir, const char *name, int n, double variant)
 
 static void run_file(void)
 {
-  char *dir = syn_tmpdir("reader");
+  char *dir = scratch_dir("reader");
   char *path = write_run(dir, "my-reel.h5", 120, 1.5);
   rs_reel_result *want = syn_result(120, 1.5);
   rs_reader *r = NULL;
@@ -90,8 +90,8 @@ static void run_file(void)
 /* A comparison's runs come back in run order, each with its own data. */
 static void compare_file(void)
 {
-  char *dir = syn_tmpdir("reader");
-  char *path = syn_join(dir, "cmp.h5");
+  char *dir = scratch_dir("reader");
+  char *path = scratch_join(dir, "cmp.h5");
   enum { N = 11 }; /* two-digit run numbers: "01-..", sorted like the runs */
   rs_scene *sc[N];
   rs_reel_result *res[N];
@@ -154,9 +154,9 @@ static void expect_input_error(const char *path, const char *fragment)
 
 static void refuses_other_files(void)
 {
-  char *dir = syn_tmpdir("reader");
-  char *missing = syn_join(dir, "missing.h5"), *text = syn_join(dir, "text.h5"),
-       *foreign = syn_join(dir, "foreign.h5"), *liar = syn_join(dir, "liar.h5");
+  char *dir = scratch_dir("reader");
+  char *missing = scratch_join(dir, "missing.h5"), *text = scratch_join(dir, "text.h5"),
+       *foreign = scratch_join(dir, "foreign.h5"), *liar = scratch_join(dir, "liar.h5");
   expect_input_error(missing, "No such file");
   FILE *f = fopen(text, "w");
   fputs("title: not HDF5 at all\n", f);
@@ -185,7 +185,7 @@ static void refuses_other_files(void)
 /* Missing datasets and wrong shapes are input errors naming the file and the path. */
 static void shapes_and_missing(void)
 {
-  char *dir = syn_tmpdir("reader");
+  char *dir = scratch_dir("reader");
   char *path = write_run(dir, "r.h5", 5, 1.0);
   hid_t h = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
   double m[6] = {1, 2, 3, 4, 5, 6};
@@ -238,7 +238,7 @@ static void shapes_and_missing(void)
 /* Profiles are numbered groups: 2 before 10, names after numbers; fixed-length strings. */
 static void children_order(void)
 {
-  char *dir = syn_tmpdir("reader");
+  char *dir = scratch_dir("reader");
   char *path = write_run(dir, "r.h5", 3, 1.0);
   hid_t h = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
   const char *names_in[] = {"10", "2", "b", "1", "a", "007"};
