@@ -25,7 +25,7 @@
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
-
+#include "util/path_stem.h"
 
 static double now_seconds(void)
 {
@@ -81,17 +81,6 @@ static int on_progress(void *user, int layers_done, int layers_total)
   return cli_signal_caught() != 0;
 }
 
-/* "cases/newsprint-rider.yaml" -> "newsprint-rider": the name of the CSV files */
-static void scene_stem(const char *path, char *out, size_t size)
-{
-  const char *base = strrchr(path, '/');
-  base = base ? base + 1 : path;
-  const char *dot = strrchr(base, '.');
-  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-  snprintf(out, size, "%.*s", (int)n, base);
-}
-
-
 static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const rs_reel_summary *s, const rs_defect_report *defects,
                           const char *csv_dir, double wall)
@@ -115,7 +104,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("  output             %s\n", scene->output.file);
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
-    scene_stem(scene->path, stem, sizeof stem);
+    rs_path_stem(scene->path, stem, sizeof stem);
     if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
@@ -209,7 +198,7 @@ int cli_run(const cli_args *a)
   if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
-    scene_stem(scene->path, stem, sizeof stem);
+    rs_path_stem(scene->path, stem, sizeof stem);
     st = rs_output_write_csv(a->csv_dir, stem, res);
   }
   if (st != RS_OK) {

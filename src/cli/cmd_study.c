@@ -24,6 +24,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/study.h"
+#include "util/path_stem.h"
 
 static atomic_int interrupted;
 
@@ -100,16 +101,6 @@ static int parse(int argc, char **argv, study_args *a)
   if (!a->scene)
     return cli_fail(CLI_EXIT_USAGE, "study: missing the scene file (usage: reelsim study SCENE ...)");
   return -1;
-}
-
-/* "cases/pet-rider.yaml" -> "pet-rider" */
-static void stem(const char *path, char *out, size_t size)
-{
-  const char *base = strrchr(path, '/');
-  base = base ? base + 1 : path;
-  const char *dot = strrchr(base, '.');
-  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-  snprintf(out, size, "%.*s", (int)n, base);
 }
 
 /* DIR exists (made here if its parent does) and is a writable directory. */
@@ -303,7 +294,7 @@ int cli_study(int argc, char **argv)
       goto done;
     }
   }
-  stem(a.scene, name, sizeof name);
+  rs_path_stem(a.scene, name, sizeof name);
   if (a.dir) snprintf(dir, sizeof dir, "%s", a.dir);
   else snprintf(dir, sizeof dir, "study-%s", name);
   if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;

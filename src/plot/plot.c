@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "plot/plot_internal.h"
+#include "util/path_stem.h"
 
 void rs_plot_list_free(char ***list, int n)
 {
@@ -201,15 +202,6 @@ static rs_status check_dir(const char *dir)
   return RS_OK;
 }
 
-static void file_stem(const char *path, char *out, size_t size)
-{
-  const char *base = strrchr(path, '/');
-  base = base ? base + 1 : path;
-  const char *dot = strrchr(base, '.');
-  int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
-  snprintf(out, size, "%.*s", len, base);
-}
-
 static rs_status draw(plot_ctx *c, run_data *runs, int n)
 {
   rs_status st = RS_OK;
@@ -234,7 +226,7 @@ rs_status rs_plot_file(const char *file, const char *dir, const rs_plot_options 
     rs_reader_close(&c.rd);
     return st;
   }
-  file_stem(file, c.stem, sizeof c.stem);
+  rs_path_stem(file, c.stem, sizeof c.stem);
   int n = rs_reader_runs(c.rd);
   run_data *runs = calloc((size_t)n, sizeof *runs);
   if (!runs) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");

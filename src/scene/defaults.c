@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/path_stem.h"
 
 static rs_status put_default(yn *map, const char *key, const char *text)
 {
@@ -29,21 +30,11 @@ static yn *ensure_map(yn *root, const char *key)
   return m;
 }
 
-/* "cases/newsprint-rider.yaml" -> "newsprint-rider" */
-static void stem(const char *path, char *out, size_t size)
-{
-  const char *base = strrchr(path, '/');
-  base = base ? base + 1 : path;
-  const char *dot = strrchr(base, '.');
-  size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-  snprintf(out, size, "%.*s", (int)n, base);
-}
-
 rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
 {
   char name[RS_PATH_MAX], file[RS_PATH_MAX + 8];
   rs_status st;
-  stem(scene->path, name, sizeof name);
+  rs_path_stem(scene->path, name, sizeof name);
   snprintf(file, sizeof file, "%s.h5", name);
 
   /* The defaults must pass the checks the user's values pass: a title is at most 511
