@@ -113,21 +113,8 @@ static inline double roll_radius_at(rs_roll *roll, double x)
 }
 
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
- * the layer coordinate xi = (r - r_c)/t. With dg2 != NULL also d(g^2)/dx = g^2 v'(xi) r/t
- * (continuous: the interpolant is C^1), which the node interpolation needs. */
-static double roll_g2_eval(rs_roll *roll, double x, double *dg2);
-
-static double roll_g2_at(rs_roll *roll, double x, double *dg2)
-{
-  if (x != roll->gx || roll->gepoch != roll->epoch) {
-    roll->g2x = roll_g2_eval(roll, x, &roll->dg2x);
-    roll->gx = x;
-    roll->gepoch = roll->epoch;
-  }
-  if (dg2) *dg2 = roll->dg2x;
-  return roll->g2x;
-}
-
+ * the layer coordinate xi = (r - r_c)/t, and d(g^2)/dx = g^2 v'(xi) r/t (continuous: the
+ * interpolant is C^1), which the node interpolation needs. */
 static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
 {
   const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
@@ -154,6 +141,18 @@ static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
   double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
   *dg2 = g2 * dv * r / roll->p.caliper;
   return g2;
+}
+
+/* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
+static double roll_g2_at(rs_roll *roll, double x, double *dg2)
+{
+  if (x != roll->gx || roll->gepoch != roll->epoch) {
+    roll->g2x = roll_g2_eval(roll, x, &roll->dg2x);
+    roll->gx = x;
+    roll->gepoch = roll->epoch;
+  }
+  if (dg2) *dg2 = roll->dg2x;
+  return roll->g2x;
 }
 
 /* f(x, [w, L]) = [g^2 - 1 - 2w - w^2, w],  x = ln r */

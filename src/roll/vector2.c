@@ -175,8 +175,8 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
   /* CVODE adds these counts to its own after every solve: they are per solve */
   c->niters = c->nconvfails = 0;
   /* CVODE decides when a setup is due (every 20 steps, a large change of gamma, after a
-   * failure) and resets its convergence-rate estimate there; the matrix it forms is not
-   * used here, but the test below is CVODE's and depends on that estimate */
+   * failure) and resets its convergence-rate estimate there (the setup itself forms
+   * nothing: rs_roll_newton2_attach); the test below is CVODE's and uses that estimate */
   if (call_setup && c->lsetup) {
     sunbooleantype jcur;
     flag = c->lsetup(SUNFALSE, &jcur, mem);
