@@ -28,6 +28,15 @@ typedef enum rs_lumping {
                             frozen before the block (kept for comparison) */
 } rs_lumping;
 
+/* Whether an increment may keep the deep part of an earlier integration from the core
+ * where the modulus has barely changed since, and integrate only from there up (the error
+ * this adds to an increment is held to rtol x T0/s). docs/roll-model.md, "Reusing the deep
+ * solution". */
+typedef enum rs_reuse {
+  RS_REUSE_ON = 0,       /* the default */
+  RS_REUSE_OFF = 1       /* every increment integrated from the core */
+} rs_reuse;
+
 typedef struct rs_roll_params {
   double core_radius;      /* m */
   double core_stiffness;   /* Pa, effective E_c; INFINITY for a rigid core */
@@ -40,6 +49,7 @@ typedef struct rs_roll_params {
   double atol;             /* CVODE absolute tolerance; <= 0: rtol */
   long max_steps;          /* CVODE internal steps per increment; <= 0: 100000 */
   rs_lumping lumping;      /* lumped increments; 0 = RS_LUMP_CORRECTED */
+  rs_reuse reuse;          /* 0 = RS_REUSE_ON */
 } rs_roll_params;
 
 typedef struct rs_roll_stats {
@@ -47,6 +57,8 @@ typedef struct rs_roll_stats {
   long cvode_steps;        /* internal CVODE steps, all increments */
   long rhs_evals;
   long jac_evals;
+  long full_integrations;  /* increments integrated from the core (the rest reused the
+                              deep part of the last of these) */
 } rs_roll_stats;
 
 rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out);

@@ -11,6 +11,7 @@
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "reelsim/recipe.h"
+#include "reelsim/roll.h"
 #include "reelsim/status.h"
 
 #ifdef __cplusplus
@@ -65,6 +66,7 @@ typedef struct rs_numerics {
   double rtol;             /* CVODE relative tolerance */
   double atol;             /* CVODE absolute tolerance (0: = rtol) */
   long max_steps;          /* CVODE steps per increment */
+  rs_reuse reuse;          /* keep the deep part of an earlier integration (default) or not */
 } rs_numerics;
 
 typedef struct rs_output_spec {

@@ -77,6 +77,7 @@ static void reel_params(const rs_scene *sc, rs_roll_params *p)
   p->rtol = sc->numerics.rtol;
   p->atol = sc->numerics.atol;
   p->max_steps = sc->numerics.max_steps;
+  p->reuse = sc->numerics.reuse;
 }
 
 /* ---- stress history -------------------------------------------------------------------

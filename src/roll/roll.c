@@ -78,6 +78,14 @@ struct rs_roll {
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
   int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
+  /* Reuse of the deep solution (roll_reuse_start): the last integration from the core is
+   * the reference; below the node an integration starts from, (w, L) stay the reference's */
+  double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
+  double *scan_eps;     /* [cap + 1] max over nodes 0..j of |E_r / Er_ref - 1| */
+  double *scan_L;       /* [cap + 1] max over nodes 0..j of L */
+  int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
+  int ref_age;          /* integrations since the reference */
+  double reuse_tol;     /* error the reuse may add to an increment, in units of T0/s; 0: off */
 };
 
 /* ---- the increment ODE --------------------------------------------------------------- */
@@ -225,6 +233,9 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->P_mean);
   free(roll->dsr);
   free(roll->dsh);
+  free(roll->Er_ref);
+  free(roll->scan_eps);
+  free(roll->scan_L);
   free(roll);
   *rollp = NULL;
 }
@@ -248,6 +259,8 @@ static rs_status roll_check_params(const rs_roll_params *p)
     return RS_ERROR(RS_ERR_INPUT, "rtol must lie in (0, 1) (got %g)", p->rtol);
   if (p->lumping != RS_LUMP_CORRECTED && p->lumping != RS_LUMP_FROZEN)
     return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
+  if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF)
+    return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
   return RS_OK;
 }
 
@@ -277,8 +290,15 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->P_mean = calloc(cap + 1, sizeof(double));
   roll->dsr = calloc(cap + 1, sizeof(double));
   roll->dsh = calloc(cap + 1, sizeof(double));
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch || !roll->w || !roll->L || !roll->xnode ||
-      !roll->block_share || !roll->P_node || !roll->P_mean || !roll->dsr || !roll->dsh) {
+  roll->Er_ref = calloc(cap + 1, sizeof(double));
+  roll->scan_eps = calloc(cap + 1, sizeof(double));
+  roll->scan_L = calloc(cap + 1, sizeof(double));
+  roll->ref_top = -1;
+  roll->reuse_tol = params->reuse == RS_REUSE_OFF ? 0.0 : params->rtol;
+  if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
+      !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
+      !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
+      !roll->scan_L) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
@@ -305,6 +325,11 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) goto cvode_fail;
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
+  /* CVODE keeps its step (and order) while the step it could take is within 1.5x of the
+   * current one; 1.05 lets it move to order 5 on the way up from a restart in the smooth
+   * interior, where a partial integration starts, and saves 5 % of the steps of an
+   * integration from the core (docs/performance.md, fifth round) */
+  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.0, 1.05) != CV_SUCCESS) goto cvode_fail;
   *out = roll;
   return RS_OK;
 
@@ -389,42 +414,112 @@ static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, d
 }
 
 /* The first step: BDF starts at order 1 (backward Euler), local error h^2 |w''| / 2, so
- * h0 = sqrt(2 (rtol |w0| + atol) / |w''(x_c)|) passes the first error test instead of
- * failing it and shrinking; capped by the relaxation scales (w relaxes from kc towards
- * g - 1 over dx ~ 1/(2g), and from a large kc (a core much softer than the web) like
- * 1/(x - x_c + 1/kc): start inside the shorter one, or the first Newton iterations
- * diverge). */
-static double roll_first_step(const rs_roll *roll, const roll_jet *j0)
+ * h0 = sqrt(2 (rtol |w0| + atol) / |w''(x0)|) passes the first error test instead of
+ * failing it and shrinking; capped by the relaxation scales (w relaxes from w0 (kc at the
+ * core) towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much softer than the
+ * web) like 1/(x - x_c + 1/kc): start inside the shorter one, or the first Newton
+ * iterations diverge). g2 is g^2 at x0. */
+static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2)
 {
-  const double cap = 0.05 / fmax(sqrt(roll->p.E_theta / roll->Er[0] + 1.0), fabs(roll->kc) + 1.0);
-  const double tol = roll->p.rtol * fabs(roll->kc) + roll->p.atol, d2 = fabs(j0->d2w);
+  const double cap = 0.05 / fmax(sqrt(g2 + 1.0), fabs(j0->w) + 1.0);
+  const double tol = roll->p.rtol * fabs(j0->w) + roll->p.atol, d2 = fabs(j0->d2w);
   if (!(d2 > 0.0)) return cap;
   const double h = 0.5 * sqrt(2.0 * tol / d2); /* half: a margin for the error estimate */
   return h < cap ? h : cap;
 }
 
-/* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k.
+/* Integrations from the core between two references: a reference serves 32 increments.
+ * Accuracy does not need a refresh (roll_reuse_start bounds the error whatever the
+ * reference's age); cost does: the start node sinks as the modulus drifts, and an
+ * integration from the core costs ~150 steps against ~90 from the interior. Refreshing
+ * every 16, 32 or 64 increments gives the same steps within 0.5 % (docs/performance.md). */
+enum { RS_REUSE_REFRESH = 32 };
+
+/* The node to start the integration of an increment onto k from, keeping the reference's
+ * (w, L) below it, or -1: from the core, as a new reference.
+ *
+ * Node j's reference (w, L) solves the Riccati equation with E_ref instead of E_r. The
+ * equation relaxes to w = g - 1 at rate 2g, so a relative change eps of g^2 = E_theta/E_r
+ * moves w by ~ (w + 1) eps / 2: the increment below a start node s0 is off by a relative
+ * ~ (eps / 2) (L(s0) - L_j), and above it by ~ eps / 4 (the start value's error, relaxing).
+ * The increment itself is (T0/s) exp(L_j - L_s) there. So the error in units of T0/s is
+ * at most ~ E(s0) = max_{j <= s0} eps_j x exp(max_{j <= s0} L_j - L_s) x (at most e^-1 / 2
+ * from the factor u e^-u of the nodes below): the start node is the highest with E(s0) <=
+ * reuse_tol, which is rtol, the tolerance CVODE's own local errors are held to. E grows with
+ * s0 (both maxima do), so it is found by bisection. L_s is the last increment's surface
+ * (L[n]), one increment below the new one: the bound is on the safe side.
+ *
+ * The error has one sign (pressures only grow, so E_r drifts one way); measured on the
+ * 6054-layer newsprint reel, the stresses move by 2e-6 of the core pressure, a tenth of
+ * CVODE's own global error (docs/performance.md). */
+static int roll_reuse_start(rs_roll *roll)
+{
+  const int n = roll->n;
+  if (!(roll->reuse_tol > 0.0) || roll->ref_top < 1 || n < 1 || roll->ref_age >= RS_REUSE_REFRESH)
+    return -1;
+  const int top = roll->ref_top < n ? roll->ref_top : n;
+  const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
+  double *restrict pe = roll->scan_eps, *restrict pl = roll->scan_L;
+  double me = 0.0, ml = -INFINITY;
+  for (int j = 0; j <= top; ++j) {
+    const double e = fabs(Er[j] - Eref[j]) / Eref[j];
+    me = e > me ? e : me;
+    ml = L[j] > ml ? L[j] : ml;
+    pe[j] = me;
+    pl[j] = ml;
+  }
+  const double Ls = L[n], tol = roll->reuse_tol;
+  int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    if (pe[mid] * exp(pl[mid] - Ls) <= tol)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo >= 1 ? lo : -1; /* node 0 alone saves nothing: start a new reference */
+}
+
+/* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
+ * roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
+ * keeping the reference's values below it.
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
  * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
 static rs_status roll_integrate(rs_roll *roll, int k)
 {
-  const double *xn = roll->xnode, x0 = xn[0], xs = xn[k];
+  const double *xn = roll->xnode, xs = xn[k];
+  const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
+  const double x0 = xn[first];
   sunrealtype *y = N_VGetArrayPointer(roll->y);
-  y[0] = roll->kc;
-  y[1] = 0.0;
-  roll->w[0] = roll->kc;
-  roll->L[0] = 0.0;
+  if (from_core) {
+    roll->w[0] = roll->kc;
+    roll->L[0] = 0.0;
+  }
+  /* from the core (0, kc); else the reference's values, whose L carries the reference's
+   * origin: every L difference the increment is built from stays consistent */
+  y[0] = roll->w[first];
+  y[1] = roll->L[first];
   roll->cvode_msg[0] = '\0';
   /* every integration anchors r = e^x afresh: its numbers do not depend on the last one's */
   roll->x_anchor = x0;
   roll->r_anchor = exp(x0);
-  roll_jet prev = roll_jet_at(roll, x0, roll->kc, 0.0);
+  roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
+  const double g2_start = roll_g2_at(roll, x0, NULL);
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev)) != CV_SUCCESS)
+      CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
+  if (from_core) { /* a new reference: nodes 0..k, with the modulus it is integrated with */
+    memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
+    roll->ref_top = k;
+    roll->ref_age = 0;
+    roll->stats.full_integrations++;
+  } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
+    roll->ref_top = j0;
+    roll->ref_age++;
+  }
 
-  int next = 1; /* next node to fill */
+  int next = first + 1; /* next node to fill */
   long steps = 0;
   sunrealtype tret = x0;
   while (next <= k) {
@@ -595,22 +690,22 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
     roll->block_share[i] = total > 0.0 ? above / total : 0.0;
   }
   const double scale = -total / s;
-  /* First every node's increment (ds into L, ds + r ds' into w, which are spent), then the
-   * state: an increment that fails leaves the roll exactly as it was, every finished
+  /* First every node's increment (ds, and ds + r ds'), then the state: an increment that fails leaves the roll exactly as it was, every finished
    * layer intact. From the top down, e_j = y(r_j)/y(s) by the same one-layer decays as the
    * corrected scheme (roll_block_increment), so that m = 1 is the same arithmetic in both. */
-  roll_decays(roll->L, roll->dsr, k); /* e_j = y(r_j)/y(s), j < k */
-  roll->dsr[k] = 1.0;
+  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
+  roll_decays(roll->L, dsr, k); /* e_j = y(r_j)/y(s), j < k */
+  dsr[k] = 1.0;
   for (int j = 0; j <= k; ++j) {
-    double ds = scale * roll->dsr[j];
-    roll->L[j] = ds;
-    roll->w[j] = ds * (1.0 + roll->w[j]);
+    const double ds = scale * dsr[j];
+    dsr[j] = ds;
+    dsh[j] = ds * (1.0 + roll->w[j]);
   }
-  rs_status st = roll_check_increment(roll, roll->L, roll->w, k);
+  rs_status st = roll_check_increment(roll, dsr, dsh, k);
   if (st) return st;
-  roll->core_sigma += roll->L[0];
+  roll->core_sigma += dsr[0];
   for (int j = 1; j <= k; ++j) {
-    double ds = roll->L[j], hoop = roll->w[j];
+    double ds = dsr[j], hoop = dsh[j];
     if (j <= k_old) {
       roll->sigma_r[j - 1] += ds;
       roll->sigma_theta[j - 1] += hoop;

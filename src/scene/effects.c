@@ -152,6 +152,8 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
   fprintf(out, "  - numerics: %d layer%s per step, rtol %s", s->numerics.layers_per_step,
           s->numerics.layers_per_step == 1 ? "" : "s", f(a, s->numerics.rtol));
   if (s->numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->numerics.atol));
-  fprintf(out, "\n");
+  fprintf(out, s->numerics.reuse == RS_REUSE_ON
+                   ? ", deep solution reused (error held to rtol x T0/s)\n"
+                   : ", every increment integrated from the core\n");
   print_defect_checks(out, s);
 }

@@ -232,6 +232,7 @@ static rs_status resolve_numerics(const yn *root, const ys_numerics *y, rs_numer
   n->rtol = y->rtol;
   n->atol = y->atol;
   n->max_steps = y->max_steps;
+  n->reuse = (rs_reuse)y->reuse;
   return RS_OK;
 }
 

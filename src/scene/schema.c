@@ -145,11 +145,18 @@ static const cyaml_schema_field_t nip_fields[] = {
     CYAML_FIELD_END};
 
 /* ---- numerics and output ------------------------------------------------------------- */
+static const cyaml_strval_t numerics_reuses[] = {
+    {"deep", RS_REUSE_ON},
+    {"none", RS_REUSE_OFF},
+};
+
 static const cyaml_schema_field_t numerics_fields[] = {
     CYAML_FIELD_INT("layers_per_step", OPT, ys_numerics, layers_per_step),
     CYAML_FIELD_FLOAT("rtol", OPT, ys_numerics, rtol),
     CYAML_FIELD_FLOAT("atol", OPT, ys_numerics, atol),
     CYAML_FIELD_INT("max_steps", OPT, ys_numerics, max_steps),
+    CYAML_FIELD_ENUM("reuse", OPT | CYAML_FLAG_STRICT, ys_numerics, reuse, numerics_reuses,
+                     CYAML_ARRAY_LEN(numerics_reuses)),
     CYAML_FIELD_END};
 
 static const cyaml_schema_field_t output_fields[] = {

@@ -77,6 +77,7 @@ typedef struct ys_numerics {
   int layers_per_step;
   double rtol, atol;
   long max_steps;
+  int reuse;
 } ys_numerics;
 
 typedef struct ys_output {
