@@ -118,6 +118,13 @@ rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_mate
   cfg.winder = spec->winder;
   cfg.torque_share = spec->torque_share;
   cfg.nodes = spec->nodes > 0 ? spec->nodes : 64;
+  /* The load search's tolerance. A relative error e in the load moves T0 by about e
+   * relative (the nip's tractions scale with its load): 1 % of the adaptive policy's T0
+   * tolerance (1e-6 at the default 1e-4; the same for the other policies) keeps it out of
+   * the policy's error budget. The search's own default, 1e-9, took a third half-width
+   * per solve for digits nothing uses (docs/performance.md, the contact reel). */
+  cfg.load_rtol = 1e-2 * (spec->update == RS_NIP_UPDATE_ADAPTIVE && spec->T0_rtol > 0 ? spec->T0_rtol
+                                                                                      : 1e-4);
   if (spec->terms > 0) { /* the default's series (accelerated), shorter or longer */
     cfg.series.terms = spec->terms;
     cfg.series.accelerate = 1;
