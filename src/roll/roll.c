@@ -86,6 +86,17 @@ struct rs_roll {
   int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
   int ref_age;          /* integrations since the reference */
   double reuse_tol;     /* error the reuse may add to an increment, in units of T0/s; 0: off */
+  int start;            /* node the last integration started from (0: the core) */
+  /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
+   * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
+   * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is
+   *   ds_j = c e_j,  ds_j + r ds_j' = c e_j (1 + w_j),   c = ds_{j0} / e_{j0}    (j < j0),
+   * two multiplications a node (roll_block_increment, roll_commit). */
+  double *shape_e, *shape_h;
+  int shape_top;
+  /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h) */
+  int deep_lo;
+  double c_deep;
 };
 
 /* ---- the increment ODE --------------------------------------------------------------- */
@@ -236,6 +247,8 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->Er_ref);
   free(roll->scan_eps);
   free(roll->scan_L);
+  free(roll->shape_e);
+  free(roll->shape_h);
   free(roll);
   *rollp = NULL;
 }
@@ -293,12 +306,15 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->Er_ref = calloc(cap + 1, sizeof(double));
   roll->scan_eps = calloc(cap + 1, sizeof(double));
   roll->scan_L = calloc(cap + 1, sizeof(double));
+  roll->shape_e = calloc(cap + 1, sizeof(double));
+  roll->shape_h = calloc(cap + 1, sizeof(double));
+  roll->shape_top = -1;
   roll->ref_top = -1;
   roll->reuse_tol = params->reuse == RS_REUSE_OFF ? 0.0 : params->rtol;
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
-      !roll->scan_L) {
+      !roll->scan_L || !roll->shape_e || !roll->shape_h) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
@@ -512,10 +528,12 @@ static rs_status roll_integrate(rs_roll *roll, int k)
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
       CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
+  roll->start = first;
   if (from_core) { /* a new reference: nodes 0..k, with the modulus it is integrated with */
     memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
     roll->ref_top = k;
     roll->ref_age = 0;
+    roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
     roll->stats.full_integrations++;
   } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
     roll->ref_top = j0;
@@ -596,18 +614,18 @@ static inline double roll_exp_step(double d)
   return fabs(d) >= 0.03 ? exp(d) : roll_exp_small(d);
 }
 
-/* e_j = y(r_j)/y(r_top) for j = top-1 .. 0, into e[0..top): the products, from the top
+/* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
  * down, of the one-layer decays exp(L_j - L_{j+1}) (roll_exp_step: the Taylor sums in a
  * plain loop that vectorises, then the running product, which takes exp() where a decay
  * is large). Below 1e-290 the product is 0: no subnormals. */
-static void roll_decays(const double *restrict L, double *restrict e, int top)
+static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
-  for (int j = 0; j < top; ++j) {
+  for (int j = lo; j < top; ++j) {
     const double d = L[j] - L[j + 1];
     e[j] = roll_exp_small(d);
   }
   double p = 1.0;
-  for (int j = top - 1; j >= 0; --j) {
+  for (int j = top - 1; j >= lo; --j) {
     double t = e[j];
     /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
      * increasing there, and far below 1 or negative for d < -0.03): look only then */
@@ -647,12 +665,27 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
       mean[j] = V / (m - b);
     }
   }
-  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b) */
+  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
+   * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  roll_decays(L, dsr, k_old + 1);
-  if (mean)
-    for (int j = 0; j <= k_old; ++j) mean[j] = V * dsr[j] / m;
-  for (int j = 0; j <= k_old; ++j) {
+  const int j0 = roll->start;
+  int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
+  roll_decays(L, dsr, lo, k_old + 1);
+  if (j0 == 0) { /* a reference: keep its shape (nodes 0..k_old) */
+    for (int j = 0; j <= k_old; ++j) {
+      roll->shape_e[j] = dsr[j];
+      roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
+    }
+    roll->shape_top = k_old;
+  }
+  roll->deep_lo = lo;
+  roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  if (mean) {
+    for (int j = lo; j <= k_old; ++j) mean[j] = V * dsr[j] / m;
+    const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
+    for (int j = 0; j < lo; ++j) mean[j] = cm * roll->shape_e[j];
+  }
+  for (int j = lo; j <= k_old; ++j) {
     const double ds = -S * dsr[j];
     dsr[j] = ds;
     dsh[j] = ds * (1.0 + w[j]);
@@ -663,14 +696,26 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
  * are all finite; else the error naming the lowest node that is not. */
 static rs_status roll_check_increment(const rs_roll *roll, const double *ds, const double *dh, int k)
 {
-  /* 0 x (finite) = 0, 0 x (inf or NaN) = NaN: one sum says whether all are finite */
-  double z0 = 0.0, z1 = 0.0;
-  for (int j = 0; j <= k; ++j) {
-    z0 += 0.0 * ds[j];
-    z1 += 0.0 * dh[j];
+  /* the nodes below deep_lo are c_deep times the reference's shape, which is finite (its
+   * own increment passed this check): c_deep says for them. Above, x - x is 0 for a finite
+   * x and NaN for an infinite or NaN one: one sum says whether all are finite (four sums,
+   * independent, so that the compiler can vectorise them: a floating-point sum's order is
+   * otherwise fixed) */
+  double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
+  int j = roll->deep_lo;
+  for (; j + 3 <= k; j += 4) {
+    z0 += (ds[j] - ds[j]) + (dh[j] - dh[j]);
+    z1 += (ds[j + 1] - ds[j + 1]) + (dh[j + 1] - dh[j + 1]);
+    z2 += (ds[j + 2] - ds[j + 2]) + (dh[j + 2] - dh[j + 2]);
+    z3 += (ds[j + 3] - ds[j + 3]) + (dh[j + 3] - dh[j + 3]);
   }
+  for (; j <= k; ++j) z0 += (ds[j] - ds[j]) + (dh[j] - dh[j]);
+  const int bad = !isfinite(roll->c_deep) || (z0 + z1) + (z2 + z3) != 0.0;
   const double rc = roll->p.core_radius, t = roll->p.caliper;
-  for (int j = 0; (z0 + z1 != 0.0) && j <= k; ++j)
+  if (bad && !isfinite(roll->c_deep))
+    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
+                    rc + k * t);
+  for (j = roll->deep_lo; bad && j <= k; ++j)
     if (!isfinite(ds[j]) || !isfinite(dh[j]))
       return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                "non-finite stress increment at the core (outer radius %.9g m)",
@@ -697,13 +742,15 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
    * layer intact. From the top down, e_j = y(r_j)/y(s) by the same one-layer decays as the
    * corrected scheme (roll_block_increment), so that m = 1 is the same arithmetic in both. */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  roll_decays(roll->L, dsr, k); /* e_j = y(r_j)/y(s), j < k */
+  roll_decays(roll->L, dsr, 0, k); /* e_j = y(r_j)/y(s), j < k */
   dsr[k] = 1.0;
   for (int j = 0; j <= k; ++j) {
     const double ds = scale * dsr[j];
     dsr[j] = ds;
     dsh[j] = ds * (1.0 + roll->w[j]);
   }
+  roll->deep_lo = 0;
+  roll->c_deep = 0.0;
   rs_status st = roll_check_increment(roll, dsr, dsh, k);
   if (st) return st;
   roll->core_sigma += dsr[0];
@@ -730,10 +777,19 @@ static rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   const double t = roll->p.caliper;
   rs_status st = roll_check_increment(roll, roll->dsr, roll->dsh, k);
   if (st) return st;
-  roll->core_sigma += roll->dsr[0];
-  for (int j = 1; j <= k_old; ++j) {
-    roll->sigma_r[j - 1] += roll->dsr[j];
-    roll->sigma_theta[j - 1] += roll->dsh[j];
+  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment) */
+  const int lo = roll->deep_lo;
+  const double c = roll->c_deep;
+  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  double *restrict sr = roll->sigma_r, *restrict st_ = roll->sigma_theta;
+  roll->core_sigma += lo > 0 ? c * se[0] : roll->dsr[0];
+  for (int j = 1; j < lo; ++j) {
+    sr[j - 1] += c * se[j];
+    st_[j - 1] += c * sh[j];
+  }
+  for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) {
+    sr[j - 1] += roll->dsr[j];
+    st_[j - 1] += roll->dsh[j];
   }
   for (int j = k_old + 1; j <= k; ++j) {
     roll->sigma_r[j - 1] = roll->dsr[j];
