@@ -22,6 +22,7 @@ typedef struct rs_reel_result {
   double core_pressure;      /* Pa, compression positive */
   double core_radius;        /* m */
   long increments, cvode_steps, rhs_evals;
+  long full_integrations;    /* increments integrated from the core (numerics.reuse) */
   double wall_seconds;
   /* Stress history, when the scene's output.history_every > 0 (else n_stages = 0 and
    * the arrays are NULL). Stage s is the roll after stage_layers[s] layers: stored at

@@ -99,8 +99,9 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   cli_fmt_stress(b, sizeof b, s->min_hoop);
   printf("  min hoop stress    %s at r = %.1f mm\n", b, s->min_hoop_radius * 1e3);
   printf("  wound-on tension   %.1f .. %.1f N/m\n", s->wot_min, s->wot_max);
-  printf("  wall time          %.2f s (solver %.2f s, %ld increments, %ld CVODE steps)\n", wall,
-         res->wall_seconds, res->increments, res->cvode_steps);
+  printf("  wall time          %.2f s (solver %.2f s, %ld increments, %ld from the core, %ld CVODE "
+         "steps)\n",
+         wall, res->wall_seconds, res->increments, res->full_integrations, res->cvode_steps);
   printf("  output             %s\n", scene->output.file);
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];

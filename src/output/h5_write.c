@@ -56,6 +56,7 @@ static rs_status write_run_attributes(hid_t loc, const rs_scene *scene, const rs
   if ((st = rs_h5_attr_int64(loc, "increments", res->increments)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "cvode_steps", res->cvode_steps)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "rhs_evals", res->rhs_evals)) != RS_OK) return st;
+  if ((st = rs_h5_attr_int64(loc, "full_integrations", res->full_integrations)) != RS_OK) return st;
   return rs_h5_attr_double(loc, "wall_seconds", res->wall_seconds);
 }
 

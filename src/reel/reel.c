@@ -174,6 +174,7 @@ static void reel_collect(const rs_roll *roll, rs_reel_result *res, double t_star
   res->increments = stats.increments;
   res->cvode_steps = stats.cvode_steps;
   res->rhs_evals = stats.rhs_evals;
+  res->full_integrations = stats.full_integrations;
   res->wall_seconds = reel_now() - t_start;
 }
 

@@ -66,6 +66,12 @@ rs_cli_test(set_malformed 2 [[--set winding\.tension: expected key\.path=value]]
             check ${CASES}/newsprint-rider.yaml --set winding.tension)
 rs_cli_test(set_creates_key 0 [[numerics: 10 layers per step]]
             check ${CASES}/newsprint-taper.yaml --set numerics.layers_per_step=10)
+rs_cli_test(reuse_default 0 [[numerics: 1 layer per step, rtol 1e-6, deep solution reused]]
+            check ${CASES}/newsprint-rider.yaml)
+rs_cli_test(reuse_none 0 [[rtol 1e-6, every increment integrated from the core]]
+            check ${CASES}/newsprint-rider.yaml --set numerics.reuse=none)
+rs_cli_test(reuse_bad 2 [[--set numerics\.reuse=bogus: unknown value 'bogus' \(expected one of: deep, none\)]]
+            check ${CASES}/newsprint-rider.yaml --set numerics.reuse=bogus)
 rs_cli_test(set_table_entry 0 [=[table: \[\[0\.0762, 800\], \[0\.3, 320\], \[0\.5, 600\]\]]=]
             check ${CASES}/linerboard-table.yaml --set winding.tension.table[1][1]=320)
 rs_cli_test(set_table_negative 2 [[--set winding\.tension\.table\.2\.1=-5: the tension must not be negative]]

@@ -84,6 +84,7 @@ static rs_reel_result *make_result(int n)
   r->increments = 1000;
   r->cvode_steps = 9876543210LL;
   r->rhs_evals = 3;
+  r->full_integrations = 2;
   r->wall_seconds = 1.0 / 3.0;
   return r;
 }
@@ -260,6 +261,7 @@ static void round_trip(void)
     CHECK(read_attr_int64(f, "increments") == res->increments);
     CHECK(read_attr_int64(f, "cvode_steps") == res->cvode_steps);
     CHECK(read_attr_int64(f, "rhs_evals") == res->rhs_evals);
+    CHECK(read_attr_int64(f, "full_integrations") == res->full_integrations);
     CHECK(same_bits(read_attr_double(f, "final_radius"), res->radius[n - 1]));
     CHECK(same_bits(read_attr_double(f, "core_pressure"), res->core_pressure));
     CHECK(same_bits(read_attr_double(f, "wall_seconds"), res->wall_seconds));

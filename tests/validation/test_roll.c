@@ -3,7 +3,9 @@
  *  - one layer on a rigid core (pressure T/r), outer-layer hoop stress T0/t;
  *  - an independent finite-difference solution of the same Pfeiffer increments;
  *  - convergence in rtol and in layers per step;
- *  - g = 700 with s/r_c = 10 (overflow-prone in the naive formulation). */
+ *  - g = 700 with s/r_c = 10 (overflow-prone in the naive formulation);
+ *  - the reuse of the deep solution (numerics.reuse) against integrating every increment
+ *    from the core: within its bound, shrinking with rtol, and really used. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +42,12 @@ static void compare_altmann(double Ec, double nu, double rtol_check)
   /* deep inside a linear roll the pressure approaches (T/t)/(g - 1) (Hakiel 1987);
    * this roll is short, so only the order of magnitude is asserted */
   CHECK_CLOSE(-er[n / 2], (T / t) / (g - 1.0), 0.5);
+  /* a constant modulus never drifts: every increment but one in 32 (the refresh) reuses
+   * the deep solution, so the closed form above checks that path */
+  rs_roll_stats stats;
+  rs_roll_get_stats(roll, &stats);
+  CHECK_LOG("integrations from the core", stats.full_integrations);
+  CHECK(stats.full_integrations <= n / 32 + 2);
   free(sr);
   free(st);
   rs_roll_destroy(&roll);
@@ -362,6 +370,50 @@ static void lumping_corrected(void)
   rs_roll_destroy(&ref_frozen);
 }
 
+/* The reuse of the deep solution (roll.c, roll_reuse_start) against every increment
+ * integrated from the core, on the Pfeiffer newsprint roll, where the modulus drifts with
+ * every layer. Its bound is rtol x T0/s per increment at any node; summed over the
+ * increments that reach a node that is at most ~N rtol (T0/s) / P of the node's pressure
+ * (0.5 rtol here), so the difference must stay below a few rtol of the core pressure
+ * (measured 0.3-0.5 rtol at 1500 layers: docs/roll-model.md), fall with rtol, and the reuse must have been
+ * used for most increments (or the comparison says nothing). */
+static void reuse_vs_from_core(void)
+{
+  const int n = 1500;
+  double prev = INFINITY;
+  const double rtols[] = {1e-5, 1e-6};
+  for (int i = 0; i < 2; ++i) {
+    rs_roll_params p = newsprint_params(n);
+    p.rtol = rtols[i];
+    rs_roll *deep = wind(&p, n, 1, 682.5);
+    p.reuse = RS_REUSE_OFF;
+    rs_roll *core = wind(&p, n, 1, 682.5);
+    if (!deep || !core) {
+      rs_roll_destroy(&deep);
+      rs_roll_destroy(&core);
+      return;
+    }
+    rs_roll_stats sd, sc;
+    rs_roll_get_stats(deep, &sd);
+    rs_roll_get_stats(core, &sc);
+    const double pc = rs_roll_core_pressure(core);
+    double e = fabs(rs_roll_core_pressure(deep) - pc);
+    for (int j = 0; j < n; ++j) e = fmax(e, fabs(rs_roll_sigma_r(deep)[j] - rs_roll_sigma_r(core)[j]));
+    e /= pc;
+    printf("  rtol %-6.0e max |sigma_r difference| / core pressure %.3e; steps %ld vs %ld; "
+           "integrations from the core %ld of %ld\n",
+           rtols[i], e, sd.cvode_steps, sc.cvode_steps, sd.full_integrations, sd.increments);
+    CHECK_LT(e, 3 * rtols[i]);
+    CHECK_LT(e, prev);
+    CHECK(sc.full_integrations == sc.increments);
+    CHECK(sd.full_integrations < 3 * sd.increments / 4);
+    CHECK(sd.cvode_steps < sc.cvode_steps);
+    prev = e;
+    rs_roll_destroy(&deep);
+    rs_roll_destroy(&core);
+  }
+}
+
 /* g = 700 with s/r_c = 10: y ~ (r/r_c)^699 = 10^699 in the naive formulation. */
 static void g700_ratio10(void)
 {
@@ -416,5 +468,6 @@ static const check_case cases[] = {
     {"converges_in_layers_per_step", converges_in_layers_per_step},
     {"lumping_corrected", lumping_corrected},
     {"g700_ratio10", g700_ratio10},
+    {"reuse_vs_from_core", reuse_vs_from_core},
 };
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
