@@ -178,8 +178,8 @@ static double roll_g2_at(rs_roll *roll, double x, double *dg2)
 static int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
 {
   rs_roll *roll = user;
-  const sunrealtype *y = N_VGetArrayPointer(yv);
-  sunrealtype *f = N_VGetArrayPointer(ydot);
+  const sunrealtype *y = NV_DATA_S(yv); /* the macro: the library's getter is a call */
+  sunrealtype *f = NV_DATA_S(ydot);
   double g2 = roll_g2_at(roll, x, NULL), w = y[0];
   f[0] = g2 - 1.0 - 2.0 * w - w * w;
   f[1] = w;
@@ -203,8 +203,8 @@ static int roll_jac(double x, const double y[2], double J[2][2], void *user)
 static int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
 {
   const rs_roll *roll = user;
-  const sunrealtype *y = N_VGetArrayPointer(yv);
-  sunrealtype *e = N_VGetArrayPointer(ewt);
+  const sunrealtype *y = NV_DATA_S(yv);
+  sunrealtype *e = NV_DATA_S(ewt);
   const double rtol = roll->p.rtol, atol = roll->p.atol;
   const double d0 = rtol * fabs(y[0]) + atol, d1 = rtol * fabs(y[1]) + atol;
   if (!(d0 > 0.0 && d1 > 0.0)) return -1;

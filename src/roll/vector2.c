@@ -106,6 +106,18 @@ static int v2_scale_add_multi(int nvec, sunrealtype *a, N_Vector x, N_Vector *Y,
   return 0;
 }
 
+/* Z_i = c_i X_i (Z_i may be X_i): CVODE rescales its history array with it whenever the
+ * step changes */
+static int v2_scale_vector_array(int nvec, sunrealtype *c, N_Vector *X, N_Vector *Z)
+{
+  for (int i = 0; i < nvec; ++i) {
+    sunrealtype z0 = c[i] * D(X[i])[0], z1 = c[i] * D(X[i])[1];
+    D(Z[i])[0] = z0;
+    D(Z[i])[1] = z1;
+  }
+  return 0;
+}
+
 int rs_roll_vector2_specialise(N_Vector v)
 {
   if (!v || N_VGetVectorID(v) != SUNDIALS_NVEC_SERIAL || NV_LENGTH_S(v) != 2) return -1;
@@ -120,6 +132,7 @@ int rs_roll_vector2_specialise(N_Vector v)
   o->nvwrmsnorm = v2_wrms_norm;
   o->nvlinearcombination = v2_linear_combination;
   o->nvscaleaddmulti = v2_scale_add_multi;
+  o->nvscalevectorarray = v2_scale_vector_array;
   return 0;
 }
 
