@@ -400,10 +400,15 @@ static void reuse_vs_from_core(void)
     double e = fabs(rs_roll_core_pressure(deep) - pc);
     for (int j = 0; j < n; ++j) e = fmax(e, fabs(rs_roll_sigma_r(deep)[j] - rs_roll_sigma_r(core)[j]));
     e /= pc;
-    printf("  rtol %-6.0e max |sigma_r difference| / core pressure %.3e; steps %ld vs %ld; "
-           "integrations from the core %ld of %ld\n",
-           rtols[i], e, sd.cvode_steps, sc.cvode_steps, sd.full_integrations, sd.increments);
+    double eh = 0; /* the hoop stress against the outer layer's T0/t (it crosses zero) */
+    for (int j = 0; j < n; ++j)
+      eh = fmax(eh, fabs(rs_roll_sigma_theta(deep)[j] - rs_roll_sigma_theta(core)[j]));
+    eh /= 682.5 / 70e-6;
+    printf("  rtol %-6.0e max |sigma_r difference| / core pressure %.3e, max |sigma_theta "
+           "difference| / (T0/t) %.3e; steps %ld vs %ld; integrations from the core %ld of %ld\n",
+           rtols[i], e, eh, sd.cvode_steps, sc.cvode_steps, sd.full_integrations, sd.increments);
     CHECK_LT(e, 3 * rtols[i]);
+    CHECK_LT(eh, 3 * rtols[i]);
     CHECK_LT(e, prev);
     CHECK(sc.full_integrations == sc.increments);
     CHECK(sd.full_integrations < 3 * sd.increments / 4);
