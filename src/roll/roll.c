@@ -30,7 +30,12 @@
  * that reach it, integrate again with the modulus there (RS_LUMP_CORRECTED). Error first
  * order in m - 1, ~60x below the first scheme's (frozen modulus, the whole block's load at
  * the outer radius: RS_LUMP_FROZEN, kept for comparison; docs/accuracy.md). For m = 1 both
- * are exact Hakiel accretion, bit for bit. */
+ * are exact Hakiel accretion, bit for bit.
+ *
+ * An increment need not be integrated from the core: below the newest layers the modulus
+ * barely changes, so it keeps the deep part of the last integration from the core and
+ * integrates from a start node up, the error this adds held to rtol x T0/s
+ * (roll_reuse_start; numerics.reuse; docs/roll-model.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -85,7 +90,6 @@ struct rs_roll {
   double *scan_L;       /* [cap + 1] max over nodes 0..j of L */
   int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
   int ref_age;          /* integrations since the reference */
-  double reuse_tol;     /* error the reuse may add to an increment, in units of T0/s; 0: off */
   int start;            /* node the last integration started from (0: the core) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
    * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
@@ -310,7 +314,6 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->shape_h = calloc(cap + 1, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
-  roll->reuse_tol = params->reuse == RS_REUSE_OFF ? 0.0 : params->rtol;
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
@@ -464,8 +467,8 @@ enum { RS_REUSE_REFRESH = 32 };
  * The increment itself is (T0/s) exp(L_j - L_s) there. So the error in units of T0/s is
  * at most ~ E(s0) = max_{j <= s0} eps_j x exp(max_{j <= s0} L_j - L_s) x (at most e^-1 / 2
  * from the factor u e^-u of the nodes below): the start node is the highest with E(s0) <=
- * reuse_tol, which is rtol, the tolerance CVODE's own local errors are held to. E grows with
- * s0 (both maxima do), so it is found by bisection. L_s is the last increment's surface
+ * rtol, the tolerance CVODE's own local errors are held to. E grows with s0 (both maxima
+ * do), so it is found by bisection. L_s is the last increment's surface
  * (L[n]), one increment below the new one: the bound is on the safe side.
  *
  * The error has one sign (pressures only grow, so E_r drifts one way); measured on the
@@ -475,7 +478,8 @@ enum { RS_REUSE_REFRESH = 32 };
 static int roll_reuse_start(rs_roll *roll)
 {
   const int n = roll->n;
-  if (!(roll->reuse_tol > 0.0) || roll->ref_top < 1 || n < 1 || roll->ref_age >= RS_REUSE_REFRESH)
+  if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1 ||
+      roll->ref_age >= RS_REUSE_REFRESH)
     return -1;
   const int top = roll->ref_top < n ? roll->ref_top : n;
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
@@ -488,7 +492,7 @@ static int roll_reuse_start(rs_roll *roll)
     pe[j] = me;
     pl[j] = ml;
   }
-  const double Ls = L[n], tol = roll->reuse_tol;
+  const double Ls = L[n], tol = roll->p.rtol;
   int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
   while (hi - lo > 1) {
     const int mid = lo + (hi - lo) / 2;
@@ -520,7 +524,8 @@ static rs_status roll_integrate(rs_roll *roll, int k)
   y[0] = roll->w[first];
   y[1] = roll->L[first];
   roll->cvode_msg[0] = '\0';
-  /* every integration anchors r = e^x afresh: its numbers do not depend on the last one's */
+  /* every integration anchors r = e^x afresh at its start: its radii do not depend on
+   * where the last integration ended */
   roll->x_anchor = x0;
   roll->r_anchor = exp(x0);
   roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
@@ -702,6 +707,10 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
    * x and NaN for an infinite or NaN one: one sum says whether all are finite (four sums,
    * independent, so that the compiler can vectorise them: a floating-point sum's order is
    * otherwise fixed) */
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  if (!isfinite(roll->c_deep))
+    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
+                    rc + k * t);
   double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
   int j = roll->deep_lo;
   for (; j + 3 <= k; j += 4) {
@@ -711,11 +720,7 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
     z3 += (ds[j + 3] - ds[j + 3]) + (dh[j + 3] - dh[j + 3]);
   }
   for (; j <= k; ++j) z0 += (ds[j] - ds[j]) + (dh[j] - dh[j]);
-  const int bad = !isfinite(roll->c_deep) || (z0 + z1) + (z2 + z3) != 0.0;
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
-  if (bad && !isfinite(roll->c_deep))
-    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
-                    rc + k * t);
+  const int bad = (z0 + z1) + (z2 + z3) != 0.0;
   for (j = roll->deep_lo; bad && j <= k; ++j)
     if (!isfinite(ds[j]) || !isfinite(dh[j]))
       return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
