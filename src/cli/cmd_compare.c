@@ -113,7 +113,7 @@ static int check_jobs(compare_state *c)
     if (job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
     if (job->result && job->status == RS_ERR_SOLVER)
       fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
-              c->scenes[i]->n_layers);
+              c->scenes[i]->problem.n_layers);
     if (code == CLI_EXIT_OK || k == CLI_EXIT_USAGE) code = k;
   }
   return code;

@@ -151,7 +151,7 @@ int cli_run(const cli_args *a)
     goto done;
   }
 
-  progress prog = {.total = scene->n_layers,
+  progress prog = {.total = scene->problem.n_layers,
                    .bar = !a->quiet && isatty(STDERR_FILENO),
                    .t_start = t0};
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
@@ -162,9 +162,9 @@ int cli_run(const cli_args *a)
     const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
-               scene->n_layers, scene->output.file);
+               scene->problem.n_layers, scene->output.file);
     else
-      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, scene->n_layers);
+      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, scene->problem.n_layers);
     code = cli_signal_exit_code(sig);
     goto done;
   }
@@ -176,10 +176,10 @@ int cli_run(const cli_args *a)
         fprintf(stderr,
                 "reelsim:   %d of %d layers were wound; partial result written to %s "
                 "(complete = 0)\n",
-                res->n_layers, scene->n_layers, scene->output.file);
+                res->n_layers, scene->problem.n_layers, scene->output.file);
       else
         fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
-                res->n_layers, scene->n_layers);
+                res->n_layers, scene->problem.n_layers);
     }
     goto done;
   }

@@ -306,7 +306,7 @@ int cli_study(int argc, char **argv)
 
   if (!a.quiet) {
     printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, base->title,
-           base->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+           base->problem.n_layers, n, a.quick ? " (quick)" : "", a.jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
@@ -342,7 +342,7 @@ int cli_study(int argc, char **argv)
     }
   }
 
-  if ((st = rs_study_analyze(plan, results, wall, cpu, base->material.caliper, &rep)) != RS_OK) {
+  if ((st = rs_study_analyze(plan, results, wall, cpu, base->problem.material.caliper, &rep)) != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }

@@ -21,10 +21,10 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
 
 void rs_defect_limits_from_scene(const rs_scene *sc, rs_defect_limits *lim)
 {
-  lim->pressure_limit = sc->material.pressure_limit;
-  lim->core_rating = sc->core.rating;
-  lim->accel_torque = sc->accel_torque;
-  lim->friction_layer = sc->material.friction_layer;
+  lim->pressure_limit = sc->problem.material.pressure_limit;
+  lim->core_rating = sc->problem.core.rating;
+  lim->accel_torque = sc->problem.accel_torque;
+  lim->friction_layer = sc->problem.material.friction_layer;
 }
 
 /* Coulomb friction on the cylindrical interface of radius r (per unit width): shear

@@ -67,17 +67,17 @@ static rs_reel_result *reel_result_new(int n)
 static void reel_params(const rs_scene *sc, rs_roll_params *p)
 {
   memset(p, 0, sizeof *p);
-  p->core_radius = sc->core.radius;
-  p->core_stiffness = rs_core_stiffness(&sc->core);
-  p->caliper = sc->material.caliper;
-  p->E_theta = sc->material.E_theta;
-  p->nu_rtheta = sc->material.nu_rtheta;
-  p->radial = sc->material.radial;
-  p->max_layers = sc->n_layers;
-  p->rtol = sc->numerics.rtol;
-  p->atol = sc->numerics.atol;
-  p->max_steps = sc->numerics.max_steps;
-  p->reuse = sc->numerics.reuse;
+  p->core_radius = sc->problem.core.radius;
+  p->core_stiffness = rs_core_stiffness(&sc->problem.core);
+  p->caliper = sc->problem.material.caliper;
+  p->E_theta = sc->problem.material.E_theta;
+  p->nu_rtheta = sc->problem.material.nu_rtheta;
+  p->radial = sc->problem.material.radial;
+  p->max_layers = sc->problem.n_layers;
+  p->rtol = sc->problem.numerics.rtol;
+  p->atol = sc->problem.numerics.atol;
+  p->max_steps = sc->problem.numerics.max_steps;
+  p->reuse = sc->problem.numerics.reuse;
 }
 
 /* ---- stress history -------------------------------------------------------------------
@@ -222,11 +222,11 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
 {
   *out = NULL;
   const double t_start = reel_now();
-  const int N = sc->n_layers, per_step = sc->numerics.layers_per_step;
+  const int N = sc->problem.n_layers, per_step = sc->problem.numerics.layers_per_step;
   if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the scene winds no layers");
   if (per_step < 1)
     return RS_ERROR(RS_ERR_INPUT, "numerics.layers_per_step must be >= 1 (got %d)", per_step);
-  const int every = sc->output.history_every;
+  const int every = sc->problem.record.history_every;
   if (every < 0)
     return RS_ERROR(RS_ERR_INPUT, "output.history_every must be >= 0 (got %d)", every);
 
@@ -249,17 +249,17 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
     goto done;
   }
-  res->core_radius = sc->core.radius;
+  res->core_radius = sc->problem.core.radius;
   if (every > 0 && (st = history_alloc(res, N, per_step, every, &hist_cap))) goto done;
   if ((st = rs_roll_create(&params, &roll))) goto done;
-  if ((st = rs_nip_create(&sc->nip, &sc->material, &nip))) goto done;
+  if ((st = rs_nip_create(&sc->problem.nip, &sc->problem.material, &nip))) goto done;
 
   if (nip) {
-    rs_nip_policy_init(&pol, &sc->nip, per_step, N);
-    if (sc->nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&snap))) goto done;
-    if (sc->nip.model == RS_NIP_CONTACT && sc->output.n_profiles > 0) {
-      n_prof = sc->output.n_profiles;
-      memcpy(prof_r, sc->output.nip_profiles_at, (size_t)n_prof * sizeof(double));
+    rs_nip_policy_init(&pol, &sc->problem.nip, per_step, N);
+    if (sc->problem.nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&snap))) goto done;
+    if (sc->problem.nip.model == RS_NIP_CONTACT && sc->problem.record.n_profiles > 0) {
+      n_prof = sc->problem.record.n_profiles;
+      memcpy(prof_r, sc->problem.record.nip_profiles_at, (size_t)n_prof * sizeof(double));
       qsort(prof_r, (size_t)n_prof, sizeof(double), compare_doubles);
       res->profiles = calloc((size_t)n_prof, sizeof *res->profiles);
       res->profile_radius = calloc((size_t)n_prof, sizeof(double));
@@ -283,9 +283,9 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
          * taper (center-surface winder, mu_roll = 0: T0 = share Ti exactly) that made it
          * negative and stopped the run as "slack" (tests/hard/test_hard_nip.c). */
         rs_nip_state ns = {.roll_radius = R,
-                           .core_radius = sc->core.radius,
-                           .web_tension = rs_recipe_eval(&sc->tension, rs_roll_layer_radius(roll, first)),
-                           .nip_load = rs_recipe_eval(&sc->nip.load, R),
+                           .core_radius = sc->problem.core.radius,
+                           .web_tension = rs_recipe_eval(&sc->problem.tension, rs_roll_layer_radius(roll, first)),
+                           .nip_load = rs_recipe_eval(&sc->problem.nip.load, R),
                            .surface_modulus = rs_roll_surface_modulus(roll),
                            .surface_pressure = n > 0 ? -rs_roll_sigma_r(roll)[n - 1] : 0.0};
         double T0 = 0.0;
@@ -335,8 +335,8 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
     for (int b = 0; b < m; ++b) {
       int j = first + b;
       double r = rs_roll_layer_radius(roll, j);
-      double Ti = rs_recipe_eval(&sc->tension, r), T0 = Ti;
-      double load = nip ? rs_recipe_eval(&sc->nip.load, r) : 0.0;
+      double Ti = rs_recipe_eval(&sc->problem.tension, r), T0 = Ti;
+      double load = nip ? rs_recipe_eval(&sc->problem.nip.load, r) : 0.0;
       /* the nip's part of T0, as solved or predicted at the radius the layer goes on at
        * (the roll's outer radius then, computed as rs_roll_outer_radius does, so that at a
        * solve the prediction is the solve's NIT bit for bit; r - caliper differs by an ulp,

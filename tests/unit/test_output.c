@@ -43,8 +43,8 @@ static rs_scene *make_scene(const char *text)
   rs_scene *s = calloc(1, sizeof *s);
   snprintf(s->path, sizeof s->path, "cases/round_trip.yaml");
   snprintf(s->title, sizeof s->title, "Round trip \xe2\x80\x94 synthetic");
-  s->core.radius = 0.0381;
-  s->n_layers = 1000;
+  s->problem.core.radius = 0.0381;
+  s->problem.n_layers = 1000;
   s->resolved_text = text ? strdup(text) : NULL;
   return s;
 }
@@ -257,7 +257,7 @@ static void round_trip(void)
     if (created) printf("  created = %s\n", created);
     free(created);
     CHECK(read_attr_int64(f, "layers") == n);
-    CHECK(read_attr_int64(f, "layers_planned") == scene->n_layers);
+    CHECK(read_attr_int64(f, "layers_planned") == scene->problem.n_layers);
     CHECK(read_attr_int64(f, "increments") == res->increments);
     CHECK(read_attr_int64(f, "cvode_steps") == res->cvode_steps);
     CHECK(read_attr_int64(f, "rhs_evals") == res->rhs_evals);
@@ -291,7 +291,7 @@ static void zero_layers(void)
     check_dataset(f, "/final/pressure", NULL, 0, "Pa");
     CHECK(attr_string_is(f, "scene", ""));
     CHECK(read_attr_int64(f, "layers") == 0);
-    CHECK(same_bits(read_attr_double(f, "final_radius"), scene->core.radius));
+    CHECK(same_bits(read_attr_double(f, "final_radius"), scene->problem.core.radius));
     H5Fclose(f);
   }
   free_result(res);

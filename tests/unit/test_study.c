@@ -113,15 +113,15 @@ static void check_plan(const char *scene_name, int quick, int want_nip, int want
     CHECK(st == RS_OK);
     if (st) fprintf(stderr, "run %s: %s\n", r->label, rs_error_message());
     if (s) {
-      CHECK_CLOSE(s->numerics.rtol, r->set.rtol, 0.0);
-      CHECK(s->numerics.layers_per_step == r->set.layers_per_step);
-      CHECK(s->output.history_every == r->set.history_every);
-      if (want_contact) CHECK(s->nip.nodes == r->set.nodes && s->nip.terms == r->set.terms);
+      CHECK_CLOSE(s->problem.numerics.rtol, r->set.rtol, 0.0);
+      CHECK(s->problem.numerics.layers_per_step == r->set.layers_per_step);
+      CHECK(s->problem.record.history_every == r->set.history_every);
+      if (want_contact) CHECK(s->problem.nip.nodes == r->set.nodes && s->problem.nip.terms == r->set.terms);
       if (want_nip)
-        CHECK(r->set.update_every > 0 ? s->nip.update == RS_NIP_UPDATE_EVERY &&
-                                            s->nip.update_every == r->set.update_every
-                                      : s->nip.update == RS_NIP_UPDATE_ADAPTIVE &&
-                                            s->nip.T0_rtol == r->set.T0_rtol);
+        CHECK(r->set.update_every > 0 ? s->problem.nip.update == RS_NIP_UPDATE_EVERY &&
+                                            s->problem.nip.update_every == r->set.update_every
+                                      : s->problem.nip.update == RS_NIP_UPDATE_ADAPTIVE &&
+                                            s->problem.nip.T0_rtol == r->set.T0_rtol);
     }
     rs_scene_destroy(&s);
   }
