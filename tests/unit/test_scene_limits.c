@@ -142,9 +142,9 @@ static void aliases_within_limits(void)
   if (st != RS_OK) printf("  %s\n", rs_error_message());
   CHECK(st == RS_OK);
   if (s) {
-    CHECK(s->nip.load.n_points == 2);
-    CHECK(s->nip.load.value[1] == 250.0);
-    CHECK(s->tension.value[0] == 300.0);
+    CHECK(s->problem.nip.load.n_points == 2);
+    CHECK(s->problem.nip.load.value[1] == 250.0);
+    CHECK(s->problem.tension.value[0] == 300.0);
   }
   rs_scene_destroy(&s);
   len = (size_t)snprintf(text, sizeof text,
