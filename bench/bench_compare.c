@@ -25,7 +25,7 @@ static double now(void) { return clock_s(CLOCK_MONOTONIC); }
 static double wind(const rs_scene *scene, int k, int threads, double *cpu)
 {
   rs_reel_job *jobs = calloc((size_t)k, sizeof *jobs);
-  for (int i = 0; i < k; ++i) jobs[i].scene = scene;
+  for (int i = 0; i < k; ++i) jobs[i].problem = rs_scene_problem(scene);
   int used = 0;
   double t0 = now(), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
   rs_reel_wind_many(k, jobs, threads, &used);

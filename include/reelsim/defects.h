@@ -5,8 +5,8 @@
 #ifndef REELSIM_DEFECTS_H
 #define REELSIM_DEFECTS_H
 
+#include "reelsim/problem.h"
 #include "reelsim/reel.h"
-#include "reelsim/scene.h"
 #include "reelsim/status.h"
 
 #ifdef __cplusplus
@@ -30,9 +30,9 @@ typedef struct rs_defect_limits {
   double friction_layer; /* web-on-web friction coefficient */
 } rs_defect_limits;
 
-/* The scene's optional keys: material.pressure_limit, core.rating, winding.accel_torque,
- * material.friction_layer. */
-void rs_defect_limits_from_scene(const rs_scene *scene, rs_defect_limits *lim);
+/* The problem's optional figures (a scene's keys material.pressure_limit, core.rating,
+ * winding.accel_torque, material.friction_layer). */
+void rs_defect_limits_from_problem(const rs_problem *problem, rs_defect_limits *lim);
 
 /* Consecutive layers first..last (0-based, inclusive) flagged by a rule, and the outer
  * radii of those two layers (m). */

@@ -37,7 +37,6 @@
 #include "reelsim/cylinder.h"
 #include "reelsim/material.h"
 #include "reelsim/nip.h"
-#include "reelsim/scene.h"
 #include "reelsim/sheet.h"
 #include "reelsim/status.h"
 

@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "reelsim/problem.h"
+#include "reelsim/reel.h"
 #include "reelsim/status.h"
 
 #ifdef __cplusplus
@@ -44,6 +45,12 @@ rs_status rs_scene_load(const char *path, int n_sets, const char *const *sets, r
 rs_status rs_scene_load_text(const char *name, const char *text, size_t len, int n_sets,
                              const char *const *sets, rs_scene **out);
 void rs_scene_destroy(rs_scene **scene);
+
+/* What the scene winds: its physics and numerics (owned by the scene). */
+const rs_problem *rs_scene_problem(const rs_scene *scene);
+/* Winds a loaded scene: rs_reel_wind of rs_scene_problem(scene). */
+rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts,
+                        rs_reel_result **out);
 
 /* Writes the human-readable list of active effects, one per line
  * ("  - core: elastic (E_c = 1e9 Pa), radius 76.2 mm", "  - nip: none (T0 = web tension)"). */

@@ -171,7 +171,7 @@ int cli_compare(const cli_args *a)
   }
 
   for (int i = 0; i < c.n; ++i) {
-    c.jobs[i].scene = c.scenes[i];
+    c.jobs[i].problem = rs_scene_problem(c.scenes[i]);
     c.jobs[i].opts.progress = on_progress;
     rs_output_run_name(i, c.n, c.scenes[i]->path, c.names[i], sizeof c.names[i]);
   }

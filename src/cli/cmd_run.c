@@ -155,7 +155,7 @@ int cli_run(const cli_args *a)
                    .bar = !a->quiet && isatty(STDERR_FILENO),
                    .t_start = t0};
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
-  st = rs_reel_wind(scene, &opts, &res);
+  st = rs_scene_wind(scene, &opts, &res);
   progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
@@ -194,7 +194,7 @@ int cli_run(const cli_args *a)
   }
 
   rs_defect_limits limits;
-  rs_defect_limits_from_scene(scene, &limits);
+  rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
   st = rs_defects_assess(res, &limits, &defects);
   if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
   if (st == RS_OK && a->csv_dir) {

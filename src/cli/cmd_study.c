@@ -310,7 +310,7 @@ int cli_study(int argc, char **argv)
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
-    jobs[i].scene = scenes[i];
+    jobs[i].problem = rs_scene_problem(scenes[i]);
     jobs[i].opts.progress = on_progress;
   }
   for (int first = 0; first < n; first += a.jobs) {

@@ -19,12 +19,12 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
   return "?";
 }
 
-void rs_defect_limits_from_scene(const rs_scene *sc, rs_defect_limits *lim)
+void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
 {
-  lim->pressure_limit = sc->problem.material.pressure_limit;
-  lim->core_rating = sc->problem.core.rating;
-  lim->accel_torque = sc->problem.accel_torque;
-  lim->friction_layer = sc->problem.material.friction_layer;
+  lim->pressure_limit = pb->material.pressure_limit;
+  lim->core_rating = pb->core.rating;
+  lim->accel_torque = pb->accel_torque;
+  lim->friction_layer = pb->material.friction_layer;
 }
 
 /* Coulomb friction on the cylindrical interface of radius r (per unit width): shear

@@ -470,7 +470,7 @@ static void taper_through_zero(void)
       CHECK(st == RS_OK);
       if (st != RS_OK) continue;
       rs_reel_result *res = NULL;
-      st = rs_reel_wind(sc, NULL, &res);
+      st = rs_scene_wind(sc, NULL, &res);
       if (st != RS_OK) printf("  %s\n", rs_error_message());
       CHECK(st == RS_OK);
       int n = res->n_layers;
@@ -633,7 +633,7 @@ static void failure_keeps_finished(void)
   snprintf(text, sizeof text, scene, "0.07");
   CHECK(rs_scene_load_text("fail.yaml", text, strlen(text), 0, NULL, &sc) == RS_OK);
   if (!sc) return;
-  rs_status st = rs_reel_wind(sc, NULL, &res);
+  rs_status st = rs_scene_wind(sc, NULL, &res);
   printf("  %s\n  (at %s)\n", rs_error_message(), rs_error_where());
   CHECK(st == RS_ERR_SOLVER);
   CHECK(strstr(rs_error_message(), "is not positive") != NULL);
@@ -652,7 +652,7 @@ static void failure_keeps_finished(void)
   CHECK(rs_scene_load_text("fail.yaml", text, strlen(text), 0, NULL, &sc) == RS_OK);
   if (!sc) return;
   CHECK(sc->problem.n_layers == k);
-  CHECK(rs_reel_wind(sc, NULL, &again) == RS_OK);
+  CHECK(rs_scene_wind(sc, NULL, &again) == RS_OK);
   CHECK(again->n_layers == k);
   CHECK(memcmp(res->sigma_r, again->sigma_r, (size_t)k * sizeof(double)) == 0);
   CHECK(memcmp(res->sigma_theta, again->sigma_theta, (size_t)k * sizeof(double)) == 0);

@@ -748,7 +748,7 @@ static void taper_to_zero(void)
       CHECK(load_scene("0.088", tapers[t], winders[w], "0.19", "", &sc) == RS_OK);
       if (!sc) continue;
       rs_reel_result *res = NULL;
-      st = rs_reel_wind(sc, NULL, &res);
+      st = rs_scene_wind(sc, NULL, &res);
       if (st) printf("  %s\n", rs_error_message());
       CHECK(st == RS_OK);
       if (res && st == RS_OK) {
@@ -798,7 +798,7 @@ static void taper_t0_zero(void)
                      runs[i].share > 0 ? ", torque_share: 0.5" : "", &sc) == RS_OK);
     if (!sc) continue;
     rs_reel_result *res = NULL;
-    rs_status st = rs_reel_wind(sc, NULL, &res);
+    rs_status st = rs_scene_wind(sc, NULL, &res);
     if (st) printf("  %s\n", rs_error_message());
     CHECK(st == RS_OK);
     if (res && st == RS_OK) {
@@ -875,7 +875,7 @@ static void nip_failure_keeps_finished(void)
   rs_reel_result *res = NULL, *again = NULL;
   CHECK(load_scene("0.088", tension, "surface", "0.19", every, &sc) == RS_OK);
   if (!sc) return;
-  rs_status st = rs_reel_wind(sc, NULL, &res);
+  rs_status st = rs_scene_wind(sc, NULL, &res);
   printf("  %s\n", rs_error_message());
   CHECK(st == RS_ERR_SOLVER);
   CHECK(strstr(rs_error_message(), "cannot wind past layer") != NULL);
@@ -903,7 +903,7 @@ static void nip_failure_keeps_finished(void)
     return;
   }
   CHECK(sc->problem.n_layers == k);
-  CHECK(rs_reel_wind(sc, NULL, &again) == RS_OK);
+  CHECK(rs_scene_wind(sc, NULL, &again) == RS_OK);
   if (again && again->n_layers == k) {
     CHECK(memcmp(res->sigma_r, again->sigma_r, (size_t)k * sizeof(double)) == 0);
     CHECK(memcmp(res->sigma_theta, again->sigma_theta, (size_t)k * sizeof(double)) == 0);

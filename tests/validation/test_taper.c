@@ -11,27 +11,27 @@
 
 static double min_hoop(rs_recipe_kind law, double start, double end)
 {
-  rs_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.problem.material.caliper = 70e-6;
-  sc.problem.material.E_theta = 3.5e9;
-  sc.problem.material.radial.law = RS_RADIAL_PFEIFFER;
-  sc.problem.material.radial.K1 = 5e3;
-  sc.problem.material.radial.K2 = 60;
-  sc.problem.core.kind = RS_CORE_RIGID;
-  sc.problem.core.radius = 0.0762;
-  sc.problem.final_radius = 0.16;
-  sc.problem.n_layers = (int)lround((sc.problem.final_radius - sc.problem.core.radius) / sc.problem.material.caliper);
-  sc.problem.tension.law = law;
-  sc.problem.tension.start = start;
-  sc.problem.tension.end = end;
-  sc.problem.tension.k = NAN;
-  CHECK(rs_radial_law_prepare(&sc.problem.material.radial) == RS_OK);
-  CHECK(rs_recipe_prepare(&sc.problem.tension, sc.problem.core.radius, sc.problem.final_radius) == RS_OK);
-  sc.problem.numerics.layers_per_step = 1;
-  sc.problem.numerics.rtol = 1e-6;
+  rs_problem pb;
+  memset(&pb, 0, sizeof pb);
+  pb.material.caliper = 70e-6;
+  pb.material.E_theta = 3.5e9;
+  pb.material.radial.law = RS_RADIAL_PFEIFFER;
+  pb.material.radial.K1 = 5e3;
+  pb.material.radial.K2 = 60;
+  pb.core.kind = RS_CORE_RIGID;
+  pb.core.radius = 0.0762;
+  pb.final_radius = 0.16;
+  pb.n_layers = (int)lround((pb.final_radius - pb.core.radius) / pb.material.caliper);
+  pb.tension.law = law;
+  pb.tension.start = start;
+  pb.tension.end = end;
+  pb.tension.k = NAN;
+  CHECK(rs_radial_law_prepare(&pb.material.radial) == RS_OK);
+  CHECK(rs_recipe_prepare(&pb.tension, pb.core.radius, pb.final_radius) == RS_OK);
+  pb.numerics.layers_per_step = 1;
+  pb.numerics.rtol = 1e-6;
   rs_reel_result *res = NULL;
-  CHECK(rs_reel_wind(&sc, NULL, &res) == RS_OK);
+  CHECK(rs_reel_wind(&pb, NULL, &res) == RS_OK);
   rs_reel_summary sum;
   rs_reel_summarize(res, &sum);
   rs_reel_result_destroy(&res);
