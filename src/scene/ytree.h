@@ -1,11 +1,9 @@
 /* A small YAML node tree that remembers where every value came from.
  *
- * libcyaml loads typed structs but forgets positions once it is done, and it cannot
- * load a key that is a number in one file and a mapping in the next. The loader
- * therefore parses with libyaml into this tree first: it keeps the file and line of
- * every key, the --set override that replaced a value, and a display path
- * ("winding.tension.end", "radial.points[3]"), so every later check can say where the
- * offending value was written. */
+ * The loader parses with libyaml into this tree (yparse.c) and every later step works on
+ * it: it keeps the file and line of every key, the --set override that replaced a value,
+ * and a display path ("winding.tension.end", "radial.points[3]"), so every check can say
+ * where the offending value was written. */
 #ifndef RS_SCENE_YTREE_H
 #define RS_SCENE_YTREE_H
 
