@@ -25,7 +25,6 @@
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
-#include "util/path_stem.h"
 
 static double now_seconds(void)
 {
@@ -105,7 +104,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("  output             %s\n", scene->output.file);
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
-    rs_path_stem(scene->path, stem, sizeof stem);
+    rs_scene_name(scene, stem, sizeof stem);
     if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
@@ -199,7 +198,7 @@ int cli_run(const cli_args *a)
   if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
-    rs_path_stem(scene->path, stem, sizeof stem);
+    rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv(a->csv_dir, stem, res);
   }
   if (st != RS_OK) {

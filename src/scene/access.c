@@ -1,6 +1,7 @@
-/* A loaded scene as the problem the reel winds. */
+/* What applications ask of a loaded scene: the problem it winds, winding it, its name. */
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "util/path_stem.h"
 
 const rs_problem *rs_scene_problem(const rs_scene *scene)
 {
@@ -14,4 +15,14 @@ rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts, rs_r
     return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_wind: no scene");
   }
   return rs_reel_wind(&scene->problem, opts, out);
+}
+
+void rs_scene_name(const rs_scene *scene, char *buf, size_t size)
+{
+  if (!buf || size == 0) return;
+  if (!scene) {
+    buf[0] = '\0';
+    return;
+  }
+  rs_path_stem(scene->path, buf, size);
 }
