@@ -304,8 +304,8 @@ int cli_study(int argc, char **argv)
   }
 
   if (!a.quiet) {
-    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, base->title,
-           base->problem.n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, rs_scene_title(base),
+           rs_scene_problem(base)->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
@@ -341,7 +341,7 @@ int cli_study(int argc, char **argv)
     }
   }
 
-  if ((st = rs_study_analyze(plan, results, wall, cpu, base->problem.material.caliper, &rep)) != RS_OK) {
+  if ((st = rs_study_analyze(plan, results, wall, cpu, rs_scene_problem(base)->material.caliper, &rep)) != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
@@ -359,7 +359,7 @@ int cli_study(int argc, char **argv)
     goto done;
   }
   snprintf(path, sizeof path, "%s/study.png", dir);
-  st = rs_study_plot(&rep, base->title, path, NULL);
+  st = rs_study_plot(&rep, rs_scene_title(base), path, NULL);
   if (st != RS_OK) {
     code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
                     rs_error_message());
