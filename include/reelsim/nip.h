@@ -1,7 +1,7 @@
 /* The nip seam: how the wound-on tension T0 is found at each radius.
  *
- * A scene without a nip section creates no rs_nip at all (T0 = web tension), so no nip
- * code runs. Each model implements rs_nip_ops; the contact model of the seed paper
+ * A problem without a nip (RS_NIP_NONE) creates no rs_nip at all (T0 = web tension), so
+ * no nip code runs. Each model implements rs_nip_ops; the contact model of the seed paper
  * plugs in here as another implementation. */
 #ifndef REELSIM_NIP_H
 #define REELSIM_NIP_H

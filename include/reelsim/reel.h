@@ -61,8 +61,9 @@ typedef struct rs_reel_options {
   void *user;
 } rs_reel_options;
 
-/* Winds the problem's reel (a loaded scene: rs_scene_wind). On a solver failure *out still holds the layers finished
- * (n_layers counts them) and the error record says where it stopped. Caller owns *out. */
+/* Winds the problem's reel (a loaded scene: rs_scene_wind). On a solver failure *out still
+ * holds the layers finished (n_layers counts them) and the error record says where it
+ * stopped. Caller owns *out. */
 rs_status rs_reel_wind(const rs_problem *problem, const rs_reel_options *opts,
                        rs_reel_result **out);
 void rs_reel_result_destroy(rs_reel_result **res);

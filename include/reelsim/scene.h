@@ -51,6 +51,17 @@ const rs_problem *rs_scene_problem(const rs_scene *scene);
 /* Winds a loaded scene: rs_reel_wind of rs_scene_problem(scene). */
 rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts,
                         rs_reel_result **out);
+/* What the scene says of itself: the file as given, its title, the HDF5 output file ("" =
+ * none), the resolved scene as YAML (every key with its value, defaults filled in). Owned
+ * by the scene. */
+const char *rs_scene_path(const rs_scene *scene);
+const char *rs_scene_title(const rs_scene *scene);
+const char *rs_scene_output_file(const rs_scene *scene);
+const char *rs_scene_resolved_text(const rs_scene *scene);
+/* The scene file's name without its directory and last extension, into buf[size],
+ * truncated to fit ("cases/newsprint-rider.yaml" -> "newsprint-rider"): what names the
+ * scene's outputs. "" for no scene. */
+void rs_scene_name(const rs_scene *scene, char *buf, size_t size);
 
 /* Writes the human-readable list of active effects, one per line
  * ("  - core: elastic (E_c = 1e9 Pa), radius 76.2 mm", "  - nip: none (T0 = web tension)"). */

@@ -24,7 +24,6 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/study.h"
-#include "util/path_stem.h"
 
 static atomic_int interrupted;
 
@@ -294,7 +293,7 @@ int cli_study(int argc, char **argv)
       goto done;
     }
   }
-  rs_path_stem(a.scene, name, sizeof name);
+  rs_scene_name(base, name, sizeof name);
   if (a.dir) snprintf(dir, sizeof dir, "%s", a.dir);
   else snprintf(dir, sizeof dir, "study-%s", name);
   if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
@@ -305,8 +304,8 @@ int cli_study(int argc, char **argv)
   }
 
   if (!a.quiet) {
-    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, base->title,
-           base->problem.n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, rs_scene_title(base),
+           rs_scene_problem(base)->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
@@ -342,7 +341,7 @@ int cli_study(int argc, char **argv)
     }
   }
 
-  if ((st = rs_study_analyze(plan, results, wall, cpu, base->problem.material.caliper, &rep)) != RS_OK) {
+  if ((st = rs_study_analyze(plan, results, wall, cpu, rs_scene_problem(base)->material.caliper, &rep)) != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
@@ -350,17 +349,17 @@ int cli_study(int argc, char **argv)
     print_report(plan, &rep, jobs);
     print_summary(plan, &rep);
   }
-  st = rs_output_write_study(path, base, &rep);
+  st = rs_study_write(path, base, &rep);
   if (st == RS_OK) {
     snprintf(path, sizeof path, "%s/study.csv", dir);
-    st = rs_output_write_study_csv(path, &rep);
+    st = rs_study_write_csv(path, &rep);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
   snprintf(path, sizeof path, "%s/study.png", dir);
-  st = rs_plot_study(&rep, base->title, path, NULL);
+  st = rs_study_plot(&rep, rs_scene_title(base), path, NULL);
   if (st != RS_OK) {
     code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
                     rs_error_message());

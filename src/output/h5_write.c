@@ -14,7 +14,7 @@
 #include "output/h5_layout.h"
 #include "output/h5_nip.h"
 #include "output/h5_util.h"
-#include "output/staging.h"
+#include "util/atomic_file.h"
 #include "reelsim_version.h"
 
 /* The file records when it was made, in UTC so files from different machines sort. */
@@ -200,7 +200,7 @@ static rs_status build_image(rs_h5_build_fn build, const void *ctx, void **image
 rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void *ctx)
 {
   /* Check the target first: a typo in the directory should not cost the build. */
-  rs_status st = rs_staging_check_target(path);
+  rs_status st = rs_atomic_file_check_target(path);
   if (st != RS_OK) return st;
   void *image = NULL;
   size_t size = 0;
@@ -209,7 +209,7 @@ rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void 
   st = build_image(build, ctx, &image, &size);
   rs_h5_quiet_end(&quiet);
   if (st != RS_OK) return rs_error_wrap("cannot write output file '%s'", path);
-  st = rs_staging_write(path, image, size);
+  st = rs_atomic_file_write(path, image, size);
   free(image);
   return st;
 }
@@ -217,7 +217,7 @@ rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void 
 rs_status rs_output_check_target(const char *path)
 {
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
-  return rs_staging_check_target(path);
+  return rs_atomic_file_check_target(path);
 }
 
 typedef struct single_run {

@@ -16,7 +16,7 @@
 #include "check.h"
 #include "scratch.h"
 #include "output/h5_util.h"
-#include "output/staging.h"
+#include "util/atomic_file.h"
 #include "reelsim/output.h"
 #include "reelsim_version.h"
 
@@ -535,7 +535,7 @@ static void chunked_2d(void)
   CHECK(rs_h5_write_2d_chunked(f, "empty", NULL, 0, N, "Pa", "no stage yet") == RS_OK);
   CHECK(rs_h5_memfile_image(f, &image, &size) == RS_OK);
   H5Fclose(f);
-  CHECK(rs_staging_write(path, image, size) == RS_OK);
+  CHECK(rs_atomic_file_write(path, image, size) == RS_OK);
   CHECK_LOG("file bytes", size);
   free(image);
 

@@ -1,6 +1,7 @@
 /* The reel winds an rs_problem, plain data: a loaded scene winds exactly as its problem
  * does through rs_reel_wind, and a copy of the problem taken before the scene is destroyed
- * winds the same reel bit for bit (nothing in it points back into the scene). */
+ * winds the same reel bit for bit (nothing in it points back into the scene). And the
+ * scene's accessors give what the file says. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -76,6 +77,29 @@ static void friction_nip(void)
   three_ways(RS_TESTS_DIR "/validation/scenes/nip-friction-kinks.yaml", 1, sets, 0, 1);
 }
 
+/* What the scene says of itself, through the accessors the CLI uses. */
+static void scene_accessors(void)
+{
+  const char *path = RS_TESTS_DIR "/cli/scenes/small.yaml";
+  rs_scene *sc = NULL;
+  CHECK(rs_scene_load(path, 0, NULL, &sc) == RS_OK);
+  if (!sc) return;
+  CHECK(strcmp(rs_scene_path(sc), path) == 0);
+  CHECK(strcmp(rs_scene_title(sc), "small test reel") == 0);
+  CHECK(strcmp(rs_scene_output_file(sc), "small.h5") == 0);
+  CHECK(strstr(rs_scene_resolved_text(sc), "small test reel") != NULL);
+  char name[8];
+  rs_scene_name(sc, name, sizeof name);
+  CHECK(strcmp(name, "small") == 0);
+  rs_scene_name(sc, name, 4); /* truncated to fit */
+  CHECK(strcmp(name, "sma") == 0);
+  rs_scene_destroy(&sc);
+  CHECK(sc == NULL);
+  rs_scene_name(NULL, name, sizeof name);
+  CHECK(strcmp(name, "") == 0);
+  CHECK(strcmp(rs_scene_title(NULL), "") == 0 && strcmp(rs_scene_path(NULL), "") == 0);
+}
+
 /* No scene: no problem, and winding nothing is an error with no result. */
 static void no_scene(void)
 {
@@ -89,6 +113,7 @@ static void no_scene(void)
 static const check_case cases[] = {
     {"plain_reel", plain_reel},
     {"friction_nip", friction_nip},
+    {"scene_accessors", scene_accessors},
     {"no_scene", no_scene},
 };
 
