@@ -142,9 +142,9 @@ static void aliases_within_limits(void)
   if (st != RS_OK) printf("  %s\n", rs_error_message());
   CHECK(st == RS_OK);
   if (s) {
-    CHECK(s->problem.nip.load.n_points == 2);
-    CHECK(s->problem.nip.load.value[1] == 250.0);
-    CHECK(s->problem.tension.value[0] == 300.0);
+    CHECK(rs_scene_problem(s)->nip.load.n_points == 2);
+    CHECK(rs_scene_problem(s)->nip.load.value[1] == 250.0);
+    CHECK(rs_scene_problem(s)->tension.value[0] == 300.0);
   }
   rs_scene_destroy(&s);
   len = (size_t)snprintf(text, sizeof text,
@@ -153,6 +153,41 @@ static void aliases_within_limits(void)
                          "numerics: {rtol: &r abc}\n",
                          scene_head);
   refused(text, len, "hostile.yaml:10: numerics.rtol: not a number (got 'abc')");
+}
+
+/* The largest scene the schema allows (three tables at their 256 rows, a radial table among
+ * them) stays well inside every limit. */
+static void largest_scene_loads(void)
+{
+  size_t cap = 1 << 16, len = 0;
+  char *text = malloc(cap);
+  CHECK(text != NULL);
+  if (!text) return;
+  static const char *const heads[3] = {
+      "material:\n  caliper: 7.0e-5\n  E_theta: 3.5e9\n  radial:\n    law: table\n    points:\n",
+      "core: {radius: 0.0762}\nwinding:\n  final_radius: 0.5\n  tension:\n    law: table\n"
+      "    table:\n",
+      "nip:\n  model: friction\n  friction: {roll: 0.2}\n  load:\n    table:\n"};
+  for (int t = 0; t < 3; ++t) {
+    len += (size_t)snprintf(text + len, cap - len, "%s", heads[t]);
+    for (int i = 0; i < 256; ++i)
+      len += (size_t)snprintf(text + len, cap - len, "      - [%.4f, %g]\n", 0.08 + 0.001 * i,
+                              1e5 + 1e3 * i);
+  }
+  CHECK(len < cap - 1);
+  rs_scene *s = NULL;
+  rs_status st = rs_scene_load_text("largest.yaml", text, len, 0, NULL, &s);
+  if (st != RS_OK) printf("  %s\n", rs_error_message());
+  CHECK(st == RS_OK);
+  if (s) {
+    const rs_problem *p = rs_scene_problem(s);
+    CHECK(p->material.radial.n_points == 256);
+    CHECK(p->tension.n_points == 256);
+    CHECK(p->nip.load.n_points == 256);
+    printf("  %zu bytes, loads\n", len);
+  }
+  rs_scene_destroy(&s);
+  free(text);
 }
 
 static const check_case cases[] = {
@@ -164,6 +199,7 @@ static const check_case cases[] = {
     {"values_bounded", values_bounded},
     {"keys_bounded", keys_bounded},
     {"aliases_within_limits", aliases_within_limits},
+    {"largest_scene_loads", largest_scene_loads},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
