@@ -63,7 +63,7 @@ int main(int argc, char **argv)
     if (d1 < best1) best1 = d1, cpu1 = s1;
     if (dT < bestT) bestT = dT, cpuT = sT;
   }
-  printf("%s, %d copies of %d layers\n", scene->title, k, scene->problem.n_layers);
+  printf("%s, %d copies of %d layers\n", rs_scene_title(scene), k, rs_scene_problem(scene)->n_layers);
   printf("best: 1 thread %.3f s, %d threads %.3f s, speed-up %.2f\n", best1, t, bestT,
          best1 / bestT);
   printf("cpu time: %.3f s and %.3f s (ratio %.2f)\n", cpu1, cpuT, cpuT / cpu1);

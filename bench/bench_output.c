@@ -13,6 +13,7 @@
 #include "output/h5_util.h"
 #include "util/atomic_file.h"
 #include "reelsim/output.h"
+#include "scene/scene_type.h" /* a scene filled by hand */
 
 static double now(void)
 {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The layer check (docs/architecture.md): fails when a file includes a header of a higher
 # layer, when the CLI includes anything but the public headers and its own, when files
-# include each other in a cycle, or (given the library's object files) when object files
-# call each other in a cycle.
+# include each other in a cycle, or (given the library's object files) when an object file
+# calls a higher layer or object files call each other in a cycle.
 #
 #   scripts/check-layers.sh ROOT [OBJECT.o ...]
 #
@@ -96,8 +96,10 @@ if ! out=$(tsort <"$edges" 2>&1 >/dev/null); then
   err "include cycle:"$'\n'"$out"
 fi
 
-# Symbol cycles between the given object files: a calls b and b calls a (directly or
-# through others), which no #include line shows when one header declares both.
+# The object files given: who calls whom, from their defined and undefined symbols (nm).
+# A call into a higher layer fails (a local prototype gets past the include check, not
+# past this), and so does a call cycle (a calls b and b calls a, directly or through
+# others), which no #include line shows when one header declares both.
 if [ $# -gt 0 ]; then
   if ! command -v nm >/dev/null; then
     err "nm not found: cannot check the object files"
@@ -109,15 +111,24 @@ if [ $# -gt 0 ]; then
       nm "$o" | awk -v n="$n" 'NF == 3 && $2 ~ /^[TDBRC]$/ { print "D", $3, n }
                                 NF == 2 && $1 == "U" { print "U", $2, n }'
     done >"$syms"
-    symedges=$(awk '$1 == "D" { def[$2] = $3; next } { use[NR] = $3 " " $2 }
-                    END { for (k in use) { split(use[k], u, " ");
-                            if ((u[2] in def) && def[u[2]] != u[1]) print u[1], def[u[2]] } }' "$syms" |
-               LC_ALL=C sort -u)
-    if ! out=$(printf '%s\n' "$symedges" | tsort 2>&1 >/dev/null); then
+    # "caller callee symbol", one line per symbol
+    calls=$(awk '$1 == "D" { def[$2] = $3; next } { use[NR] = $3 " " $2 }
+                 END { for (k in use) { split(use[k], u, " ");
+                         if ((u[2] in def) && def[u[2]] != u[1]) print u[1], def[u[2]], u[2] } }' \
+              "$syms" | LC_ALL=C sort -u)
+    while read -r from to sym; do
+      [ -n "$from" ] || continue
+      lf=$(layer_of "src/$from.c") lt=$(layer_of "src/$to.c")
+      if [ -n "$lf" ] && [ -n "$lt" ] && [ "$lt" -gt "$lf" ]; then
+        err "src/$from.c calls $sym of src/$to.c: the ${names[$lf]} layer calls the higher ${names[$lt]} layer"
+      fi
+    done <<<"$calls"
+    if ! out=$(printf '%s\n' "$calls" | cut -d' ' -f1,2 | tsort 2>&1 >/dev/null); then
       err "call cycle between object files:"$'\n'"$out"
     fi
   fi
 fi
 
-[ "$fail" -eq 0 ] && echo "check-layers: $(echo "$files" | wc -l) files, every include within its layer or below, no cycles${1:+, $# object files without call cycles}"
+[ "$fail" -eq 0 ] && echo "check-layers: $(echo "$files" | wc -l) files, every include within its" \
+  "layer or below, no cycles${1:+; $# object files: no call upwards, no call cycle}"
 exit "$fail"

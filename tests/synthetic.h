@@ -11,6 +11,7 @@
 
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 #include "scratch.h" /* scratch_dir, scratch_join, ... for the files these tests write */
 
 static inline rs_scene *syn_scene(const char *path, const char *title)

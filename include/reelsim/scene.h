@@ -2,9 +2,8 @@
  *
  * Loaded from YAML (libyaml) by rs_scene_load; see docs/scenes.md for every key.
  * The scene is the file's view of a reel: the rs_problem it resolves to (what the reel
- * winds) plus what belongs to the file (path, title, where the material came from, the
- * output file, the resolved text).
- * Plain data: the scene owns nothing but `resolved_text`, freed by rs_scene_destroy. */
+ * winds, rs_scene_problem) plus what belongs to the file (path, title, where the material
+ * came from, the output file, the resolved text). */
 #ifndef REELSIM_SCENE_H
 #define REELSIM_SCENE_H
 
@@ -21,19 +20,8 @@ extern "C" {
 
 enum { RS_PATH_MAX = 4096 };
 
-typedef struct rs_output_spec {
-  char file[RS_PATH_MAX];  /* HDF5 output; "" = none unless -o */
-} rs_output_spec;
-
-typedef struct rs_scene {
-  char path[RS_PATH_MAX];           /* the scene file as given */
-  char title[512];
-  char material_source[RS_PATH_MAX];/* models/ file the material came from, or "inline" */
-  rs_problem problem;               /* what the reel winds: physics and numerics */
-  double web_length;                /* m (0 when final_radius was given) */
-  rs_output_spec output;
-  char *resolved_text;              /* the resolved scene as YAML (owned) */
-} rs_scene;
+/* Opaque: read through the functions below (the struct: src/scene/scene_type.h). */
+typedef struct rs_scene rs_scene;
 
 /* Loads and checks a scene. `sets` are "key.path=value" overrides applied to scalars
  * before checking (the CLI's --set). Errors: RS_ERR_INPUT with "FILE:LINE: key.path: why".

@@ -180,9 +180,9 @@ static rs_status build_study(hid_t file, const void *vctx)
   const rs_study_report *rep = c->rep;
   hid_t g = -1, runs = -1, orders = -1;
   rs_status st = rs_h5_group_create(file, "study", &g);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "title", c->scene->title);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "scene_file", c->scene->path);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "scene", c->scene->resolved_text);
+  if (st == RS_OK) st = rs_h5_attr_string(g, "title", rs_scene_title(c->scene));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "scene_file", rs_scene_path(c->scene));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "scene", rs_scene_resolved_text(c->scene));
   if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->n_layers);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "quick", rep->plan->quick);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "runs", rep->plan->n_runs);

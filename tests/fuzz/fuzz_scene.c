@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -753,7 +753,7 @@ static void taper_to_zero(void)
       CHECK(st == RS_OK);
       if (res && st == RS_OK) {
         int n = res->n_layers, bad = 0;
-        CHECK(n == sc->problem.n_layers);
+        CHECK(n == rs_scene_problem(sc)->n_layers);
         check_reel(res);
         double tmin = INFINITY;
         for (int j = 0; j < n; ++j) tmin = fmin(tmin, res->wound_on_tension[j]);
@@ -803,13 +803,13 @@ static void taper_t0_zero(void)
     CHECK(st == RS_OK);
     if (res && st == RS_OK) {
       int n = res->n_layers, bad_solve = 0, bad_layer = 0;
-      CHECK(n == sc->problem.n_layers);
+      CHECK(n == rs_scene_problem(sc)->n_layers);
       check_reel(res);
       for (int k = 0; k < res->n_nip; ++k)
         bad_solve += !(fabs(res->nip_T0[k] - runs[i].share * res->nip_Ti[k]) <= 1e-9 * res->nip_Ti[k] + 1e-12);
       double smax = 0;
       for (int j = 0; j < n; ++j) {
-        if (runs[i].share > 0 && res->radius[j] <= sc->problem.final_radius)
+        if (runs[i].share > 0 && res->radius[j] <= rs_scene_problem(sc)->final_radius)
           bad_layer += !(fabs(res->wound_on_tension[j] - runs[i].share * res->web_tension[j]) <= 1e-9);
         if (runs[i].share == 0) bad_layer += !(fabs(res->wound_on_tension[j]) <= 1e-12 * 350);
         smax = fmax(smax, fmax(fabs(res->sigma_r[j]), fabs(res->sigma_theta[j])));
@@ -890,7 +890,7 @@ static void nip_failure_keeps_finished(void)
   }
   int k = res->n_layers;
   CHECK_LOG("layers finished", k);
-  CHECK(k > 0 && k < sc->problem.n_layers);
+  CHECK(k > 0 && k < rs_scene_problem(sc)->n_layers);
   check_reel(res);
   /* the last finished layer's Ti could still be carried, the next one's not */
   CHECK(res->web_tension[k - 1] < 0.35 * 1750);
@@ -902,7 +902,7 @@ static void nip_failure_keeps_finished(void)
     rs_reel_result_destroy(&res);
     return;
   }
-  CHECK(sc->problem.n_layers == k);
+  CHECK(rs_scene_problem(sc)->n_layers == k);
   CHECK(rs_scene_wind(sc, NULL, &again) == RS_OK);
   if (again && again->n_layers == k) {
     CHECK(memcmp(res->sigma_r, again->sigma_r, (size_t)k * sizeof(double)) == 0);

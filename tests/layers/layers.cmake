@@ -6,7 +6,7 @@ add_test(NAME layers.tree
          COMMAND_EXPAND_LISTS)
 set_tests_properties(layers.tree PROPERTIES LABELS unit TIMEOUT 300)
 foreach(c lower_includes_higher internal_includes_higher include_cycle cli_internal_header
-          unplaced call_cycle)
+          unplaced call_cycle call_upwards)
   add_test(NAME layers.refuses.${c}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/layers/negative.sh ${c}
                    ${PROJECT_SOURCE_DIR}/scripts/check-layers.sh ${CMAKE_C_COMPILER})

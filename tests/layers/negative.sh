@@ -68,6 +68,15 @@ case "$case_" in
     printf 'int rs_nip_b(void);\nint rs_nip_c(void) { return rs_nip_b(); }\n' >>"$t/src/nip/a.c"
     "$cc" -c -o "$t/src/nip/a.c.o" -I"$t/include" "$t/src/nip/a.c"
     expect_fail 'call cycle between object files' 'tsort: nip/a$' 'tsort: nip/b$' ;;
+  call_upwards) # physics calling the scene through a local prototype, no #include
+    "$cc" -c -o "$t/src/nip/a.c.o" -I"$t/include" "$t/src/nip/a.c"
+    printf 'int rs_scene_x(void) { return 2; }\n' >>"$t/src/scene/load.c"
+    "$cc" -c -o "$t/src/scene/load.c.o" -I"$t/include" "$t/src/scene/load.c"
+    objs=("$t/src/nip/a.c.o" "$t/src/scene/load.c.o")
+    expect_pass
+    printf 'int rs_scene_x(void);\nint rs_nip_d(void) { return rs_scene_x(); }\n' >>"$t/src/nip/a.c"
+    "$cc" -c -o "$t/src/nip/a.c.o" -I"$t/include" "$t/src/nip/a.c"
+    expect_fail 'src/nip/a.c calls rs_scene_x of src/scene/load.c: the roll-nip layer calls the higher scene layer' ;;
   *) echo "unknown case $case_"; exit 2 ;;
 esac
 echo "ok: $case_ refused"

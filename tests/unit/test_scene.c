@@ -12,6 +12,7 @@
 
 #include "check.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 
 #ifndef RS_ROOT_DIR
 #error "RS_ROOT_DIR must name the project root"
