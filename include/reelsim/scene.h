@@ -67,6 +67,7 @@ typedef struct rs_numerics {
   double atol;             /* CVODE absolute tolerance (0: = rtol) */
   long max_steps;          /* CVODE steps per increment */
   rs_reuse reuse;          /* keep the deep part of an earlier integration (default) or not */
+  rs_load_placement load_placement; /* where a new layer's load goes (default: beneath it) */
 } rs_numerics;
 
 typedef struct rs_output_spec {

@@ -78,6 +78,7 @@ static void reel_params(const rs_scene *sc, rs_roll_params *p)
   p->atol = sc->numerics.atol;
   p->max_steps = sc->numerics.max_steps;
   p->reuse = sc->numerics.reuse;
+  p->placement = sc->numerics.load_placement;
 }
 
 /* ---- stress history -------------------------------------------------------------------

@@ -15,6 +15,13 @@
  * a roll of constant g has w constant and L linear, so CVODE's steps are set by how g
  * varies, not by the 1/r^q derivatives of ln r (3x fewer steps than integrating in r).
  *
+ * Where a layer's load goes (rs_load_placement): by default the new layer k joins at hoop
+ * stress T0/t and presses on the roll beneath it, so its increment lives on [r_c, s_{k-1}]
+ * with ds(s_{k-1}) = -T0/s_{k-1} and its own outer face is traction free; Hakiel's original
+ * condition puts ds(s_k) = -T0/s_k at its outer radius. In the engine the two differ only
+ * in the node a layer loads (k - shift) and in whether that node's layer takes the load in
+ * its hoop stress (docs/roll-model.md).
+ *
  * E_r is frozen at the pressures before the increment (Hakiel). The pressures live at the
  * nodes r_0 = r_c (core) and r_j = s_j (outer radius of layer j); between nodes ln g^2 is a
  * C^1 cubic Hermite (centred slopes). A continuous, once-differentiable g keeps BDF at high
@@ -51,6 +58,8 @@ enum { RS_CVODE_MSG_LEN = 512 };
 struct rs_roll {
   rs_roll_params p;
   double kc;            /* core condition r y'/y at r_c */
+  int shift;            /* 1: a layer's load on the node beneath it (RS_LOAD_BENEATH), 0:
+                           at its own outer radius (Hakiel): layer k loads node k - shift */
   int n;                /* layers wound */
   double core_sigma;    /* sigma_r at r_c, Pa (compression negative) */
   double *sigma_r;      /* [cap] per layer at s_j */
@@ -278,6 +287,8 @@ static rs_status roll_check_params(const rs_roll_params *p)
     return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
   if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF)
     return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
+  if (p->placement != RS_LOAD_BENEATH && p->placement != RS_LOAD_HAKIEL)
+    return RS_ERROR(RS_ERR_INPUT, "unknown load placement %d", (int)p->placement);
   return RS_OK;
 }
 
@@ -291,6 +302,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->p = *params;
   if (roll->p.atol <= 0.0) roll->p.atol = roll->p.rtol;
   if (roll->p.max_steps <= 0) roll->p.max_steps = 100000;
+  roll->shift = params->placement == RS_LOAD_BENEATH;
   roll->kc = (isinf(params->core_stiffness) ? 0.0 : params->E_theta / params->core_stiffness) +
              params->nu_rtheta - 1.0;
   size_t cap = (size_t)params->max_layers;
@@ -468,8 +480,8 @@ enum { RS_REUSE_REFRESH = 32 };
  * at most ~ E(s0) = max_{j <= s0} eps_j x exp(max_{j <= s0} L_j - L_s) x (at most e^-1 / 2
  * from the factor u e^-u of the nodes below): the start node is the highest with E(s0) <=
  * rtol, the tolerance CVODE's own local errors are held to. E grows with s0 (both maxima
- * do), so it is found by bisection. L_s is the last increment's surface
- * (L[n]), one increment below the new one: the bound is on the safe side.
+ * do), so it is found by bisection. L_s is the top of the last increment (L[n - shift]),
+ * one increment below the new one: the bound is on the safe side.
  *
  * The error has one sign (pressures only grow, so E_r drifts one way); measured on the
  * 6054-layer newsprint reel at rtol 1e-6, the stresses move by 7e-7 of the core pressure
@@ -481,7 +493,8 @@ static int roll_reuse_start(rs_roll *roll)
   if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1 ||
       roll->ref_age >= RS_REUSE_REFRESH)
     return -1;
-  const int top = roll->ref_top < n ? roll->ref_top : n;
+  /* below the top of the last integration, so the new one (one node higher) has length */
+  const int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
   double *restrict pe = roll->scan_eps, *restrict pl = roll->scan_L;
   double me = 0.0, ml = -INFINITY;
@@ -492,7 +505,7 @@ static int roll_reuse_start(rs_roll *roll)
     pe[j] = me;
     pl[j] = ml;
   }
-  const double Ls = L[n], tol = roll->p.rtol;
+  const double Ls = L[n - roll->shift], tol = roll->p.rtol;
   int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
   while (hi - lo > 1) {
     const int mid = lo + (hi - lo) / 2;
@@ -511,6 +524,13 @@ static int roll_reuse_start(rs_roll *roll)
  * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
 static rs_status roll_integrate(rs_roll *roll, int k)
 {
+  if (k == 0) { /* the first layer's load on the core: nothing to integrate */
+    roll->w[0] = roll->kc;
+    roll->L[0] = 0.0;
+    roll->start = 0;
+    roll->stats.full_integrations++;
+    return RS_OK;
+  }
   const double *xn = roll->xnode, xs = xn[k];
   const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
   const double x0 = xn[first];
@@ -642,13 +662,16 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
- * The sub-increment of block layer i (node k_old + 1 + i, radius s_i) is exactly
- *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= k_old + 1 + i,
+ * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
+ * for Hakiel, the outer radius of the layer beneath it by default), and its sub-increment
+ * is exactly
+ *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
  * because y, integrated from the core, does not depend on where the load is applied.
  * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
  * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
  * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
- * it of ds_i (1 + w) (= ds_i + r ds_i'). With mean != NULL also the mean, over the
+ * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
+ * at or above it: that layer is part of the loaded body). With mean != NULL also the mean, over the
  * sub-increments that reach a node, of the pressure the block has added there before each:
  *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
  * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
@@ -658,40 +681,48 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
 {
   const double rc = roll->p.core_radius, t = roll->p.caliper;
   const double *L = roll->L, *w = roll->w;
+  /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
+   * of the layer beneath it (then that layer's hoop stress takes the load too, and the new
+   * outermost layer's outer face stays traction free) */
+  const int shift = roll->shift, bottom = k_old + 1 - shift;
   double S = 0.0, V = 0.0; /* V_b = sum_{i >= b} (m - 1 - i) T_i/s_i exp(L_b - L(s_i)) */
   for (int b = m - 1; b >= 0; --b) {
-    const int j = k_old + 1 + b;
+    const int j = bottom + b;
     const double decay = b == m - 1 ? 0.0 : exp(L[j] - L[j + 1]);
     const double above = S * decay, c = T0[b] / (rc + j * t);
     S = above + c;
     roll->dsr[j] = -S;
-    roll->dsh[j] = -above * (1.0 + w[j]);
+    roll->dsh[j] = -(shift ? S : above) * (1.0 + w[j]);
     if (mean) {
       V = V * decay + (m - 1 - b) * c;
       mean[j] = V / (m - b);
     }
+  }
+  if (shift) { /* the outermost layer: no load above it */
+    roll->dsr[k_old + m] = 0.0;
+    roll->dsh[k_old + m] = 0.0;
   }
   /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
    * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   const int j0 = roll->start;
   const int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
-  roll_decays(L, dsr, lo, k_old + 1);
-  if (j0 == 0) { /* a reference: keep its shape (nodes 0..k_old) */
-    for (int j = 0; j <= k_old; ++j) {
+  roll_decays(L, dsr, lo, bottom);
+  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block) */
+    for (int j = 0; j < bottom; ++j) {
       roll->shape_e[j] = dsr[j];
       roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
     }
-    roll->shape_top = k_old;
+    roll->shape_top = bottom - 1;
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
   if (mean) {
-    for (int j = lo; j <= k_old; ++j) mean[j] = V * dsr[j] / m;
+    for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
     const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
     for (int j = 0; j < lo; ++j) mean[j] = cm * roll->shape_e[j];
   }
-  for (int j = lo; j <= k_old; ++j) {
+  for (int j = lo; j < bottom; ++j) {
     const double ds = -S * dsr[j];
     dsr[j] = ds;
     dsh[j] = ds * (1.0 + w[j]);
@@ -736,8 +767,8 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
  * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
 static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
 {
-  const int k_old = roll->n, k = roll->n + m;
-  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + k * t;
+  const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
+  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + top * t;
   double above = 0.0;
   for (int i = m - 1; i >= 0; --i) {
     above += T0[i];
@@ -749,12 +780,16 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
    * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
    * (roll_block_increment). */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  roll_decays(roll->L, dsr, 0, k); /* e_j = y(r_j)/y(s), j < k */
-  dsr[k] = 1.0;
-  for (int j = 0; j <= k; ++j) {
+  roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
+  dsr[top] = 1.0;
+  for (int j = 0; j <= top; ++j) {
     const double ds = scale * dsr[j];
     dsr[j] = ds;
     dsh[j] = ds * (1.0 + roll->w[j]);
+  }
+  if (shift) { /* the outermost layer's outer face: traction free */
+    dsr[k] = 0.0;
+    dsh[k] = 0.0;
   }
   roll->deep_lo = 0;
   roll->c_deep = 0.0;
@@ -768,8 +803,10 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
       roll->sigma_theta[j - 1] += hoop;
     } else {
       int b = j - k_old - 1; /* position in the block, 0 = innermost */
-      double share_at = roll->block_share[b];
+      /* the tension wound at or above the node's radius: with the load beneath a layer,
+       * a block layer's own tension is not on its outer face */
       double share_above = b + 1 < m ? roll->block_share[b + 1] : 0.0;
+      double share_at = shift ? share_above : roll->block_share[b];
       roll->sigma_r[j - 1] = share_at * ds;
       roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
     }
@@ -819,11 +856,12 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     total += T0[i];
   }
   const int k_old = roll->n, k = roll->n + m;
+  const int top = k - roll->shift; /* the highest node the increment loads */
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  roll_gather_pressure(roll, k, NULL);
-  rs_status st = roll_set_modulus(roll, k);
-  if (st == RS_OK) st = roll_integrate(roll, k);
+  roll_gather_pressure(roll, top, NULL);
+  rs_status st = roll_set_modulus(roll, top);
+  if (st == RS_OK) st = roll_integrate(roll, top);
   if (st) return st;
 
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
@@ -836,9 +874,9 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
       /* the corrector: each node's modulus at the mean pressure the m single-layer
        * increments would have seen there (the pressure before each, averaged over those
        * that reach the node), from the predictor's sub-increments; integrate again */
-      roll_gather_pressure(roll, k, roll->P_mean);
-      st = roll_set_modulus(roll, k);
-      if (st == RS_OK) st = roll_integrate(roll, k);
+      roll_gather_pressure(roll, top, roll->P_mean);
+      st = roll_set_modulus(roll, top);
+      if (st == RS_OK) st = roll_integrate(roll, top);
       if (st) return st;
       roll_block_increment(roll, k_old, m, T0, NULL);
     }
@@ -866,7 +904,8 @@ const double *rs_roll_sigma_theta(const rs_roll *roll) { return roll->sigma_thet
 double rs_roll_core_pressure(const rs_roll *roll) { return -roll->core_sigma; }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {
-  double P = roll->n > 0 ? -roll->sigma_r[roll->n - 1] : 0.0;
+  const int node = roll->n - roll->shift; /* the outermost loaded interface */
+  double P = node > 0 ? -roll->sigma_r[node - 1] : node == 0 && roll->n > 0 ? -roll->core_sigma : 0.0;
   return rs_radial_modulus(&roll->p.radial, P);
 }
 

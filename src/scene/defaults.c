@@ -61,7 +61,8 @@ rs_status ys_fill_defaults(yn *root, const rs_scene *scene)
       (st = put_default(num, "rtol", "1e-5")) != RS_OK || /* docs/accuracy.md: on every story scene's front */
       (st = put_default(num, "atol", "0")) != RS_OK ||
       (st = put_default(num, "max_steps", "0")) != RS_OK ||
-      (st = put_default(num, "reuse", "deep")) != RS_OK)
+      (st = put_default(num, "reuse", "deep")) != RS_OK ||
+      (st = put_default(num, "load_placement", "beneath")) != RS_OK)
     return st;
   if (!yn_map_get(out, "file") && strlen(file) >= RS_PATH_MAX)
     return RS_ERROR(RS_ERR_INPUT, "%.64s...: the scene name is too long to name the output "

@@ -155,5 +155,10 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
   fprintf(out, s->numerics.reuse == RS_REUSE_ON
                    ? ", deep solution reused (error held to rtol x T0/s)\n"
                    : ", every increment integrated from the core\n");
+  fprintf(out, s->numerics.load_placement == RS_LOAD_BENEATH
+                   ? "  - load placement: beneath (a new layer joins at T0/t and presses T0/r on "
+                     "the roll beneath it)\n"
+                   : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "
+                     "own outer radius)\n");
   print_defect_checks(out, s);
 }

@@ -233,6 +233,7 @@ static rs_status resolve_numerics(const yn *root, const ys_numerics *y, rs_numer
   n->atol = y->atol;
   n->max_steps = y->max_steps;
   n->reuse = (rs_reuse)y->reuse;
+  n->load_placement = (rs_load_placement)y->load_placement;
   return RS_OK;
 }
 

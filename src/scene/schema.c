@@ -150,6 +150,11 @@ static const cyaml_strval_t numerics_reuses[] = {
     {"none", RS_REUSE_OFF},
 };
 
+static const cyaml_strval_t numerics_placements[] = {
+    {"beneath", RS_LOAD_BENEATH},
+    {"hakiel", RS_LOAD_HAKIEL},
+};
+
 static const cyaml_schema_field_t numerics_fields[] = {
     CYAML_FIELD_INT("layers_per_step", OPT, ys_numerics, layers_per_step),
     CYAML_FIELD_FLOAT("rtol", OPT, ys_numerics, rtol),
@@ -157,6 +162,8 @@ static const cyaml_schema_field_t numerics_fields[] = {
     CYAML_FIELD_INT("max_steps", OPT, ys_numerics, max_steps),
     CYAML_FIELD_ENUM("reuse", OPT | CYAML_FLAG_STRICT, ys_numerics, reuse, numerics_reuses,
                      CYAML_ARRAY_LEN(numerics_reuses)),
+    CYAML_FIELD_ENUM("load_placement", OPT | CYAML_FLAG_STRICT, ys_numerics, load_placement,
+                     numerics_placements, CYAML_ARRAY_LEN(numerics_placements)),
     CYAML_FIELD_END};
 
 static const cyaml_schema_field_t output_fields[] = {

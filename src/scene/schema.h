@@ -78,6 +78,7 @@ typedef struct ys_numerics {
   double rtol, atol;
   long max_steps;
   int reuse;
+  int load_placement;
 } ys_numerics;
 
 typedef struct ys_output {
