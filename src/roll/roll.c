@@ -692,16 +692,14 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
     const double above = S * decay, c = T0[b] / (rc + j * t);
     S = above + c;
     roll->dsr[j] = -S;
-    roll->dsh[j] = -(shift ? S : above) * (1.0 + w[j]);
+    roll->dsh[j] = -above * (1.0 + w[j]); /* Hakiel's hoop accounting (unused beneath) */
     if (mean) {
       V = V * decay + (m - 1 - b) * c;
       mean[j] = V / (m - b);
     }
   }
-  if (shift) { /* the outermost layer: no load above it */
+  if (shift) /* the outermost layer: no load above it */
     roll->dsr[k_old + m] = 0.0;
-    roll->dsh[k_old + m] = 0.0;
-  }
   /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
    * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
@@ -709,10 +707,9 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
   const int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
   roll_decays(L, dsr, lo, bottom);
   if (j0 == 0) { /* a reference: keep its shape (the nodes below the block) */
-    for (int j = 0; j < bottom; ++j) {
-      roll->shape_e[j] = dsr[j];
-      roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
-    }
+    memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
+    if (!shift)
+      for (int j = 0; j < bottom; ++j) roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
     roll->shape_top = bottom - 1;
   }
   roll->deep_lo = lo;
@@ -722,10 +719,31 @@ static void roll_block_increment(rs_roll *roll, int k_old, int m, const double *
     const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
     for (int j = 0; j < lo; ++j) mean[j] = cm * roll->shape_e[j];
   }
-  for (int j = lo; j < bottom; ++j) {
-    const double ds = -S * dsr[j];
-    dsr[j] = ds;
-    dsh[j] = ds * (1.0 + w[j]);
+  for (int j = lo; j < bottom; ++j) dsr[j] *= -S;
+  if (!shift)
+    for (int j = lo; j < bottom; ++j) dsh[j] = dsr[j] * (1.0 + w[j]);
+}
+
+/* With the load beneath each layer, a layer's hoop stress is its mean over the turn, i.e.
+ * its tension per unit width over t, and the turn's equilibrium gives it exactly from the
+ * radial stresses on its two faces:
+ *     sigma_theta_j = (s_j sigma_r(s_j) - s_{j-1} sigma_r(s_{j-1})) / t,
+ * because every increment satisfies sigma_theta = d(r sigma_r)/dr (the integral of its hoop
+ * stress over the turn is [r ds]) and the layer joined at T0_j/t while pressing T0_j on
+ * the face beneath it (docs/roll-model.md). The outermost layer, whose outer face is free,
+ * gets T0/t. A point value at s_j would differ from the mean by a first-order-in-t amount
+ * that, for g ~ 60, is of the size of the hoop stress itself deep in the roll. Layers
+ * 1..k (arrays 0..k-1); node 0 is the core. */
+static void roll_hoop_from_equilibrium(rs_roll *roll, int k)
+{
+  const double rc = roll->p.core_radius, t = roll->p.caliper, inv_t = 1.0 / t;
+  const double *restrict sr = roll->sigma_r;
+  double *restrict sth = roll->sigma_theta;
+  double below = rc * roll->core_sigma; /* r sigma_r on the inner face of layer j */
+  for (int j = 1; j <= k; ++j) {
+    const double above = (rc + j * t) * sr[j - 1];
+    sth[j - 1] = (above - below) * inv_t;
+    below = above;
   }
 }
 
@@ -811,16 +829,29 @@ static rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, doub
       roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
     }
   }
+  if (shift) roll_hoop_from_equilibrium(roll, k);
   return RS_OK;
 }
 
-/* Adds dsr, dsh to the roll (the block's own layers start from their own share). */
+/* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
+ * from their own share. */
 static rs_status roll_commit(rs_roll *roll, int m, const double *T0)
 {
   const int k_old = roll->n, k = roll->n + m;
   const double t = roll->p.caliper;
-  rs_status st = roll_check_increment(roll, roll->dsr, roll->dsh, k);
+  rs_status st = roll_check_increment(roll, roll->dsr, roll->shift ? roll->dsr : roll->dsh, k);
   if (st) return st;
+  if (roll->shift) { /* the radial stresses; the hoop stresses follow from them */
+    const int lo = roll->deep_lo;
+    const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict ds = roll->dsr;
+    double *restrict sr = roll->sigma_r;
+    roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
+    for (int j = 1; j < lo; ++j) sr[j - 1] += c * se[j];
+    for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) sr[j - 1] += ds[j];
+    for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
+    roll_hoop_from_equilibrium(roll, k);
+    return RS_OK;
+  }
   /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment) */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep;

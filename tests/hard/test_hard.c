@@ -589,7 +589,10 @@ static void table_steep(void)
  * Pfeiffer modulus changes at layer scale and so does ds); tolerance 1e-8 of
  * max |d sigma_theta| (the engine runs at rtol 1e-10). The accumulated
  * profile does not obey it at layer scale: each layer adds its own -T/s and T/t where it
- * is born, a jump the finite difference sees (docs/robustness.md). */
+ * is born, a jump the finite difference sees (docs/robustness.md). The point values at the
+ * nodes are Hakiel's accounting; with the default placement the engine reports each
+ * layer's mean hoop stress, built from this same equilibrium over the turn and checked
+ * against the exact turn-by-turn statics (tests/validation/test_ring_statics.c). */
 static void equilibrium_increment(void)
 {
   const int n = 2000;
@@ -597,6 +600,7 @@ static void equilibrium_increment(void)
   rs_roll_params p = pfeiffer_params(0.0762, t, 4.5e9, 3e3, 80.0, 3e9, n + 1);
   p.rtol = 1e-10;
   p.atol = 0;
+  p.placement = RS_LOAD_HAKIEL;
   rs_roll *roll = wind(&p, n, 1, T);
   if (!roll) return;
   double *sr0 = malloc(n * sizeof(double)), *st0 = malloc(n * sizeof(double));

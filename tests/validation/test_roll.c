@@ -216,6 +216,10 @@ static void fd_wind(fd_roll *f, int sub, int shift)
     f->sr[k - 1] = shift ? 0.0 : -T / (f->rc + k * f->t);
     f->st[k - 1] = T / f->t;
   }
+  if (shift) /* a layer's hoop stress is its mean over the turn: the turn's equilibrium */
+    for (int j = 1; j <= f->n; ++j)
+      f->st[j - 1] = ((f->rc + j * f->t) * f->sr[j - 1] -
+                      (f->rc + (j - 1) * f->t) * (j > 1 ? f->sr[j - 2] : f->core)) / f->t;
   free(g2n); free(ds); free(rds);
 }
 
