@@ -137,6 +137,11 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
             winder_name(s->nip.winder), f(a, s->nip.mu_roll), f(b, s->nip.mu_drum),
             f(c, s->nip.drum.radius * 1e3), s->nip.nodes);
     print_recipe(out, "nip load", &s->nip.load);
+    if (m->G_rtheta > 0.0)
+      fprintf(out, "  - nip stack shear modulus: G_rtheta = %s Pa (material)\n", f(a, m->G_rtheta));
+    else
+      fprintf(out, "  - nip stack shear modulus: material.G_rtheta not given: the contact nip "
+                   "will refuse this material (docs/nip.md)\n");
     break;
   }
   if (s->nip.model != RS_NIP_NONE) {
