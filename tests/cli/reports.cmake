@@ -17,10 +17,11 @@ rs_cli_test(csv_check_refused 2 [[reelsim: check: --csv only applies to run]]
             check ${SC}/small.yaml --csv .)
 
 # Hoop compression is information, the buckling rule weighs it (docs/defects.md): the
-# falling-taper scene compresses its inner layers (-3.4 MPa) far below the critical
-# stress of a layer on the stack (about 240 MPa there), so no WARNING line at all.
+# falling-taper scene compresses its inner layers (-3.4 to -3.6 MPa, by the load
+# placement) far below the critical stress of a layer on the stack (about 240 MPa there),
+# so no WARNING line at all.
 rs_cli_script(falling_taper_hoop_info summary_lines.sh
-              [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers at r = 76\.3 \.\. 89\.4 mm. least -3\.[0-9]+ MPa at r = 76\.3 mm$]]
+              [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers at r = 76\.3 \.\. [0-9.]+ mm. least -3\.[0-9]+ MPa at r = 76\.[0-9] mm$]]
               [[^  hoop buckling +compression below the critical stress sqrt\(E_theta E_r/3\): least margin [0-9]+ x .*: ok$]]
               -- run ${CASES}/newsprint-falling-taper.yaml -o falling-taper.h5)
 # A core that gives way (E_c = 0.5 MPa) under the same recipe: the first layer's
