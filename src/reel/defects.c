@@ -85,7 +85,7 @@ static int flag_ranges(const unsigned char *flag, int n, const double *radius,
 
 /* Hoop compression, sigma_theta < 0: reported as information. It is the necessary
  * condition for a layer to buckle (starring), not a sufficient one: interior layers of
- * most rolls carry a small compressive residual (about 1 % of T0/t) and do not buckle.
+ * most rolls carry a small compressive residual (a few per cent of T0/t) and do not buckle.
  * The buckling rule below weighs it against the layer's critical stress. */
 static rs_status assess_hoop(const rs_reel_result *res, unsigned char *flag, rs_defect_report *rep)
 {
