@@ -184,7 +184,7 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
   if (st == RS_OK) st = plot_curve(c, d->r_mm, d->hoop_mpa, d->n, style, title, NULL);
-  if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (defect risk)");
+  if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);
