@@ -17,22 +17,15 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "util/path_stem.h"
-
-static double now_seconds(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct progress {
   int done, total;
@@ -72,7 +65,7 @@ static int on_progress(void *user, int layers_done, int layers_total)
   p->done = layers_done;
   p->total = layers_total;
   if (p->bar) {
-    double now = now_seconds();
+    double now = rs_clock_wall();
     if (now - p->t_start >= 1.0 && now - p->t_last >= 0.1) {
       progress_draw(p, now);
       p->t_last = now;
@@ -135,7 +128,7 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
 
 int cli_run(const cli_args *a)
 {
-  double t0 = now_seconds();
+  double t0 = rs_clock_wall();
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
 
@@ -206,7 +199,7 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, now_seconds() - t0);
+  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, rs_clock_wall() - t0);
 
 done:
   rs_defect_report_destroy(&defects);

@@ -16,9 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 
 #include "cli/cli.h"
+#include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "reelsim/plot.h"
 #include "reelsim/reel.h"
@@ -40,13 +40,6 @@ static int on_progress(void *user, int done, int total)
   (void)done;
   (void)total;
   return atomic_load(&interrupted) != 0;
-}
-
-static double now_seconds(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 typedef struct study_args {
@@ -247,7 +240,7 @@ int cli_study(int argc, char **argv)
     return code;
   }
   code = CLI_EXIT_OK;
-  double t_start = now_seconds();
+  double t_start = rs_clock_wall();
   rs_scene *base = NULL, **scenes = NULL;
   rs_study_plan *plan = NULL;
   rs_reel_job *jobs = NULL;
@@ -368,7 +361,7 @@ int cli_study(int argc, char **argv)
   }
   if (!a.quiet)
     printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
-           now_seconds() - t_start);
+           rs_clock_wall() - t_start);
 
 done:
   rs_study_report_free(&rep);
