@@ -42,60 +42,6 @@ static int on_progress(void *user, int done, int total)
   return atomic_load(&interrupted) != 0;
 }
 
-typedef struct study_args {
-  const char *scene, *dir;
-  int quick, quiet, jobs;
-  int n_sets;
-  const char **sets;
-} study_args;
-
-static int parse(int argc, char **argv, study_args *a)
-{
-  memset(a, 0, sizeof *a);
-  a->jobs = 1;
-  if (!(a->sets = calloc((size_t)argc + 1, sizeof *a->sets)))
-    return cli_fail(CLI_EXIT_OTHER, "out of memory");
-  for (int i = 2; i < argc; ++i) {
-    const char *arg = argv[i];
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-      cli_usage(stdout, "study");
-      return CLI_EXIT_OK;
-    } else if (strcmp(arg, "--set") == 0 || strcmp(arg, "-s") == 0) {
-      if (i + 1 >= argc) return cli_fail(CLI_EXIT_USAGE, "study: --set needs key.path=value");
-      a->sets[a->n_sets++] = argv[++i];
-    } else if (strncmp(arg, "--set=", 6) == 0) {
-      a->sets[a->n_sets++] = arg + 6;
-    } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--output") == 0) {
-      if (i + 1 >= argc || !argv[i + 1][0])
-        return cli_fail(CLI_EXIT_USAGE, "study: %s needs a directory", arg);
-      a->dir = argv[++i];
-    } else if (strncmp(arg, "--output=", 9) == 0 && arg[9]) {
-      a->dir = arg + 9;
-    } else if (strcmp(arg, "--quick") == 0) {
-      a->quick = 1;
-    } else if (strcmp(arg, "--jobs") == 0 || strcmp(arg, "-j") == 0 ||
-               strncmp(arg, "--jobs=", 7) == 0) {
-      const char *v = arg[6] == '=' ? arg + 7 : i + 1 < argc ? argv[++i] : "";
-      char *end;
-      long j = strtol(v, &end, 10);
-      if (!v[0] || *end || j < 1 || j > 64)
-        return cli_fail(CLI_EXIT_USAGE, "study: --jobs needs a number of threads in [1, 64] (got '%s')", v);
-      a->jobs = (int)j;
-    } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-      a->quiet = 1;
-    } else if (arg[0] == '-' && arg[1]) {
-      return cli_fail(CLI_EXIT_USAGE, "study: unknown option '%s' (see reelsim study --help)", arg);
-    } else if (a->scene) {
-      return cli_fail(CLI_EXIT_USAGE, "study: one scene at a time (got '%s' and '%s')", a->scene, arg);
-    } else {
-      a->scene = arg;
-    }
-  }
-  if (!a->scene)
-    return cli_fail(CLI_EXIT_USAGE, "study: missing the scene file (usage: reelsim study SCENE ...)");
-  return -1;
-}
-
 /* DIR exists (made here if its parent does) and is a writable directory. */
 static int make_dir(const char *dir)
 {
@@ -231,15 +177,9 @@ static void slim(rs_reel_result *res)
 
 static int n_runs_of(const rs_study_plan *p) { return p ? p->n_runs : 0; }
 
-int cli_study(int argc, char **argv)
+int cli_study(const cli_args *a)
 {
-  study_args a;
-  int code = parse(argc, argv, &a);
-  if (code >= 0) {
-    free(a.sets);
-    return code;
-  }
-  code = CLI_EXIT_OK;
+  int code = CLI_EXIT_OK;
   double t_start = rs_clock_wall();
   rs_scene *base = NULL, **scenes = NULL;
   rs_study_plan *plan = NULL;
@@ -258,8 +198,8 @@ int cli_study(int argc, char **argv)
   if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
   atomic_store(&interrupted, 0);
 
-  rs_status st = rs_scene_load(a.scene, a.n_sets, a.sets, &base);
-  if (st == RS_OK) st = rs_study_plan_create(base, a.quick, &plan);
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &base);
+  if (st == RS_OK) st = rs_study_plan_create(base, a->quick, &plan);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
@@ -270,7 +210,7 @@ int cli_study(int argc, char **argv)
   results = calloc((size_t)n, sizeof *results);
   wall = calloc((size_t)n, sizeof *wall);
   cpu = calloc((size_t)n, sizeof *cpu);
-  sets = calloc((size_t)a.n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
+  sets = calloc((size_t)a->n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
   if (!scenes || !jobs || !results || !wall || !cpu || !sets) {
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
     goto done;
@@ -278,17 +218,17 @@ int cli_study(int argc, char **argv)
   /* every run is the scene with the user's overrides, then the run's own */
   for (int i = 0; i < n; ++i) {
     const rs_study_run *r = &plan->runs[i];
-    for (int k = 0; k < a.n_sets; ++k) sets[k] = a.sets[k];
-    for (int k = 0; k < r->n_sets; ++k) sets[a.n_sets + k] = r->sets[k];
-    if ((st = rs_scene_load(a.scene, a.n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
+    for (int k = 0; k < a->n_sets; ++k) sets[k] = a->sets[k];
+    for (int k = 0; k < r->n_sets; ++k) sets[a->n_sets + k] = r->sets[k];
+    if ((st = rs_scene_load(a->scene, a->n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
       rs_error_wrap("study run '%s'", r->label);
       code = cli_fail_status(st);
       fprintf(stderr, "reelsim: study: nothing was wound\n");
       goto done;
     }
   }
-  rs_path_stem(a.scene, name, sizeof name);
-  if (a.dir) snprintf(dir, sizeof dir, "%s", a.dir);
+  rs_path_stem(a->scene, name, sizeof name);
+  if (a->output) snprintf(dir, sizeof dir, "%s", a->output);
   else snprintf(dir, sizeof dir, "study-%s", name);
   if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
   snprintf(path, sizeof path, "%s/study.h5", dir);
@@ -297,17 +237,17 @@ int cli_study(int argc, char **argv)
     goto done;
   }
 
-  if (!a.quiet) {
-    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, base->title,
-           base->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+  if (!a->quiet) {
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, base->title,
+           base->n_layers, n, a->quick ? " (quick)" : "", a->jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
     jobs[i].scene = scenes[i];
     jobs[i].opts.progress = on_progress;
   }
-  for (int first = 0; first < n; first += a.jobs) {
-    int m = n - first < a.jobs ? n - first : a.jobs;
+  for (int first = 0; first < n; first += a->jobs) {
+    int m = n - first < a->jobs ? n - first : a->jobs;
     if ((st = rs_reel_wind_many(m, jobs + first, m, NULL)) != RS_OK) {
       code = cli_fail_status(st);
       goto done;
@@ -322,7 +262,7 @@ int cli_study(int argc, char **argv)
       wall[i] = job->wall_seconds;
       cpu[i] = job->cpu_seconds;
       results[i] = job->status == RS_OK ? job->result : NULL;
-      if (!a.quiet) {
+      if (!a->quiet) {
         printf("  [%2d/%d] %-34s %8.2f s%s%s\n", i + 1, n, plan->runs[i].label, job->wall_seconds,
                job->status ? "  FAILED: " : "", job->status ? job->message : "");
         fflush(stdout);
@@ -339,7 +279,7 @@ int cli_study(int argc, char **argv)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a.quiet) {
+  if (!a->quiet) {
     print_report(plan, &rep, jobs);
     print_summary(plan, &rep);
   }
@@ -359,7 +299,7 @@ int cli_study(int argc, char **argv)
                     rs_error_message());
     goto done;
   }
-  if (!a.quiet)
+  if (!a->quiet)
     printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
            rs_clock_wall() - t_start);
 
@@ -375,7 +315,6 @@ done:
   free(sets);
   rs_study_plan_destroy(&plan);
   rs_scene_destroy(&base);
-  free(a.sets);
   sigaction(SIGINT, &old, NULL);
   return code;
 }

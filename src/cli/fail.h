@@ -1,0 +1,17 @@
+/* Exit statuses and the messages on standard error (docs/cli.md, "Exit status").
+ * Exit status: 0 ok, 2 bad input or usage, 3 solver failure, 130 interrupted (SIGINT),
+ * 143 terminated (SIGTERM), 1 anything else. */
+#ifndef RS_CLI_FAIL_H
+#define RS_CLI_FAIL_H
+
+#include "reelsim/status.h"
+
+enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER = 3,
+       CLI_EXIT_INTERRUPTED = 130, CLI_EXIT_TERMINATED = 143 };
+
+/* "reelsim: ..." on stderr; returns `code`. */
+int cli_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Prints the recorded library error and returns the exit status for it. */
+int cli_fail_status(rs_status st);
+
+#endif
