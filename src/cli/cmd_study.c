@@ -11,13 +11,14 @@
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/signals.h"
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "reelsim/plot.h"
@@ -26,23 +27,43 @@
 #include "reelsim/study.h"
 #include "util/path_stem.h"
 
-static atomic_int interrupted;
-
-static void on_sigint(int sig)
-{
-  (void)sig;
-  atomic_store(&interrupted, 1);
-}
-
 static int on_progress(void *user, int done, int total)
 {
   (void)user;
   (void)done;
   (void)total;
-  return atomic_load(&interrupted) != 0;
+  return cli_signal_caught() != 0;
 }
 
-/* DIR exists (made here if its parent does) and is a writable directory. */
+/* The study's directory: DIR may be missing (made after the runs; its parent must then be
+ * a writable directory) or a writable directory; anything else is refused before any
+ * winding, so a typo does not cost the whole study. */
+static int check_dir(const char *dir)
+{
+  struct stat sb;
+  char parent[RS_PATH_MAX];
+  const char *what = dir;
+  if (stat(dir, &sb) != 0) {
+    if (errno != ENOENT)
+      return cli_fail(CLI_EXIT_OTHER, "study: cannot use the directory '%s': %s", dir, strerror(errno));
+    snprintf(parent, sizeof parent, "%s", dir);
+    char *slash = strrchr(parent, '/');
+    if (!slash) snprintf(parent, sizeof parent, ".");
+    else if (slash == parent) parent[1] = '\0';
+    else *slash = '\0';
+    what = parent;
+    if (stat(parent, &sb) != 0)
+      return cli_fail(CLI_EXIT_OTHER, "study: cannot make the directory '%s': '%s': %s", dir,
+                      parent, strerror(errno));
+  }
+  if (!S_ISDIR(sb.st_mode)) return cli_fail(CLI_EXIT_OTHER, "study: '%s' is not a directory", what);
+  if (access(what, W_OK | X_OK) != 0)
+    return cli_fail(CLI_EXIT_OTHER, "study: the directory '%s' is not writable: %s", what,
+                    strerror(errno));
+  return CLI_EXIT_OK;
+}
+
+/* DIR exists (made here if its parent does) and is a directory. */
 static int make_dir(const char *dir)
 {
   struct stat sb;
@@ -189,14 +210,8 @@ int cli_study(const cli_args *a)
   const char **sets = NULL;
   rs_study_report rep = {0};
   char name[256], dir[RS_PATH_MAX], path[RS_PATH_MAX + 32];
-  struct sigaction sa, old;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_sigint;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &sa, &old);
-  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
-  atomic_store(&interrupted, 0);
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
 
   rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &base);
   if (st == RS_OK) st = rs_study_plan_create(base, a->quick, &plan);
@@ -230,12 +245,9 @@ int cli_study(const cli_args *a)
   rs_path_stem(a->scene, name, sizeof name);
   if (a->output) snprintf(dir, sizeof dir, "%s", a->output);
   else snprintf(dir, sizeof dir, "study-%s", name);
-  if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
-  snprintf(path, sizeof path, "%s/study.h5", dir);
-  if ((st = rs_output_check_target(path)) != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
+  /* checked now, made when there is something to write: an interrupted or failed study
+   * leaves no empty directory */
+  if ((code = check_dir(dir)) != CLI_EXIT_OK) goto done;
 
   if (!a->quiet) {
     printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, base->title,
@@ -252,8 +264,10 @@ int cli_study(const cli_args *a)
       code = cli_fail_status(st);
       goto done;
     }
-    if (atomic_load(&interrupted)) {
-      code = cli_fail(CLI_EXIT_INTERRUPTED, "study: interrupted (no output written)");
+    int sig = cli_signal_caught();
+    if (sig) {
+      code = cli_fail(cli_signal_exit_code(sig), "study: %s (no output written)",
+                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
       goto done;
     }
     for (int i = first; i < first + m; ++i) {
@@ -283,6 +297,8 @@ int cli_study(const cli_args *a)
     print_report(plan, &rep, jobs);
     print_summary(plan, &rep);
   }
+  if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
+  snprintf(path, sizeof path, "%s/study.h5", dir);
   st = rs_output_write_study(path, base, &rep);
   if (st == RS_OK) {
     snprintf(path, sizeof path, "%s/study.csv", dir);
@@ -315,6 +331,6 @@ done:
   free(sets);
   rs_study_plan_destroy(&plan);
   rs_scene_destroy(&base);
-  sigaction(SIGINT, &old, NULL);
+  cli_signals_restore(&sig_saved);
   return code;
 }
