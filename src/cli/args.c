@@ -98,6 +98,7 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_SET: a->sets[a->n_sets++] = arg; break;
   case CLI_OPT_CSV: a->csv_dir = arg; break;
   case CLI_OPT_QUIET: a->quiet = 1; break;
+  case CLI_OPT_VERBOSE: a->verbose = 1; break;
   case CLI_OPT_KEEP_PARTIAL: a->keep_partial = 1; break;
   case CLI_OPT_QUICK: a->quick = 1; break;
   case CLI_OPT_JSON: a->json = 1; break;

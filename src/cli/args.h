@@ -12,6 +12,7 @@ typedef struct cli_args {
   const char **scenes;
   const char *output;   /* -o FILE (run, check, compare) or DIR (plot, study), or NULL */
   int quiet;
+  int verbose;          /* --verbose: errors also say where in the code */
   int keep_partial;     /* run --keep-partial: write what finished when the run stops early */
   const char *csv_dir;  /* run --csv DIR, or NULL */
   int quick;            /* study --quick */

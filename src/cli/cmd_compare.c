@@ -103,7 +103,7 @@ static int check_jobs(compare_state *c)
       cli_fail(k, "%s: solver failure: %s", c->scenes[i]->path, job->message);
     else
       cli_fail(k, "%s: %s: %s", c->scenes[i]->path, rs_status_name(job->status), job->message);
-    if (job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
+    if (cli_fail_is_verbose() && job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
     if (job->result && job->status == RS_ERR_SOLVER)
       fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
               c->scenes[i]->n_layers);

@@ -22,6 +22,7 @@
 #include "cli/cli.h"
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
+#include "cli/outdir.h"
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
@@ -136,9 +137,9 @@ int cli_run(const cli_args *a)
   rs_reel_result *res = NULL;
   rs_defect_report *defects = NULL;
   int code = CLI_EXIT_OK;
-  /* a mistyped --csv directory must not cost a whole winding */
-  rs_status st = a->csv_dir ? rs_output_check_csv_dir(a->csv_dir) : RS_OK;
-  if (st == RS_OK) st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
+  /* a --csv path that cannot be a directory must not cost a whole winding */
+  if (a->csv_dir && (code = cli_outdir_check("--csv", a->csv_dir)) != CLI_EXIT_OK) goto done;
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
@@ -192,8 +193,15 @@ int cli_run(const cli_args *a)
   if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
+    cli_outdir made;
+    if ((code = cli_outdir_make("--csv", a->csv_dir, &made)) != CLI_EXIT_OK) {
+      cli_outdir_undo(&made);
+      goto done;
+    }
     rs_path_stem(scene->path, stem, sizeof stem);
     st = rs_output_write_csv(a->csv_dir, stem, res);
+    if (st != RS_OK) cli_outdir_undo(&made);
+    else cli_outdir_free(&made);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);

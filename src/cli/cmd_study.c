@@ -8,16 +8,14 @@
  * each against the reference, prints a table and writes DIR/study.h5, DIR/study.csv and
  * DIR/study.png. A run other than the references and the defaults that fails is reported
  * and left out of the front; a failed reference or default run stops the study (exit 3). */
-#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/outdir.h"
 #include "cli/signals.h"
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
@@ -27,53 +25,14 @@
 #include "reelsim/study.h"
 #include "util/path_stem.h"
 
+static const char DIR_LABEL[] = "study: output directory";
+
 static int on_progress(void *user, int done, int total)
 {
   (void)user;
   (void)done;
   (void)total;
   return cli_signal_caught() != 0;
-}
-
-/* The study's directory: DIR may be missing (made after the runs; its parent must then be
- * a writable directory) or a writable directory; anything else is refused before any
- * winding, so a typo does not cost the whole study. */
-static int check_dir(const char *dir)
-{
-  struct stat sb;
-  char parent[RS_PATH_MAX];
-  const char *what = dir;
-  if (stat(dir, &sb) != 0) {
-    if (errno != ENOENT)
-      return cli_fail(CLI_EXIT_OTHER, "study: cannot use the directory '%s': %s", dir, strerror(errno));
-    snprintf(parent, sizeof parent, "%s", dir);
-    char *slash = strrchr(parent, '/');
-    if (!slash) snprintf(parent, sizeof parent, ".");
-    else if (slash == parent) parent[1] = '\0';
-    else *slash = '\0';
-    what = parent;
-    if (stat(parent, &sb) != 0)
-      return cli_fail(CLI_EXIT_OTHER, "study: cannot make the directory '%s': '%s': %s", dir,
-                      parent, strerror(errno));
-  }
-  if (!S_ISDIR(sb.st_mode)) return cli_fail(CLI_EXIT_OTHER, "study: '%s' is not a directory", what);
-  if (access(what, W_OK | X_OK) != 0)
-    return cli_fail(CLI_EXIT_OTHER, "study: the directory '%s' is not writable: %s", what,
-                    strerror(errno));
-  return CLI_EXIT_OK;
-}
-
-/* DIR exists (made here if its parent does) and is a directory. */
-static int make_dir(const char *dir)
-{
-  struct stat sb;
-  if (stat(dir, &sb) != 0) {
-    if (errno != ENOENT || mkdir(dir, 0777) != 0)
-      return cli_fail(CLI_EXIT_OTHER, "study: cannot make the directory '%s': %s", dir, strerror(errno));
-    return CLI_EXIT_OK;
-  }
-  if (!S_ISDIR(sb.st_mode)) return cli_fail(CLI_EXIT_OTHER, "study: '%s' is not a directory", dir);
-  return CLI_EXIT_OK;
 }
 
 /* Errors print as %.2e; an exact zero as "0" and errors below the reference's uncertainty
@@ -209,6 +168,7 @@ int cli_study(const cli_args *a)
   double *wall = NULL, *cpu = NULL;
   const char **sets = NULL;
   rs_study_report rep = {0};
+  cli_outdir made = {NULL, NULL};
   char name[256], dir[RS_PATH_MAX], path[RS_PATH_MAX + 32];
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
@@ -247,7 +207,7 @@ int cli_study(const cli_args *a)
   else snprintf(dir, sizeof dir, "study-%s", name);
   /* checked now, made when there is something to write: an interrupted or failed study
    * leaves no empty directory */
-  if ((code = check_dir(dir)) != CLI_EXIT_OK) goto done;
+  if ((code = cli_outdir_check(DIR_LABEL, dir)) != CLI_EXIT_OK) goto done;
 
   if (!a->quiet) {
     printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, base->title,
@@ -297,7 +257,7 @@ int cli_study(const cli_args *a)
     print_report(plan, &rep, jobs);
     print_summary(plan, &rep);
   }
-  if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
+  if ((code = cli_outdir_make(DIR_LABEL, dir, &made)) != CLI_EXIT_OK) goto done;
   snprintf(path, sizeof path, "%s/study.h5", dir);
   st = rs_output_write_study(path, base, &rep);
   if (st == RS_OK) {
@@ -320,6 +280,9 @@ int cli_study(const cli_args *a)
            rs_clock_wall() - t_start);
 
 done:
+  /* the directories made for a study that then failed go again when they are empty */
+  if (code != CLI_EXIT_OK) cli_outdir_undo(&made);
+  else cli_outdir_free(&made);
   rs_study_report_free(&rep);
   for (int i = 0; jobs && i < n_runs_of(plan); ++i) rs_reel_result_destroy(&jobs[i].result);
   for (int i = 0; scenes && i < n_runs_of(plan); ++i) rs_scene_destroy(&scenes[i]);

@@ -4,6 +4,12 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+static int verbose;
+
+void cli_fail_verbose(int on) { verbose = on; }
+
+int cli_fail_is_verbose(void) { return verbose; }
+
 int cli_fail(int code, const char *fmt, ...)
 {
   va_list ap;
@@ -18,10 +24,10 @@ int cli_fail(int code, const char *fmt, ...)
 int cli_fail_status(rs_status st)
 {
   int code = rs_status_exit_code(st);
-  if (st == RS_ERR_INPUT) return cli_fail(code, "%s", rs_error_message());
-  if (st == RS_ERR_SOLVER)
-    return cli_fail(code, "solver failure: %s\nreelsim:   (at %s)", rs_error_message(),
-                    rs_error_where());
-  return cli_fail(code, "%s: %s\nreelsim:   (at %s)", rs_status_name(st), rs_error_message(),
-                  rs_error_where());
+  if (st == RS_ERR_INPUT) cli_fail(code, "%s", rs_error_message());
+  else if (st == RS_ERR_SOLVER) cli_fail(code, "solver failure: %s", rs_error_message());
+  else cli_fail(code, "%s: %s", rs_status_name(st), rs_error_message());
+  if (verbose && st != RS_ERR_INPUT && rs_error_where()[0])
+    fprintf(stderr, "reelsim:   (at %s)\n", rs_error_where());
+  return code;
 }

@@ -48,7 +48,10 @@ int main(int argc, char **argv)
     if (!c) return cli_fail(CLI_EXIT_OTHER, "internal error: no help for command '%s'", cmd);
     cli_args a;
     int code = cli_parse(argc, argv, 2, c, &a);
-    if (code < 0) code = commands[i].fn(&a);
+    if (code < 0) {
+      cli_fail_verbose(a.verbose);
+      code = commands[i].fn(&a);
+    }
     cli_args_free(&a);
     return code;
   }

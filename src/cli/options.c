@@ -13,10 +13,10 @@ const cli_option cli_options[] = {
      "write the comparison here (default compare.h5)"},
     {CLI_OPT_OUTPUT, "output", 'o', "DIR", "a directory", CLI_PLOT,
      "write the PNG files here (default: the current directory;\n"
-     "it must exist)"},
+     "made if missing, as mkdir -p does)"},
     {CLI_OPT_OUTPUT, "output", 'o', "DIR", "a directory", CLI_STUDY,
-     "where the files go (default study-<scene name>; made if\n"
-     "missing)"},
+     "where the files go (default study-<scene name>; made when\n"
+     "the runs are done, as mkdir -p does)"},
     {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_RUN,
      "also write DIR/<scene>-profile.csv and\n"
      "DIR/<scene>-wot.csv "
@@ -49,6 +49,9 @@ const cli_option cli_options[] = {
      "print nothing but errors (no summary, no progress bar)"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY,
      "print nothing but errors"},
+    {CLI_OPT_VERBOSE, "verbose", 'v', NULL, NULL, CLI_EVERY,
+     "with an error, also show where in reelsim's code it was\n"
+     "found (for a bug report)"},
     {CLI_OPT_HELP, "help", 'h', NULL, NULL, CLI_EVERY, "this help"},
 };
 const int cli_n_options = (int)(sizeof cli_options / sizeof cli_options[0]);
@@ -93,8 +96,8 @@ const cli_command cli_commands[] = {
      "against radius (with history stages and defect ranges when the file has them),\n"
      "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
      "file has /nip/profiles; for a compare file the runs overlaid, one plot each.\n",
-     "exit status: 0 ok, 2 FILE is not a reelsim file or DIR is not a directory,\n"
-     "             1 gnuplot missing or failed, other errors\n"},
+     "exit status: 0 ok, 2 FILE is not a reelsim file or DIR (or a parent of it) is\n"
+     "             not a directory, 1 gnuplot missing or failed, other errors\n"},
     {"study", CLI_STUDY, "scene file", 0,
      "reelsim study SCENE [-o DIR] [--set key.path=value ...] [--quick] [--jobs N] [--quiet]",
      "what accuracy costs in time: the scene wound at many\n"

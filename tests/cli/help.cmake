@@ -6,3 +6,8 @@ foreach(c general run check compare plot study nip)
                    ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes ${c})
   set_tests_properties(cli.usage_${c} PROPERTIES LABELS cli TIMEOUT 300)
 endforeach()
+# source locations in messages only with --verbose (tests/cli/verbose.sh)
+add_test(NAME cli.verbose_locations
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/verbose.sh $<TARGET_FILE:reelsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes)
+set_tests_properties(cli.verbose_locations PROPERTIES LABELS cli TIMEOUT 300)

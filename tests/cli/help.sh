@@ -27,12 +27,12 @@ fi
 
 # the flags docs/cli.md gives each command
 case "$cmd" in
-run)     flags="-o --output --csv -s --set -q --quiet --keep-partial -h --help"; scene="$sc/small.yaml" ;;
-check)   flags="-o --output -s --set -q --quiet -h --help"; scene="$sc/small.yaml" ;;
-compare) flags="-o --output -s --set -q --quiet -h --help"; scene="$sc/small.yaml" ;;
-plot)    flags="-o --output -q --quiet -h --help"; scene="" ;;
-study)   flags="-o --output -s --set --quick -j --jobs -q --quiet -h --help"; scene="$sc/small.yaml" ;;
-nip)     flags="--radius --json -s --set -h --help"; scene="$sc/contact.yaml --radius 0.3" ;;
+run)     flags="-o --output --csv -s --set -q --quiet --keep-partial -v --verbose -h --help"; scene="$sc/small.yaml" ;;
+check)   flags="-o --output -s --set -q --quiet -v --verbose -h --help"; scene="$sc/small.yaml" ;;
+compare) flags="-o --output -s --set -q --quiet -v --verbose -h --help"; scene="$sc/small.yaml" ;;
+plot)    flags="-o --output -q --quiet -v --verbose -h --help"; scene="" ;;
+study)   flags="-o --output -s --set --quick -j --jobs -q --quiet -v --verbose -h --help"; scene="$sc/small.yaml" ;;
+nip)     flags="--radius --json -s --set -v --verbose -h --help"; scene="$sc/contact.yaml --radius 0.3" ;;
 *) fail "unknown command $cmd" ;;
 esac
 

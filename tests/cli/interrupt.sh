@@ -3,16 +3,17 @@
 # INT, i.e. Ctrl-C; TERM gives 143) during `run` stops it after the current step, says
 # where it stopped, and exits with STATUS (default 130). It writes no file, or with
 # --keep-partial exactly the output file, marked complete = 0, with the layers the message
-# names. `study`: the same signal during `reelsim study -o DIR` stops it after the runs in
-# progress with `study: interrupted` (or `terminated (SIGTERM)`) and STATUS, and leaves no
-# file and no directory: DIR is made only when the study has something to write.
+# names. `study`: the same signal during `reelsim study -o DIR` (DIR two levels below
+# anything that exists) stops it after the runs in progress with `study: interrupted` (or
+# `terminated (SIGTERM)`) and STATUS, and leaves no file and no directory: DIR is made
+# only when the study has something to write.
 set -u
 set -m   # job control: the background run gets SIGINT like a foreground one would
 bin="$1"; scene="$2"; sig="${3:-INT}"; want="${4:-130}"; keep="${5:-}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 # a reel long enough (tens of seconds) that the signal lands mid-run
 if [ "$keep" = study ]; then
-  "$bin" study "$scene" --set winding.final_radius=1.5 -o "$tmp/out" > "$tmp/log" 2>&1 &
+  "$bin" study "$scene" --set winding.final_radius=1.5 -o "$tmp/out/study" > "$tmp/log" 2>&1 &
 else
   "$bin" run "$scene" --set winding.final_radius=1.5 -o "$tmp/out.h5" $keep > "$tmp/log" 2>&1 &
 fi
