@@ -148,7 +148,7 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
       return cli_fail(CLI_EXIT_USAGE, "%s: unknown option '%s' (see reelsim %s --help)",
                       cmd->name, typed, cmd->name);
     }
-    if (optopt >= LONG_BASE || c >= LONG_BASE) snprintf(typed, sizeof typed, "--%s", o->name);
+    if ((c == ':' ? optopt : c) >= LONG_BASE) snprintf(typed, sizeof typed, "--%s", o->name);
     else snprintf(typed, sizeof typed, "-%c", o->short_name);
     const cli_option *mine = cli_option_for(o->id, cmd->bit);
     if (!mine) {
