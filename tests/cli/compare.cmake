@@ -10,7 +10,7 @@ endfunction()
 foreach(c identical bad_scene solver_failure default_name missing_dir interrupted)
   rs_cli_case(compare_${c} compare.sh ${c})
 endforeach()
-foreach(c run_file compare_file no_gnuplot not_reelsim missing_dir)
+foreach(c run_file compare_file no_gnuplot not_reelsim missing_dir not_dir bad_file_dir)
   rs_cli_case(plot_${c} plot.sh ${c})
 endforeach()
 

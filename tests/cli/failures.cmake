@@ -35,7 +35,7 @@ rs_cli_script(run_interrupted_keep_partial interrupt.sh ${CASES}/newsprint-rider
 rs_cli_script(disk_full_fsize disk_full.sh ${SC}/small.yaml fsize)
 rs_cli_script(disk_full_readonly disk_full.sh ${SC}/small.yaml readonly)
 set_tests_properties(cli.disk_full_readonly PROPERTIES SKIP_RETURN_CODE 77)
-rs_cli_test(keep_partial_check_refused 2 [[check: unknown option '--keep-partial']]
+rs_cli_test(keep_partial_check_refused 2 [[check: --keep-partial only applies to run]]
             check ${SC}/small.yaml --keep-partial)
 # the nip refuses part-way (the drum cannot carry the rising tension): exit 3, finished
 # layers kept with --keep-partial

@@ -10,9 +10,13 @@ rs_cli_script(run_history_too_large_no_file no_output.sh 2 ${SC}/small.yaml
               --set winding.final_radius=5 --set output.history_every=1)
 
 rs_cli_script(csv_writes csv_writes.sh ${SC}/small.yaml)
-rs_cli_test(csv_missing_dir 2 [[reelsim: --csv no-such-dir: no such directory]]
-            run ${SC}/small.yaml -o csv-missing-dir.h5 --csv no-such-dir)
-rs_cli_script(run_csv_missing_dir_no_file no_output.sh 2 ${SC}/small.yaml --csv no-such-dir)
+# --csv DIR is made as needed (mkdir -p); a path that is a file, or below one, is refused
+# before winding, with nothing written
+rs_cli_script(csv_makes_dir csv_writes.sh ${SC}/small.yaml made/csv)
+rs_cli_test(csv_not_dir 2 [[reelsim: --csv '.*small\.yaml' is not a directory]]
+            run ${SC}/small.yaml -o csv-not-dir.h5 --csv ${SC}/small.yaml)
+rs_cli_script(run_csv_not_dir_no_file no_output.sh 2 ${SC}/small.yaml --csv ${SC}/small.yaml)
+rs_cli_script(run_csv_below_file_no_file no_output.sh 2 ${SC}/small.yaml --csv ${SC}/small.yaml/csv)
 rs_cli_test(csv_check_refused 2 [[reelsim: check: --csv only applies to run]]
             check ${SC}/small.yaml --csv .)
 
