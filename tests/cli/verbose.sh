@@ -23,7 +23,7 @@ check() { # STATUS MESSAGE-REGEX -- ARGS...
   done
 }
 
-check 3 'reelsim: solver failure: winding layers 1-1 of 200' -- \
+check 3 'reelsim: solver failure: winding layers 2-2 of 200' -- \
   run "$sc/small.yaml" --set numerics.max_steps=2 -o "$tmp/a.h5"
 check 1 "reelsim: i/o error: cannot create output file '$tmp/no/a\.h5'" -- \
   run "$sc/small.yaml" -o "$tmp/no/a.h5"
