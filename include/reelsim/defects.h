@@ -10,9 +10,8 @@
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef enum rs_defect_verdict {
   RS_DEFECT_NOT_ASSESSED, /* the rule lacks an input it needs (a limit not given, no layers) */
@@ -104,7 +103,5 @@ double rs_defect_critical_hoop_stress(double E_theta, double E_r);
  * before the layers slip:  M_f = mu P (2 pi r) r  (no capacity when P <= 0). */
 double rs_defect_slip_capacity(double mu, double P, double r);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -9,9 +9,8 @@
 #include "reelsim/study.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* Writes the result to `path`: first to a temporary name beside it, renamed onto
  * `path` only when complete, so a failed run never leaves a file that looks whole. */
@@ -59,7 +58,5 @@ void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t 
 rs_status rs_output_write_study(const char *path, const rs_scene *scene, const rs_study_report *rep);
 rs_status rs_output_write_study_csv(const char *path, const rs_study_report *rep);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -15,9 +15,8 @@
 #include "reelsim/status.h"
 #include "reelsim/study.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_plot_options {
   const char *gnuplot; /* program to run; NULL: "gnuplot" from PATH */
@@ -41,7 +40,5 @@ void rs_plot_list_free(char ***list, int n);
 rs_status rs_plot_study(const rs_study_report *rep, const char *title, const char *png,
                         const rs_plot_options *opts);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -15,9 +15,8 @@
 #include "reelsim/material.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_roll rs_roll;
 
@@ -105,7 +104,5 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *state);
 /* Restores a state saved from this roll (same parameters). */
 rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *state);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -13,9 +13,8 @@
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* ---- the Pareto front ----------------------------------------------------------------- */
 
@@ -190,7 +189,5 @@ void rs_study_report_free(rs_study_report *rep);
  * (and finite, positive x and error). Returns NAN with fewer than two such points. */
 double rs_study_order(int n, const double *x, const double *error, double floor);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -113,7 +113,7 @@ rs_cli_test(check_resolved 0 [[^  source: .*models/newsprint\.yaml$]]
 # scripts: tests/cli/<script>.sh REELSIM ...
 function(rs_cli_script name script)
   add_test(NAME cli.${name}
-           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script} $<TARGET_FILE:reelsim> ${ARGN}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script} $<TARGET_FILE:reelsim_cli> ${ARGN}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 300)
 endfunction()

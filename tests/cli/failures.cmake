@@ -3,7 +3,7 @@
 # fails.sh REELSIM STATUS REGEX... -- ARGS (also: no NaN/Inf printed, nothing written).
 function(rs_cli_fails name status)
   add_test(NAME cli.${name}
-           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/fails.sh $<TARGET_FILE:reelsim> ${status}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/fails.sh $<TARGET_FILE:reelsim_cli> ${status}
                    ${ARGN}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 300 SKIP_RETURN_CODE 77)
