@@ -9,14 +9,11 @@
 #ifndef REELSIM_CLOCK_H
 #define REELSIM_CLOCK_H
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 double rs_clock_wall(void);
 double rs_clock_thread_cpu(void);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -9,9 +9,10 @@
 #ifndef REELSIM_REELSIM_H
 #define REELSIM_REELSIM_H
 
-/* base: status and the error record, the version */
+/* base: status and the error record, the version, clocks */
 #include "reelsim/status.h"
 #include "reelsim/version.h"
+#include "reelsim/clock.h"
 
 /* materials, recipes, the sheet, the cylinder */
 #include "reelsim/core.h"
