@@ -25,7 +25,7 @@ static double now(void) { return clock_s(CLOCK_MONOTONIC); }
 static double wind(const rs_scene *scene, int k, int threads, double *cpu)
 {
   rs_reel_job *jobs = calloc((size_t)k, sizeof *jobs);
-  for (int i = 0; i < k; ++i) jobs[i].scene = scene;
+  for (int i = 0; i < k; ++i) jobs[i].problem = rs_scene_problem(scene);
   int used = 0;
   double t0 = now(), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
   rs_reel_wind_many(k, jobs, threads, &used);
@@ -63,7 +63,7 @@ int main(int argc, char **argv)
     if (d1 < best1) best1 = d1, cpu1 = s1;
     if (dT < bestT) bestT = dT, cpuT = sT;
   }
-  printf("%s, %d copies of %d layers\n", scene->title, k, scene->n_layers);
+  printf("%s, %d copies of %d layers\n", rs_scene_title(scene), k, rs_scene_problem(scene)->n_layers);
   printf("best: 1 thread %.3f s, %d threads %.3f s, speed-up %.2f\n", best1, t, bestT,
          best1 / bestT);
   printf("cpu time: %.3f s and %.3f s (ratio %.2f)\n", cpu1, cpuT, cpuT / cpu1);

@@ -11,8 +11,9 @@
 #include <hdf5.h>
 
 #include "output/h5_util.h"
-#include "output/staging.h"
+#include "util/atomic_file.h"
 #include "reelsim/output.h"
+#include "scene/scene_type.h" /* a scene filled by hand */
 
 static double now(void)
 {
@@ -89,7 +90,7 @@ int main(int argc, char **argv)
       return 1;
     }
     H5Fclose(f);
-    if (rs_staging_write(path, img, bytes) != RS_OK) return 1;
+    if (rs_atomic_file_write(path, img, bytes) != RS_OK) return 1;
     free(img);
     t = now() - t;
     if (t < best) best = t;

@@ -22,7 +22,7 @@ static int run(const char *scene, int n_sets, const char **sets, const char *lab
   rs_reel_result *res = NULL;
   double t0 = now();
   rs_status st = rs_scene_load(scene, n_sets, sets, &sc);
-  if (st == RS_OK) st = rs_reel_wind(sc, NULL, &res);
+  if (st == RS_OK) st = rs_scene_wind(sc, NULL, &res);
   double dt = now() - t0;
   if (st != RS_OK) {
     fprintf(stderr, "%s: %s\n", label, rs_error_message());

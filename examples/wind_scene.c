@@ -16,7 +16,7 @@ int main(int argc, char **argv)
   rs_reel_result *result = NULL;
   rs_reel_options opts = {0}; /* no progress callback */
   rs_status st = rs_scene_load(argv[1], argc - 2, (const char *const *)argv + 2, &scene);
-  if (st == RS_OK) st = rs_reel_wind(scene, &opts, &result);
+  if (st == RS_OK) st = rs_scene_wind(scene, &opts, &result);
   if (st == RS_OK)
     printf("%d layers, core pressure %.1f Pa\n", result->n_layers, result->core_pressure);
   else

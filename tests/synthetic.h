@@ -11,6 +11,7 @@
 
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 #include "scratch.h" /* scratch_dir, scratch_join, ... for the files these tests write */
 
 static inline rs_scene *syn_scene(const char *path, const char *title)
@@ -18,8 +19,8 @@ static inline rs_scene *syn_scene(const char *path, const char *title)
   rs_scene *s = calloc(1, sizeof *s);
   snprintf(s->path, sizeof s->path, "%s", path);
   snprintf(s->title, sizeof s->title, "%s", title);
-  s->core.radius = 0.05;
-  s->n_layers = 200;
+  s->problem.core.radius = 0.05;
+  s->problem.n_layers = 200;
   s->resolved_text = strdup("title: synthetic\n");
   return s;
 }

@@ -6,8 +6,8 @@
 #define REELSIM_DEFECTS_H
 
 #include "reelsim/material.h"
+#include "reelsim/problem.h"
 #include "reelsim/reel.h"
-#include "reelsim/scene.h"
 #include "reelsim/status.h"
 
 #include "reelsim/export.h"
@@ -34,10 +34,10 @@ typedef struct rs_defect_limits {
   const rs_radial_law *radial; /* the stack's radial modulus law E_r(P), prepared */
 } rs_defect_limits;
 
-/* The scene's optional keys (material.pressure_limit, core.rating, winding.accel_torque,
- * material.friction_layer) and its material's E_theta and radial law (lim->radial points
- * into the scene, which must outlive the assessment). */
-void rs_defect_limits_from_scene(const rs_scene *scene, rs_defect_limits *lim);
+/* The problem's optional figures (a scene's keys material.pressure_limit, core.rating,
+ * winding.accel_torque, material.friction_layer) and its material's E_theta and radial law
+ * (lim->radial points into the problem, which must outlive the assessment). */
+void rs_defect_limits_from_problem(const rs_problem *problem, rs_defect_limits *lim);
 
 /* Consecutive layers first..last (0-based, inclusive) flagged by a rule, and the outer
  * radii of those two layers (m). */

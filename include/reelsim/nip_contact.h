@@ -37,7 +37,6 @@
 #include "reelsim/cylinder.h"
 #include "reelsim/material.h"
 #include "reelsim/nip.h"
-#include "reelsim/scene.h"
 #include "reelsim/sheet.h"
 #include "reelsim/status.h"
 
@@ -128,9 +127,9 @@ rs_status rs_nip_contact_solve_width(rs_nip_contact *nc, double a, double Ti, rs
  * up to 0.2 min(R1, R2) carries P, or (surface winders) if mu_drum P <= (1 - share) Ti. */
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out);
 
-/* ---- from a scene: material + nip spec ------------------------------------------------ */
+/* ---- from a nip spec and the material ------------------------------------------------ */
 
-/* Builds the contact model from the scene's nip spec and material (the drum, the sheet
+/* Builds the contact model from a nip spec and the material (the drum, the sheet
  * constants, friction, winder); the roll is set per call by rs_nip_contact_solve_state. */
 rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_material *mat,
                                           rs_nip_contact **out);

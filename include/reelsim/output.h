@@ -6,7 +6,6 @@
 
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
-#include "reelsim/study.h"
 #include "reelsim/status.h"
 
 #include "reelsim/export.h"
@@ -49,14 +48,6 @@ rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *
  * extension>", the number zero-padded to the width of n ("01-rider" .. "12-taper") so
  * that the groups sort in run order. */
 void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size);
-
-/* The accuracy study (reelsim study, docs/accuracy.md): every run's settings, time, key
- * figures and errors against the reference, as /study/runs/<column> datasets with the
- * reference's uncertainty, the observed orders per knob (/study/orders) and the base scene
- * (docs/output.md, "Study files"); and the same columns as CSV, one row per run. Both
- * staged like rs_output_write. */
-rs_status rs_output_write_study(const char *path, const rs_scene *scene, const rs_study_report *rep);
-rs_status rs_output_write_study_csv(const char *path, const rs_study_report *rep);
 
 RS_END_DECLS
 #endif

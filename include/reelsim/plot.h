@@ -13,7 +13,6 @@
 #define REELSIM_PLOT_H
 
 #include "reelsim/status.h"
-#include "reelsim/study.h"
 
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
@@ -32,13 +31,6 @@ typedef struct rs_plot_options {
 rs_status rs_plot_file(const char *file, const char *dir, const rs_plot_options *opts,
                        char ***written, int *n_written);
 void rs_plot_list_free(char ***list, int n);
-
-/* The accuracy study's picture (reelsim study): the largest relative error of each run
- * against its time (CPU time of its thread), log-log, one colour per knob, the Pareto front as a staircase with
- * its runs named, the shipped defaults and the reference marked, the reference's
- * uncertainty and 0.1 % as dashed lines. Written to `png`, staged. Errors as rs_plot_file. */
-rs_status rs_plot_study(const rs_study_report *rep, const char *title, const char *png,
-                        const rs_plot_options *opts);
 
 RS_END_DECLS
 #endif

@@ -2,7 +2,7 @@
 #ifndef REELSIM_REEL_H
 #define REELSIM_REEL_H
 
-#include "reelsim/scene.h"
+#include "reelsim/problem.h"
 #include "reelsim/status.h"
 
 #include "reelsim/export.h"
@@ -23,7 +23,7 @@ typedef struct rs_reel_result {
   long increments, cvode_steps, rhs_evals;
   long full_integrations;    /* increments integrated from the core (numerics.reuse) */
   double wall_seconds;
-  /* Stress history, when the scene's output.history_every > 0 (else n_stages = 0 and
+  /* Stress history, when the problem's record.history_every > 0 (else n_stages = 0 and
    * the arrays are NULL). Stage s is the roll after stage_layers[s] layers: stored at
    * the first increment boundary at or after each multiple of history_every, and the
    * last stage is always the final state. The stage arrays are n_stages x n_layers,
@@ -33,7 +33,7 @@ typedef struct rs_reel_result {
   double *stage_radius;      /* m, outer radius of the roll at each stage */
   double *stage_sigma_r;     /* Pa, compression negative */
   double *stage_sigma_theta; /* Pa, compression negative */
-  /* The nip record (a scene with a nip): one entry per nip solve the reel kept, in the
+  /* The nip record (a problem with a nip): one entry per nip solve the reel kept, in the
    * order of winding. Solves whose prediction was rejected (adaptive) are counted, not kept. */
   int n_nip;
   double *nip_radius;        /* m, roll radius at the solve */
@@ -44,7 +44,7 @@ typedef struct rs_reel_result {
   int *nip_iterations;       /* stick/slip iterations */
   long nip_solves;           /* all nip solves, rejected ones included */
   long nip_rejected;         /* adaptive: rewinds after a failed prediction */
-  /* Full contact distributions at output.nip_profiles_at (contact model only). */
+  /* Full contact distributions at record.nip_profiles_at (contact model only). */
   int n_profiles;
   double *profile_radius;    /* m, roll radius of each profile */
   struct rs_nip_solution *profiles;
@@ -60,9 +60,11 @@ typedef struct rs_reel_options {
   void *user;
 } rs_reel_options;
 
-/* Winds the scene's reel. On a solver failure *out still holds the layers finished
- * (n_layers counts them) and the error record says where it stopped. Caller owns *out. */
-rs_status rs_reel_wind(const rs_scene *scene, const rs_reel_options *opts, rs_reel_result **out);
+/* Winds the problem's reel (a loaded scene: rs_scene_wind). On a solver failure *out still
+ * holds the layers finished (n_layers counts them) and the error record says where it
+ * stopped. Caller owns *out. */
+rs_status rs_reel_wind(const rs_problem *problem, const rs_reel_options *opts,
+                       rs_reel_result **out);
 void rs_reel_result_destroy(rs_reel_result **res);
 
 /* Summary figures a user reads first. */
@@ -83,11 +85,11 @@ void rs_reel_summarize(const rs_reel_result *res, rs_reel_summary *sum);
  * that is not ("peak pressure"): a figure a user reads must be a number. */
 int rs_reel_summary_finite(const rs_reel_summary *sum, const char **what);
 
-/* Several reels wound at once (reelsim compare). A job is one rs_reel_wind: the scene
+/* Several reels wound at once (reelsim compare). A job is one rs_reel_wind: the problem
  * and options go in; the result (the caller's, as rs_reel_wind's *out), the status and a
  * copy of the job's error record come out. */
 typedef struct rs_reel_job {
-  const rs_scene *scene;
+  const rs_problem *problem;
   rs_reel_options opts;      /* progress is called on the job's worker thread */
   rs_reel_result *result;
   rs_status status;

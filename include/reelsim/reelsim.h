@@ -26,7 +26,8 @@
 #include "reelsim/nip.h"
 #include "reelsim/nip_contact.h"
 
-/* the reel: winds a problem (reelsim/problem.h goes here, before reel.h) */
+/* the reel: winds a problem */
+#include "reelsim/problem.h"
 #include "reelsim/reel.h"
 #include "reelsim/defects.h"
 

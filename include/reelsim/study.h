@@ -5,10 +5,12 @@
  * shipped defaults, each knob alone at coarser (and finer) settings than the default, and
  * a small grid of combinations. Each run is the scene with "key=value" overrides, so each
  * is a normal scene. This module plans the runs, measures their errors against the
- * reference and finds the Pareto front of (time, error); it does no I/O and no winding. */
+ * reference and finds the Pareto front of (time, error), and writes the study's files and
+ * picture (rs_study_write, rs_study_write_csv, rs_study_plot); it does no winding. */
 #ifndef REELSIM_STUDY_H
 #define REELSIM_STUDY_H
 
+#include "reelsim/plot.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
@@ -182,6 +184,22 @@ rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *cons
                            const double *wall, const double *cpu, double caliper,
                            rs_study_report *rep);
 void rs_study_report_free(rs_study_report *rep);
+
+/* ---- the study's files and picture ------------------------------------------------------ */
+
+/* Every run's settings, time, key figures and errors against the reference, as
+ * /study/runs/<column> datasets with the reference's uncertainty, the observed orders per
+ * knob (/study/orders) and the base scene (docs/output.md, "Study files"); and the same
+ * columns as CSV, one row per run. Both staged (temporary + rename) like rs_output_write. */
+rs_status rs_study_write(const char *path, const rs_scene *scene, const rs_study_report *rep);
+rs_status rs_study_write_csv(const char *path, const rs_study_report *rep);
+
+/* The study's picture: the largest relative error of each run against its time (CPU time
+ * of its thread), log-log, one colour per knob, the Pareto front as a staircase with its
+ * runs named, the shipped defaults and the reference marked, the reference's uncertainty
+ * and 0.1 % as dashed lines. Written to `png`, staged. Errors as rs_plot_file. */
+rs_status rs_study_plot(const rs_study_report *rep, const char *title, const char *png,
+                        const rs_plot_options *opts);
 
 /* ---- convergence order ------------------------------------------------------------------ */
 

@@ -10,11 +10,11 @@ int cli_check(const cli_args *a)
   rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) return cli_fail_status(st);
   if (!a->quiet) {
-    printf("%s\n", scene->title);
-    printf("scene %s: ok\n", scene->path);
+    printf("%s\n", rs_scene_title(scene));
+    printf("scene %s: ok\n", rs_scene_path(scene));
     printf("active effects:\n");
     rs_scene_print_effects(scene, stdout);
-    printf("\nresolved scene:\n%s", scene->resolved_text);
+    printf("\nresolved scene:\n%s", rs_scene_resolved_text(scene));
   }
   rs_scene_destroy(&scene);
   return CLI_EXIT_OK;

@@ -60,7 +60,7 @@ static void print_table(const compare_state *c, double wall, int threads)
 {
   printf("compare: %d scene%s on %d thread%s\n", c->n, c->n == 1 ? "" : "s", threads,
          threads == 1 ? "" : "s");
-  for (int i = 0; i < c->n; ++i) printf("  %-24s %s\n", c->names[i], c->scenes[i]->title);
+  for (int i = 0; i < c->n; ++i) printf("  %-24s %s\n", c->names[i], rs_scene_title(c->scenes[i]));
   printf("\n%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "run", "layers", "final r",
          "core P", "peak P", "at r", "min hoop", "at r", "wound-on T0", "wall");
   printf("%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "", "", "mm", "kPa", "kPa", "mm",
@@ -98,15 +98,15 @@ static int check_jobs(compare_state *c)
     }
     int k = rs_status_exit_code(job->status);
     if (job->status == RS_ERR_INPUT)
-      cli_fail(k, "%s: %s", c->scenes[i]->path, job->message);
+      cli_fail(k, "%s: %s", rs_scene_path(c->scenes[i]), job->message);
     else if (job->status == RS_ERR_SOLVER)
-      cli_fail(k, "%s: solver failure: %s", c->scenes[i]->path, job->message);
+      cli_fail(k, "%s: solver failure: %s", rs_scene_path(c->scenes[i]), job->message);
     else
-      cli_fail(k, "%s: %s: %s", c->scenes[i]->path, rs_status_name(job->status), job->message);
+      cli_fail(k, "%s: %s: %s", rs_scene_path(c->scenes[i]), rs_status_name(job->status), job->message);
     if (cli_fail_is_verbose() && job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
     if (job->result && job->status == RS_ERR_SOLVER)
       fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
-              c->scenes[i]->n_layers);
+              rs_scene_problem(c->scenes[i])->n_layers);
     if (code == CLI_EXIT_OK || k == CLI_EXIT_USAGE) code = k;
   }
   return code;
@@ -164,9 +164,9 @@ int cli_compare(const cli_args *a)
   }
 
   for (int i = 0; i < c.n; ++i) {
-    c.jobs[i].scene = c.scenes[i];
+    c.jobs[i].problem = rs_scene_problem(c.scenes[i]);
     c.jobs[i].opts.progress = on_progress;
-    rs_output_run_name(i, c.n, c.scenes[i]->path, c.names[i], sizeof c.names[i]);
+    rs_output_run_name(i, c.n, rs_scene_path(c.scenes[i]), c.names[i], sizeof c.names[i]);
   }
   if ((st = rs_reel_wind_many(c.n, c.jobs, 0, &threads)) != RS_OK) {
     code = cli_fail_status(st);

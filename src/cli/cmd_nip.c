@@ -40,21 +40,22 @@ int cli_nip(const cli_args *a)
   rs_scene *scene = NULL;
   rs_status st = rs_scene_load(scene_path, a->n_sets, a->sets, &scene);
   if (st) return cli_fail_status(st);
-  if (scene->nip.model != RS_NIP_CONTACT) {
+  const rs_problem *pb = rs_scene_problem(scene);
+  if (pb->nip.model != RS_NIP_CONTACT) {
     rs_scene_destroy(&scene);
     return cli_fail(CLI_EXIT_USAGE, "%s: nip.model: 'reelsim nip' needs nip.model: contact", scene_path);
   }
-  if (!(R > scene->core.radius)) {
-    double rc = scene->core.radius;
+  if (!(R > pb->core.radius)) {
+    double rc = pb->core.radius;
     rs_scene_destroy(&scene);
     return cli_fail(CLI_EXIT_USAGE, "nip: --radius %g m must exceed the core radius %g m", R, rc);
   }
   rs_nip_contact *nc = NULL;
   rs_nip_solution sol = {0};
-  rs_nip_state ns = {R, scene->core.radius, rs_recipe_eval(&scene->tension, R),
-                     rs_recipe_eval(&scene->nip.load, R), 0.0, 0.0};
-  ns.surface_modulus = rs_radial_modulus(&scene->material.radial, 0.0);
-  st = rs_nip_contact_create_from_spec(&scene->nip, &scene->material, &nc);
+  rs_nip_state ns = {R, pb->core.radius, rs_recipe_eval(&pb->tension, R),
+                     rs_recipe_eval(&pb->nip.load, R), 0.0, 0.0};
+  ns.surface_modulus = rs_radial_modulus(&pb->material.radial, 0.0);
+  st = rs_nip_contact_create_from_spec(&pb->nip, &pb->material, &nc);
   if (!st) st = rs_nip_contact_solve_state(nc, &ns, &sol);
   if (st) {
     rs_error_wrap("%s", scene_path);
@@ -69,7 +70,7 @@ int cli_nip(const cli_args *a)
            "\"NIT\":%.17g,\"xi2\":%.17g,\"delta0\":%.17g,\"eps0\":%.17g,\"E_r\":%.17g,"
            "\"iterations\":%d,\"width_iterations\":%d,\"total_solves\":%d,"
            "\"condition_number\":%.17g,\"dissipation\":%.17g,\"nodes\":%d",
-           R, winder_name(scene->nip.winder), sol.a, sol.load, sol.Ti, sol.T0, sol.T0 - sol.Ti,
+           R, winder_name(pb->nip.winder), sol.a, sol.load, sol.Ti, sol.T0, sol.T0 - sol.Ti,
            sol.xi2, sol.delta0, sol.eps0, sol.E_r, sol.iterations, sol.width_iterations,
            sol.total_solves, sol.condition_number, sol.dissipation, M);
     json_array("x", sol.x, M);
@@ -86,12 +87,12 @@ int cli_nip(const cli_args *a)
       su += sol.slip_upper[e];
       sl += sol.slip_lower[e];
     }
-    printf("nip at roll radius %g m (%s winder, M = %d)\n", R, winder_name(scene->nip.winder), M);
+    printf("nip at roll radius %g m (%s winder, M = %d)\n", R, winder_name(pb->nip.winder), M);
     printf("  half-width a        %.6g mm\n", sol.a * 1e3);
     printf("  load P              %.6g N/m\n", sol.load);
     printf("  web tension Ti      %.6g N/m\n", sol.Ti);
     printf("  wound-on tension T0 %.6g N/m (NIT = %.6g N/m, mu_roll P = %.6g N/m)\n", sol.T0,
-           sol.T0 - sol.Ti, scene->nip.mu_roll * sol.load);
+           sol.T0 - sol.Ti, pb->nip.mu_roll * sol.load);
     printf("  peak pressure       %.6g Pa\n", sol.pressure[M / 2]);
     printf("  roll E_r (secant)   %.6g Pa\n", sol.E_r);
     printf("  slip elements       roll %d / %d, drum %d / %d\n", su, E, sl, E);

@@ -26,7 +26,6 @@
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
-#include "util/path_stem.h"
 
 typedef struct progress {
   int done, total;
@@ -80,7 +79,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const char *csv_dir, double wall)
 {
   char a[64], b[64];
-  printf("%s\n", scene->title);
+  printf("%s\n", rs_scene_title(scene));
   printf("active effects:\n");
   rs_scene_print_effects(scene, stdout);
   printf("result:\n");
@@ -96,10 +95,10 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("  wall time          %.2f s (solver %.2f s, %ld increments, %ld from the core, %ld CVODE "
          "steps)\n",
          wall, res->wall_seconds, res->increments, res->full_integrations, res->cvode_steps);
-  printf("  output             %s\n", scene->output.file);
+  printf("  output             %s\n", rs_scene_output_file(scene));
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
-    rs_path_stem(scene->path, stem, sizeof stem);
+    rs_scene_name(scene, stem, sizeof stem);
     if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
@@ -120,7 +119,7 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
             what);
     return 0;
   }
-  if (rs_output_write(scene->output.file, scene, res) != RS_OK) {
+  if (rs_output_write(rs_scene_output_file(scene), scene, res) != RS_OK) {
     fprintf(stderr, "reelsim:   --keep-partial: %s\n", rs_error_message());
     return 0;
   }
@@ -145,35 +144,35 @@ int cli_run(const cli_args *a)
     goto done;
   }
 
-  progress prog = {.total = scene->n_layers,
+  progress prog = {.total = rs_scene_problem(scene)->n_layers,
                    .bar = !a->quiet && isatty(STDERR_FILENO),
                    .t_start = t0};
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
-  st = rs_reel_wind(scene, &opts, &res);
+  st = rs_scene_wind(scene, &opts, &res);
   progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
     const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
-               scene->n_layers, scene->output.file);
+               rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
     else
-      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, scene->n_layers);
+      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, rs_scene_problem(scene)->n_layers);
     code = cli_signal_exit_code(sig);
     goto done;
   }
   if (st != RS_OK) {
-    if (st == RS_ERR_INPUT) rs_error_wrap("%s", scene->path); /* e.g. a nip model not built */
+    if (st == RS_ERR_INPUT) rs_error_wrap("%s", rs_scene_path(scene)); /* e.g. a nip model not built */
     code = cli_fail_status(st);
     if (res && st == RS_ERR_SOLVER) {
       if (a->keep_partial && write_partial(scene, res))
         fprintf(stderr,
                 "reelsim:   %d of %d layers were wound; partial result written to %s "
                 "(complete = 0)\n",
-                res->n_layers, scene->n_layers, scene->output.file);
+                res->n_layers, rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
       else
         fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
-                res->n_layers, scene->n_layers);
+                res->n_layers, rs_scene_problem(scene)->n_layers);
     }
     goto done;
   }
@@ -188,9 +187,9 @@ int cli_run(const cli_args *a)
   }
 
   rs_defect_limits limits;
-  rs_defect_limits_from_scene(scene, &limits);
+  rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
   st = rs_defects_assess(res, &limits, &defects);
-  if (st == RS_OK) st = rs_output_write(scene->output.file, scene, res);
+  if (st == RS_OK) st = rs_output_write(rs_scene_output_file(scene), scene, res);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
     cli_outdir made;
@@ -198,7 +197,7 @@ int cli_run(const cli_args *a)
       cli_outdir_undo(&made);
       goto done;
     }
-    rs_path_stem(scene->path, stem, sizeof stem);
+    rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv(a->csv_dir, stem, res);
     if (st != RS_OK) cli_outdir_undo(&made);
     else cli_outdir_free(&made);

@@ -23,7 +23,6 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/study.h"
-#include "util/path_stem.h"
 
 static const char DIR_LABEL[] = "study: output directory";
 
@@ -202,7 +201,7 @@ int cli_study(const cli_args *a)
       goto done;
     }
   }
-  rs_path_stem(a->scene, name, sizeof name);
+  rs_scene_name(base, name, sizeof name);
   if (a->output) snprintf(dir, sizeof dir, "%s", a->output);
   else snprintf(dir, sizeof dir, "study-%s", name);
   /* checked now, made when there is something to write: an interrupted or failed study
@@ -210,12 +209,12 @@ int cli_study(const cli_args *a)
   if ((code = cli_outdir_check(DIR_LABEL, dir)) != CLI_EXIT_OK) goto done;
 
   if (!a->quiet) {
-    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, base->title,
-           base->n_layers, n, a->quick ? " (quick)" : "", a->jobs);
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, rs_scene_title(base),
+           rs_scene_problem(base)->n_layers, n, a->quick ? " (quick)" : "", a->jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
-    jobs[i].scene = scenes[i];
+    jobs[i].problem = rs_scene_problem(scenes[i]);
     jobs[i].opts.progress = on_progress;
   }
   for (int first = 0; first < n; first += a->jobs) {
@@ -249,7 +248,7 @@ int cli_study(const cli_args *a)
     }
   }
 
-  if ((st = rs_study_analyze(plan, results, wall, cpu, base->material.caliper, &rep)) != RS_OK) {
+  if ((st = rs_study_analyze(plan, results, wall, cpu, rs_scene_problem(base)->material.caliper, &rep)) != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
@@ -259,17 +258,17 @@ int cli_study(const cli_args *a)
   }
   if ((code = cli_outdir_make(DIR_LABEL, dir, &made)) != CLI_EXIT_OK) goto done;
   snprintf(path, sizeof path, "%s/study.h5", dir);
-  st = rs_output_write_study(path, base, &rep);
+  st = rs_study_write(path, base, &rep);
   if (st == RS_OK) {
     snprintf(path, sizeof path, "%s/study.csv", dir);
-    st = rs_output_write_study_csv(path, &rep);
+    st = rs_study_write_csv(path, &rep);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
   snprintf(path, sizeof path, "%s/study.png", dir);
-  st = rs_plot_study(&rep, base->title, path, NULL);
+  st = rs_study_plot(&rep, rs_scene_title(base), path, NULL);
   if (st != RS_OK) {
     code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
                     rs_error_message());

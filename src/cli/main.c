@@ -4,7 +4,7 @@
 
 #include "cli/cli.h"
 #include "cli/usage.h"
-#include "reelsim_version.h"
+#include "reelsim/version.h"
 
 typedef int (*command_fn)(const cli_args *a);
 

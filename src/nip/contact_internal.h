@@ -15,6 +15,13 @@
  * evaluated at the node (HAT, shift -dx/2). */
 enum { KP, KQU, KQE, NKER };
 
+/* The unknowns' columns and the stick/slip rows of the system (contact_solve.c), for M
+ * nodes in scope: pressure p_j (j = 1..M-2), traction q_k,e (k 0 roll, 1 drum; element e),
+ * stick/slip row of contact k at element e. */
+#define COL_P(j) ((j) - 1)
+#define COL_Q(k, e) ((M - 2) + (k) * (M - 1) + (e))
+#define ROW_STICK(k, e) (M + (k) * (M - 1) + (e))
+
 /* contact_linear.c: the kept factorization and the Krylov solver refining from it */
 typedef struct rs_nipc_lin {
   double *LU;             /* n x n, equilibrated and factored (dgetrf) */
@@ -74,13 +81,13 @@ struct rs_nip_contact {
   rs_nip_spec spec;
 };
 
-/* contact_kernels.c: the eight kernel arrays for half-width a (cached). */
+/* contact.c: the eight kernel arrays for half-width a (cached). */
 rs_status rs_nipc_kernels(rs_nip_contact *nc, double a);
 
 /* contact_solve.c: the stick/slip iteration at a fixed half-width; fills out. */
 rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_solution *out);
 
-/* contact_solve.c: physical scales of the unknowns (col) and rows (row) at half-width a. */
+/* contact_assemble.c: physical scales of the unknowns (col) and rows (row) at half-width a. */
 void rs_nipc_scales(const rs_nip_contact *nc, double a, double *col, double *row);
 
 /* contact_linear.c: see there. */
@@ -90,7 +97,7 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
 rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
 
-/* contact_solve.c: assembles A z = rhs for the active set in nc->state. */
+/* contact_assemble.c: assembles A z = rhs for the active set in nc->state. */
 void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);
 
 /* contact_lcp.c: the stick/slip LCP at half-width a by Lemke's method; the active set of

@@ -21,9 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define COL_P(j) ((j) - 1)
-#define COL_Q(k, e) ((M - 2) + (k) * (M - 1) + (e))
-
 /* pbar_e and q_ke of a vector y of unknowns */
 static double pbar_of(int M, const double *y, int e)
 {

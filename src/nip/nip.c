@@ -1,8 +1,8 @@
-/* The nip seam: a handle around one wound-on-tension model (see reelsim/nip.h). */
+/* The nip seam: a handle around one wound-on-tension model (see reelsim/nip.h). The models
+ * (nip_friction.c, contact_model.c) wrap themselves in it; nip_create.c picks one. */
 #include <stdlib.h>
 
 #include "reelsim/nip.h"
-#include "reelsim/nip_contact.h"
 
 struct rs_nip {
   const rs_nip_ops *ops;
@@ -48,15 +48,4 @@ void rs_nip_get_report(const rs_nip *nip, rs_nip_report *rep)
 const struct rs_nip_solution *rs_nip_last_solution(const rs_nip *nip)
 {
   return nip && nip->ops->solution ? nip->ops->solution(nip->ctx) : NULL;
-}
-
-rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out)
-{
-  *out = NULL;
-  switch (spec->model) {
-  case RS_NIP_NONE: return RS_OK; /* no nip, no nip code */
-  case RS_NIP_FRICTION: return rs_nip_friction_create(spec->mu_roll, out);
-  case RS_NIP_CONTACT: return rs_nip_contact_nip_create(spec, material, out);
-  }
-  return RS_ERROR(RS_ERR_INPUT, "nip.model: unknown model %d", (int)spec->model);
 }

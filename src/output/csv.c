@@ -1,7 +1,7 @@
 /* CSV export of a wound reel (docs/output.md, "CSV files"): the final profile and the
  * wound-on tension per layer, one header line, numbers to 17 significant digits so that
  * reading them back gives the same doubles. Both files are built in memory and staged
- * (staging.h): each is whole or absent, never half-written. */
+ * (util/atomic_file.h): each is whole or absent, never half-written. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "output/staging.h"
+#include "util/atomic_file.h"
 #include "reelsim/output.h"
 
 rs_status rs_output_check_csv_dir(const char *dir)
@@ -83,18 +83,18 @@ rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_r
   rs_status st = rs_output_check_csv_dir(dir);
   for (int i = 0; st == RS_OK && i < N_FILES; ++i) {
     st = rs_output_csv_path(dir, name, which[i], path[i], sizeof path[i]);
-    if (st == RS_OK) st = rs_staging_check_target(path[i]);
+    if (st == RS_OK) st = rs_atomic_file_check_target(path[i]);
   }
   for (int i = 0; st == RS_OK && i < N_FILES; ++i)
     st = build[i](res, &text[i]);
   /* every file to its temporary first, then the renames: a failure before the renames
    * leaves nothing new; only a failing rename (almost never) can leave the first alone */
   for (int i = 0; st == RS_OK && i < N_FILES; ++i)
-    st = rs_staging_prepare(path[i], text[i].text, text[i].size, &tmp[i]);
+    st = rs_atomic_file_prepare(path[i], text[i].text, text[i].size, &tmp[i]);
   for (int i = 0; st == RS_OK && i < N_FILES; ++i)
-    st = rs_staging_commit(path[i], &tmp[i]);
+    st = rs_atomic_file_commit(path[i], &tmp[i]);
   for (int i = 0; i < N_FILES; ++i) {
-    rs_staging_abort(&tmp[i]);
+    rs_atomic_file_abort(&tmp[i]);
     free(text[i].text);
   }
   return st;

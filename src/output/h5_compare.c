@@ -82,8 +82,8 @@ static rs_status write_summary(hid_t file, const compare_ctx *c)
     for (int f = 0; f < N_FIGURES; ++f) col[f * n + i] = v[f];
     layers[i] = s.layers;
     group[i] = c->names[i];
-    scene[i] = c->runs[i].scene->path;
-    title[i] = c->runs[i].scene->title;
+    scene[i] = rs_scene_path(c->runs[i].scene);
+    title[i] = rs_scene_title(c->runs[i].scene);
   }
   if ((st = rs_h5_group_create(file, "summary", &g)) != RS_OK) goto done;
   st = rs_h5_write_1d_strings(g, "run", group, n, "group of each run under /runs, in run order");
@@ -127,7 +127,7 @@ rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *
   compare_ctx c = {n, runs, malloc((size_t)n * sizeof *c.names)};
   if (!c.names) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %d run names", n);
   for (int i = 0; i < n; ++i)
-    rs_output_run_name(i, n, runs[i].scene->path, c.names[i], sizeof c.names[i]);
+    rs_output_run_name(i, n, rs_scene_path(runs[i].scene), c.names[i], sizeof c.names[i]);
   st = rs_h5_write_staged(path, build_compare, &c);
   free(c.names);
   return st;

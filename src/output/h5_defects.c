@@ -151,7 +151,7 @@ rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_r
 {
   rs_defect_limits lim;
   rs_defect_report *rep = NULL;
-  rs_defect_limits_from_scene(scene, &lim);
+  rs_defect_limits_from_problem(rs_scene_problem(scene), &lim);
   rs_status st = rs_defects_assess(res, &lim, &rep);
   if (st != RS_OK) return st;
   hid_t g;

@@ -24,7 +24,7 @@ rs_status rs_h5_check_result(const rs_reel_result *res);
 typedef rs_status (*rs_h5_build_fn)(hid_t file, const void *ctx);
 
 /* Checks the target, builds the file in memory with `build`, then stages it onto `path`
- * (temporary + rename, staging.h): whole or absent, an older file untouched on failure. */
+ * (temporary + rename, util/atomic_file.h): whole or absent, an older file untouched on failure. */
 rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void *ctx);
 
 #endif

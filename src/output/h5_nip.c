@@ -68,17 +68,17 @@ static rs_status write_profile(hid_t parent, int i, double radius, const rs_nip_
 
 rs_status rs_h5_write_nip(hid_t loc, const rs_scene *scene, const rs_reel_result *res)
 {
-  if (scene->nip.model == RS_NIP_NONE) return RS_OK;
+  if (rs_scene_problem(scene)->nip.model == RS_NIP_NONE) return RS_OK;
   size_t n = (size_t)res->n_nip;
   hid_t g;
   rs_status st = rs_h5_group_create(loc, "nip", &g);
   if (st) return st;
-  const int adaptive = scene->nip.update == RS_NIP_UPDATE_ADAPTIVE;
-  st = rs_h5_attr_string(g, "model", scene->nip.model == RS_NIP_CONTACT ? "contact" : "friction");
+  const int adaptive = rs_scene_problem(scene)->nip.update == RS_NIP_UPDATE_ADAPTIVE;
+  st = rs_h5_attr_string(g, "model", rs_scene_problem(scene)->nip.model == RS_NIP_CONTACT ? "contact" : "friction");
   if (st == RS_OK) st = rs_h5_attr_string(g, "update", adaptive ? "adaptive" : "every");
   if (st == RS_OK)
-    st = adaptive ? rs_h5_attr_double(g, "T0_rtol", scene->nip.T0_rtol)
-                  : rs_h5_attr_int64(g, "update_every", scene->nip.update_every);
+    st = adaptive ? rs_h5_attr_double(g, "T0_rtol", rs_scene_problem(scene)->nip.T0_rtol)
+                  : rs_h5_attr_int64(g, "update_every", rs_scene_problem(scene)->nip.update_every);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "solves", res->nip_solves);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "rejected", res->nip_rejected);
   long long *it = malloc((n ? n : 1) * sizeof *it);

@@ -14,8 +14,8 @@
 #include "output/h5_layout.h"
 #include "output/h5_nip.h"
 #include "output/h5_util.h"
-#include "output/staging.h"
-#include "reelsim_version.h"
+#include "util/atomic_file.h"
+#include "reelsim/version.h"
 
 /* The file records when it was made, in UTC so files from different machines sort. */
 static void iso8601_now(char *buf, size_t len)
@@ -42,15 +42,15 @@ static rs_status write_run_attributes(hid_t loc, const rs_scene *scene, const rs
 {
   int n = res->n_layers;
   /* With nothing wound the reel's outer radius is the core's. */
-  double final_radius = n > 0 ? res->radius[n - 1] : scene->core.radius;
+  double final_radius = n > 0 ? res->radius[n - 1] : rs_scene_problem(scene)->core.radius;
   rs_status st;
-  if ((st = rs_h5_attr_string(loc, "title", scene->title)) != RS_OK) return st;
-  if ((st = rs_h5_attr_string(loc, "scene_file", scene->path)) != RS_OK) return st;
-  if ((st = rs_h5_attr_string(loc, "scene", scene->resolved_text)) != RS_OK) return st;
+  if ((st = rs_h5_attr_string(loc, "title", rs_scene_title(scene))) != RS_OK) return st;
+  if ((st = rs_h5_attr_string(loc, "scene_file", rs_scene_path(scene))) != RS_OK) return st;
+  if ((st = rs_h5_attr_string(loc, "scene", rs_scene_resolved_text(scene))) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "layers", n)) != RS_OK) return st;
-  if ((st = rs_h5_attr_int64(loc, "layers_planned", scene->n_layers)) != RS_OK) return st;
+  if ((st = rs_h5_attr_int64(loc, "layers_planned", rs_scene_problem(scene)->n_layers)) != RS_OK) return st;
   /* 0: a run that stopped early, written on request (reelsim run --keep-partial) */
-  if ((st = rs_h5_attr_int64(loc, "complete", n == scene->n_layers)) != RS_OK) return st;
+  if ((st = rs_h5_attr_int64(loc, "complete", n == rs_scene_problem(scene)->n_layers)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(loc, "final_radius", final_radius)) != RS_OK) return st;
   if ((st = rs_h5_attr_double(loc, "core_pressure", res->core_pressure)) != RS_OK) return st;
   if ((st = rs_h5_attr_int64(loc, "increments", res->increments)) != RS_OK) return st;
@@ -130,7 +130,7 @@ static rs_status write_history(hid_t loc, const rs_scene *scene, const rs_reel_r
     free(layers);
     return st;
   }
-  st = rs_h5_attr_int64(g, "every", scene->output.history_every);
+  st = rs_h5_attr_int64(g, "every", rs_scene_problem(scene)->record.history_every);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "stages", (long long)S);
   if (st == RS_OK)
     st = rs_h5_write_1d(g, "outer_radius", res->stage_radius, S, "m",
@@ -172,7 +172,7 @@ rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result
   rs_status st = write_run_attributes(loc, scene, res);
   if (st == RS_OK) st = write_layers(loc, res);
   if (st == RS_OK) st = write_final(loc, res);
-  if (st == RS_OK && scene->output.history_every > 0) st = write_history(loc, scene, res);
+  if (st == RS_OK && rs_scene_problem(scene)->record.history_every > 0) st = write_history(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_nip(loc, scene, res);
   return st;
@@ -200,7 +200,7 @@ static rs_status build_image(rs_h5_build_fn build, const void *ctx, void **image
 rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void *ctx)
 {
   /* Check the target first: a typo in the directory should not cost the build. */
-  rs_status st = rs_staging_check_target(path);
+  rs_status st = rs_atomic_file_check_target(path);
   if (st != RS_OK) return st;
   void *image = NULL;
   size_t size = 0;
@@ -209,7 +209,7 @@ rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void 
   st = build_image(build, ctx, &image, &size);
   rs_h5_quiet_end(&quiet);
   if (st != RS_OK) return rs_error_wrap("cannot write output file '%s'", path);
-  st = rs_staging_write(path, image, size);
+  st = rs_atomic_file_write(path, image, size);
   free(image);
   return st;
 }
@@ -217,7 +217,7 @@ rs_status rs_h5_write_staged(const char *path, rs_h5_build_fn build, const void 
 rs_status rs_output_check_target(const char *path)
 {
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
-  return rs_staging_check_target(path);
+  return rs_atomic_file_check_target(path);
 }
 
 typedef struct single_run {

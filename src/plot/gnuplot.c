@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "output/staging.h"
+#include "util/atomic_file.h"
 
 extern char **environ;
 
@@ -238,7 +238,7 @@ static rs_status stage_png(const char *png, const char *final_path)
   if (!buf) st = RS_ERROR(RS_ERR_MEMORY, "out of memory for the plot '%s'", final_path);
   else if (bad) st = RS_ERROR(RS_ERR_IO, "cannot read gnuplot's plot for '%s'", final_path);
   else if (n == 0) st = RS_ERROR(RS_ERR_IO, "gnuplot wrote an empty plot for '%s'", final_path);
-  else st = rs_staging_write(final_path, buf, n);
+  else st = rs_atomic_file_write(final_path, buf, n);
   free(buf);
   return st;
 }

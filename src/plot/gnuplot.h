@@ -4,7 +4,7 @@
  * script and gnuplot's PNGs. gnuplot is started with posix_spawnp and the script's path
  * as its one argument: no shell, so no file or title can inject a command, and every
  * string that goes into the script is quoted by rs_gp_string. Each PNG is then copied
- * onto its final name by the output module's staging (temporary + rename), and the
+ * onto its final name by the atomic-file helper (util/atomic_file.h: temporary + rename), and the
  * directory is removed. */
 #ifndef RS_PLOT_GNUPLOT_H
 #define RS_PLOT_GNUPLOT_H

@@ -1,6 +1,7 @@
-/* The plot module's shared pieces (internal): a run's data in plotting units and the
- * figures. Units on every axis: radius in mm, pressures and shears in kPa, hoop stress
- * in MPa, tensions and loads in N/m, positions across the nip in mm. */
+/* The plot module's shared pieces (internal, defined in figure.c): a run's data in
+ * plotting units and the helpers the figures draw with. Units on every axis: radius in
+ * mm, pressures and shears in kPa, hoop stress in MPa, tensions and loads in N/m,
+ * positions across the nip in mm. */
 #ifndef RS_PLOT_INTERNAL_H
 #define RS_PLOT_INTERNAL_H
 
@@ -66,9 +67,5 @@ void plot_empty(plot_ctx *c, const char *why);
 
 /* Title line 1 and 2 as a gnuplot "set title". */
 void plot_title(plot_ctx *c, const char *line1, const char *line2);
-
-rs_status plot_run_figures(plot_ctx *c, const run_data *d);      /* plot_run.c */
-rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n); /* plot_compare.c */
-rs_status plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run); /* plot_nip.c */
 
 #endif

@@ -22,7 +22,7 @@ static void run_job(rs_reel_job *job)
   double t0 = rs_clock_wall(), c0 = rs_clock_thread_cpu();
   rs_error_clear();
   job->result = NULL;
-  job->status = rs_reel_wind(job->scene, &job->opts, &job->result);
+  job->status = rs_reel_wind(job->problem, &job->opts, &job->result);
   snprintf(job->message, sizeof job->message, "%s", job->status ? rs_error_message() : "");
   snprintf(job->where, sizeof job->where, "%s", job->status ? rs_error_where() : "");
   job->wall_seconds = rs_clock_wall() - t0;
@@ -41,7 +41,7 @@ rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used)
   if (used) *used = 0;
   if (n < 0 || (n > 0 && !jobs)) return RS_ERROR(RS_ERR_INTERNAL, "no jobs to wind");
   for (int i = 0; i < n; ++i)
-    if (!jobs[i].scene) return RS_ERROR(RS_ERR_INTERNAL, "job %d has no scene", i + 1);
+    if (!jobs[i].problem) return RS_ERROR(RS_ERR_INTERNAL, "job %d has no problem", i + 1);
   if (threads <= 0) {
     long online = sysconf(_SC_NPROCESSORS_ONLN);
     threads = online > 0 ? (int)(online < 1024 ? online : 1024) : 1;

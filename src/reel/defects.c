@@ -20,14 +20,14 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
   return "?";
 }
 
-void rs_defect_limits_from_scene(const rs_scene *sc, rs_defect_limits *lim)
+void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
 {
-  lim->pressure_limit = sc->material.pressure_limit;
-  lim->core_rating = sc->core.rating;
-  lim->accel_torque = sc->accel_torque;
-  lim->friction_layer = sc->material.friction_layer;
-  lim->E_theta = sc->material.E_theta;
-  lim->radial = &sc->material.radial;
+  lim->pressure_limit = pb->material.pressure_limit;
+  lim->core_rating = pb->core.rating;
+  lim->accel_torque = pb->accel_torque;
+  lim->friction_layer = pb->material.friction_layer;
+  lim->E_theta = pb->material.E_theta;
+  lim->radial = &pb->material.radial;
 }
 
 double rs_defect_critical_hoop_stress(double E_theta, double E_r)

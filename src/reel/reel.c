@@ -1,5 +1,5 @@
 /* Winding a whole reel: grow the roll increment by increment; at each layer the recipes
- * give the web tension and nip load, the nip model (if the scene has one) gives the
+ * give the web tension and nip load, the nip model (if the problem has one) gives the
  * wound-on tension T0, and the build-up engine winds it on. */
 #include <math.h>
 #include <stdio.h>
@@ -57,21 +57,21 @@ static rs_reel_result *reel_result_new(int n)
   return res;
 }
 
-static void reel_params(const rs_scene *sc, rs_roll_params *p)
+static void reel_params(const rs_problem *pb, rs_roll_params *p)
 {
   memset(p, 0, sizeof *p);
-  p->core_radius = sc->core.radius;
-  p->core_stiffness = rs_core_stiffness(&sc->core);
-  p->caliper = sc->material.caliper;
-  p->E_theta = sc->material.E_theta;
-  p->nu_rtheta = sc->material.nu_rtheta;
-  p->radial = sc->material.radial;
-  p->max_layers = sc->n_layers;
-  p->rtol = sc->numerics.rtol;
-  p->atol = sc->numerics.atol;
-  p->max_steps = sc->numerics.max_steps;
-  p->reuse = sc->numerics.reuse;
-  p->placement = sc->numerics.load_placement;
+  p->core_radius = pb->core.radius;
+  p->core_stiffness = rs_core_stiffness(&pb->core);
+  p->caliper = pb->material.caliper;
+  p->E_theta = pb->material.E_theta;
+  p->nu_rtheta = pb->material.nu_rtheta;
+  p->radial = pb->material.radial;
+  p->max_layers = pb->n_layers;
+  p->rtol = pb->numerics.rtol;
+  p->atol = pb->numerics.atol;
+  p->max_steps = pb->numerics.max_steps;
+  p->reuse = pb->numerics.reuse;
+  p->placement = pb->numerics.load_placement;
 }
 
 /* ---- stress history -------------------------------------------------------------------
@@ -212,20 +212,20 @@ static int compare_doubles(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_result **out)
+rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
   *out = NULL;
   const double t_start = rs_clock_wall();
-  const int N = sc->n_layers, per_step = sc->numerics.layers_per_step;
-  if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the scene winds no layers");
+  const int N = pb->n_layers, per_step = pb->numerics.layers_per_step;
+  if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the problem winds no layers");
   if (per_step < 1)
     return RS_ERROR(RS_ERR_INPUT, "numerics.layers_per_step must be >= 1 (got %d)", per_step);
-  const int every = sc->output.history_every;
+  const int every = pb->record.history_every;
   if (every < 0)
     return RS_ERROR(RS_ERR_INPUT, "output.history_every must be >= 0 (got %d)", every);
 
   rs_roll_params params;
-  reel_params(sc, &params);
+  reel_params(pb, &params);
   rs_reel_result *res = reel_result_new(N);
   /* an increment never holds more than the roll's layers (layers_per_step may exceed N) */
   double *block = malloc((size_t)(per_step < N ? per_step : N) * sizeof(double));
@@ -243,17 +243,17 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
     goto done;
   }
-  res->core_radius = sc->core.radius;
+  res->core_radius = pb->core.radius;
   if (every > 0 && (st = history_alloc(res, N, per_step, every, &hist_cap))) goto done;
   if ((st = rs_roll_create(&params, &roll))) goto done;
-  if ((st = rs_nip_create(&sc->nip, &sc->material, &nip))) goto done;
+  if ((st = rs_nip_create(&pb->nip, &pb->material, &nip))) goto done;
 
   if (nip) {
-    rs_nip_policy_init(&pol, &sc->nip, per_step, N);
-    if (sc->nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&snap))) goto done;
-    if (sc->nip.model == RS_NIP_CONTACT && sc->output.n_profiles > 0) {
-      n_prof = sc->output.n_profiles;
-      memcpy(prof_r, sc->output.nip_profiles_at, (size_t)n_prof * sizeof(double));
+    rs_nip_policy_init(&pol, &pb->nip, per_step, N);
+    if (pb->nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&snap))) goto done;
+    if (pb->nip.model == RS_NIP_CONTACT && pb->record.n_profiles > 0) {
+      n_prof = pb->record.n_profiles;
+      memcpy(prof_r, pb->record.nip_profiles_at, (size_t)n_prof * sizeof(double));
       qsort(prof_r, (size_t)n_prof, sizeof(double), compare_doubles);
       res->profiles = calloc((size_t)n_prof, sizeof *res->profiles);
       res->profile_radius = calloc((size_t)n_prof, sizeof(double));
@@ -277,9 +277,9 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
          * taper (center-surface winder, mu_roll = 0: T0 = share Ti exactly) that made it
          * negative and stopped the run as "slack" (tests/hard/test_hard_nip.c). */
         rs_nip_state ns = {.roll_radius = R,
-                           .core_radius = sc->core.radius,
-                           .web_tension = rs_recipe_eval(&sc->tension, rs_roll_layer_radius(roll, first)),
-                           .nip_load = rs_recipe_eval(&sc->nip.load, R),
+                           .core_radius = pb->core.radius,
+                           .web_tension = rs_recipe_eval(&pb->tension, rs_roll_layer_radius(roll, first)),
+                           .nip_load = rs_recipe_eval(&pb->nip.load, R),
                            .surface_modulus = rs_roll_surface_modulus(roll),
                            .surface_pressure = n > 0 ? -rs_roll_sigma_r(roll)[n - 1] : 0.0};
         double T0 = 0.0;
@@ -329,8 +329,8 @@ rs_status rs_reel_wind(const rs_scene *sc, const rs_reel_options *opts, rs_reel_
     for (int b = 0; b < m; ++b) {
       int j = first + b;
       double r = rs_roll_layer_radius(roll, j);
-      double Ti = rs_recipe_eval(&sc->tension, r), T0 = Ti;
-      double load = nip ? rs_recipe_eval(&sc->nip.load, r) : 0.0;
+      double Ti = rs_recipe_eval(&pb->tension, r), T0 = Ti;
+      double load = nip ? rs_recipe_eval(&pb->nip.load, r) : 0.0;
       /* the nip's part of T0, as solved or predicted at the radius the layer goes on at
        * (the roll's outer radius then, computed as rs_roll_outer_radius does, so that at a
        * solve the prediction is the solve's NIT bit for bit; r - caliper differs by an ulp,

@@ -99,44 +99,44 @@ static const char *winder_name(rs_winder_kind w)
 static void print_defect_checks(FILE *out, const rs_scene *s)
 {
   num_t a, b;
-  if (s->material.pressure_limit > 0.0)
+  if (s->problem.material.pressure_limit > 0.0)
     fprintf(out, "  - pressure check: material.pressure_limit %s Pa (crushing/blocking)\n",
-            f(a, s->material.pressure_limit));
-  if (s->accel_torque > 0.0)
+            f(a, s->problem.material.pressure_limit));
+  if (s->problem.accel_torque > 0.0)
     fprintf(out,
             "  - interlayer slip check: winding.accel_torque %s N m/m, web-on-web friction %s\n",
-            f(a, s->accel_torque), f(b, s->material.friction_layer));
-  if (s->core.rating > 0.0)
-    fprintf(out, "  - core check: core.rating %s Pa\n", f(a, s->core.rating));
+            f(a, s->problem.accel_torque), f(b, s->problem.material.friction_layer));
+  if (s->problem.core.rating > 0.0)
+    fprintf(out, "  - core check: core.rating %s Pa\n", f(a, s->problem.core.rating));
 }
 
 void rs_scene_print_effects(const rs_scene *s, FILE *out)
 {
   num_t a, b, c;
-  const rs_material *m = &s->material;
+  const rs_material *m = &s->problem.material;
   fprintf(out, "  - material: %s from %s (caliper %s um, E_theta = %s Pa, nu_rtheta = %s)\n",
           m->name, s->material_source, f(a, m->caliper * 1e6), f(b, m->E_theta),
           f(c, m->nu_rtheta));
   print_radial(out, &m->radial);
-  print_core(out, &s->core);
-  fprintf(out, "  - roll: %s -> %s mm, %d layers", f(a, s->core.radius * 1e3),
-          f(b, s->final_radius * 1e3), s->n_layers);
+  print_core(out, &s->problem.core);
+  fprintf(out, "  - roll: %s -> %s mm, %d layers", f(a, s->problem.core.radius * 1e3),
+          f(b, s->problem.final_radius * 1e3), s->problem.n_layers);
   if (s->web_length > 0.0) fprintf(out, " (web length %s m)", f(c, s->web_length));
   fprintf(out, "\n");
-  print_recipe(out, "tension", &s->tension);
-  switch (s->nip.model) {
+  print_recipe(out, "tension", &s->problem.tension);
+  switch (s->problem.nip.model) {
   case RS_NIP_NONE: fprintf(out, "  - nip: none (T0 = web tension)\n"); break;
   case RS_NIP_FRICTION:
-    fprintf(out, "  - nip: friction (T0 = T + %s N)\n", f(a, s->nip.mu_roll));
-    print_recipe(out, "nip load N", &s->nip.load);
+    fprintf(out, "  - nip: friction (T0 = T + %s N)\n", f(a, s->problem.nip.mu_roll));
+    print_recipe(out, "nip load N", &s->problem.nip.load);
     break;
   case RS_NIP_CONTACT:
     fprintf(out,
             "  - nip: contact model (%s winder, mu roll %s, mu drum %s, drum radius %s mm, "
             "%d nodes)\n",
-            winder_name(s->nip.winder), f(a, s->nip.mu_roll), f(b, s->nip.mu_drum),
-            f(c, s->nip.drum.radius * 1e3), s->nip.nodes);
-    print_recipe(out, "nip load", &s->nip.load);
+            winder_name(s->problem.nip.winder), f(a, s->problem.nip.mu_roll), f(b, s->problem.nip.mu_drum),
+            f(c, s->problem.nip.drum.radius * 1e3), s->problem.nip.nodes);
+    print_recipe(out, "nip load", &s->problem.nip.load);
     if (m->G_rtheta > 0.0)
       fprintf(out, "  - nip stack shear modulus: G_rtheta = %s Pa (material)\n", f(a, m->G_rtheta));
     else
@@ -144,23 +144,23 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
                    "will refuse this material (docs/nip.md)\n");
     break;
   }
-  if (s->nip.model != RS_NIP_NONE) {
-    if (s->nip.update == RS_NIP_UPDATE_ADAPTIVE)
+  if (s->problem.nip.model != RS_NIP_NONE) {
+    if (s->problem.nip.update == RS_NIP_UPDATE_ADAPTIVE)
       fprintf(out, "  - nip updates: adaptive (solved where T0 changes; T0 within %s of itself)\n",
-              f(a, s->nip.T0_rtol));
-    else if (s->nip.update_every == 1)
+              f(a, s->problem.nip.T0_rtol));
+    else if (s->problem.nip.update_every == 1)
       fprintf(out, "  - nip updates: every layer\n");
     else
       fprintf(out, "  - nip updates: every %d layers (T0 extrapolated in between)\n",
-              s->nip.update_every);
+              s->problem.nip.update_every);
   }
-  fprintf(out, "  - numerics: %d layer%s per step, rtol %s", s->numerics.layers_per_step,
-          s->numerics.layers_per_step == 1 ? "" : "s", f(a, s->numerics.rtol));
-  if (s->numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->numerics.atol));
-  fprintf(out, s->numerics.reuse == RS_REUSE_ON
+  fprintf(out, "  - numerics: %d layer%s per step, rtol %s", s->problem.numerics.layers_per_step,
+          s->problem.numerics.layers_per_step == 1 ? "" : "s", f(a, s->problem.numerics.rtol));
+  if (s->problem.numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->problem.numerics.atol));
+  fprintf(out, s->problem.numerics.reuse == RS_REUSE_ON
                    ? ", deep solution reused (error held to rtol x T0/s)\n"
                    : ", every increment integrated from the core\n");
-  fprintf(out, s->numerics.load_placement == RS_LOAD_BENEATH
+  fprintf(out, s->problem.numerics.load_placement == RS_LOAD_BENEATH
                    ? "  - load placement: beneath (a new layer joins at T0/t and presses T0/r on "
                      "the roll beneath it)\n"
                    : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "

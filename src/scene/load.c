@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "reelsim_version.h"
+#include "reelsim/version.h"
 #include "scene/scene_internal.h"
 
 typedef struct logbuf {
@@ -65,17 +65,17 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
       RS_VERSION_STRING);
   ADD("# scene: %s\n# material: %s\n", s->path, s->material_source);
   for (int i = 0; i < n_sets; ++i) ADD("# --set %s\n", sets[i]);
-  ys_fmt(num[0], sizeof num[0], s->final_radius);
-  ys_fmt(num[1], sizeof num[1], s->material.caliper);
-  ADD("# derived: final radius %s m, %d layers of caliper %s m", num[0], s->n_layers, num[1]);
+  ys_fmt(num[0], sizeof num[0], s->problem.final_radius);
+  ys_fmt(num[1], sizeof num[1], s->problem.material.caliper);
+  ADD("# derived: final radius %s m, %d layers of caliper %s m", num[0], s->problem.n_layers, num[1]);
   if (s->web_length > 0.0) {
     ys_fmt(num[2], sizeof num[2], s->web_length);
     ADD(" (from web length %s m)", num[2]);
   }
   ADD("\n");
-  if (s->tension.law == RS_RECIPE_HYPERBOLIC) {
-    ys_fmt(num[0], sizeof num[0], s->tension.k);
-    ys_fmt(num[1], sizeof num[1], s->tension.end);
+  if (s->problem.tension.law == RS_RECIPE_HYPERBOLIC) {
+    ys_fmt(num[0], sizeof num[0], s->problem.tension.k);
+    ys_fmt(num[1], sizeof num[1], s->problem.tension.end);
     ADD("# derived: tension taper k = %s, end = %s N/m\n", num[0], num[1]);
   }
 #undef ADD

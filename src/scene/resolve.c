@@ -61,7 +61,7 @@ static rs_status resolve_core(const yn *root, const ys_core *y, rs_core *c)
 static rs_status resolve_winding(const yn *root, const ys_winding *y, rs_scene *s)
 {
   int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length");
-  double rc = s->core.radius, t = s->material.caliper;
+  double rc = s->problem.core.radius, t = s->problem.material.caliper;
   if (has_r && has_L)
     return ys_fail(root, "winding.web_length",
                    "give either final_radius or web_length, not both");
@@ -73,33 +73,33 @@ static rs_status resolve_winding(const yn *root, const ys_winding *y, rs_scene *
     if (!(y->web_length > 0.0))
       return ys_fail(root, key, "must be > 0 m (got %g)", y->web_length);
     s->web_length = y->web_length;
-    s->final_radius = sqrt(rc * rc + y->web_length * t / pi);
+    s->problem.final_radius = sqrt(rc * rc + y->web_length * t / pi);
   } else {
     if (!(y->final_radius > rc))
       return ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, y->final_radius);
     s->web_length = 0.0;
-    s->final_radius = y->final_radius;
+    s->problem.final_radius = y->final_radius;
   }
-  double layers = round((s->final_radius - rc) / t);
+  double layers = round((s->problem.final_radius - rc) / t);
   if (layers < 1.0)
     return ys_fail(root, key,
                    "the roll would have no layers: %g m of build-up is less than half a "
                    "caliper (%g m)",
-                   s->final_radius - rc, t);
+                   s->problem.final_radius - rc, t);
   if (layers > RS_MAX_LAYERS)
     return ys_fail(root, key, "the roll would have %.0f layers (at most %d)", layers,
                    RS_MAX_LAYERS);
-  s->n_layers = (int)layers;
-  s->accel_torque = 0.0;
+  s->problem.n_layers = (int)layers;
+  s->problem.accel_torque = 0.0;
   if (ys_has(root, "winding.accel_torque")) {
     if (!(y->accel_torque > 0.0))
       return ys_fail(root, "winding.accel_torque",
                      "must be > 0 N m/m (got %g; omit the key to skip the check)", y->accel_torque);
-    if (!(s->material.friction_layer > 0.0))
+    if (!(s->problem.material.friction_layer > 0.0))
       return ys_fail(root, "winding.accel_torque",
                      "the interlayer slip check needs material.friction_layer (the web-on-web "
                      "friction coefficient)");
-    s->accel_torque = y->accel_torque;
+    s->problem.accel_torque = y->accel_torque;
   }
   return RS_OK;
 }
@@ -154,7 +154,7 @@ static rs_status resolve_drum(const yn *root, const ys_drum *y, rs_drum *d)
 
 static rs_status resolve_nip(const yn *root, const ys_nip *y, rs_scene *s)
 {
-  rs_nip_spec *n = &s->nip;
+  rs_nip_spec *n = &s->problem.nip;
   memset(n, 0, sizeof *n);
   n->model = RS_NIP_NONE;
   if (!ys_has(root, "nip") || y->model == RS_NIP_NONE) return RS_OK;
@@ -163,8 +163,8 @@ static rs_status resolve_nip(const yn *root, const ys_nip *y, rs_scene *s)
 
   if (!ys_has(root, "nip.load"))
     return ys_fail(root, "nip.load", "required by nip model %s (N/m, a number or a recipe)", model);
-  rs_status st = ys_resolve_recipe(root, "nip.load", "nip load", &y->load, s->core.radius,
-                                   s->final_radius, &n->load);
+  rs_status st = ys_resolve_recipe(root, "nip.load", "nip load", &y->load, s->problem.core.radius,
+                                   s->problem.final_radius, &n->load);
   if (st != RS_OK) return st;
 
   if (!ys_has(root, "nip.friction.roll"))
@@ -240,23 +240,24 @@ static rs_status resolve_numerics(const yn *root, const ys_numerics *y, rs_numer
 static rs_status resolve_output(const yn *root, const ys_output *y, rs_scene *s)
 {
   rs_output_spec *o = &s->output;
+  rs_record_spec *rec = &s->problem.record;
   snprintf(o->file, sizeof o->file, "%s", y->file);
   if (y->history_every < 0)
     return ys_fail(root, "output.history_every", "must be >= 0 (got %d; 0 = no history)",
                    y->history_every);
-  o->history_every = y->history_every;
-  o->n_profiles = (int)y->nip_profiles_at_count;
+  rec->history_every = y->history_every;
+  rec->n_profiles = (int)y->nip_profiles_at_count;
   for (unsigned i = 0; i < y->nip_profiles_at_count; ++i) {
     double r = y->nip_profiles_at[i];
-    if (!(r >= s->core.radius && r <= s->final_radius)) {
+    if (!(r >= s->problem.core.radius && r <= s->problem.final_radius)) {
       char key[64];
       snprintf(key, sizeof key, "output.nip_profiles_at[%u]", i);
-      return ys_fail(root, key, "must lie on the roll, in [%g, %g] m (got %g)", s->core.radius,
-                     s->final_radius, r);
+      return ys_fail(root, key, "must lie on the roll, in [%g, %g] m (got %g)", s->problem.core.radius,
+                     s->problem.final_radius, r);
     }
-    o->nip_profiles_at[i] = r;
+    rec->nip_profiles_at[i] = r;
   }
-  if (o->n_profiles > 0 && s->nip.model == RS_NIP_NONE)
+  if (rec->n_profiles > 0 && s->problem.nip.model == RS_NIP_NONE)
     return ys_fail(root, "output.nip_profiles_at", "needs a nip (the scene has none)");
   return RS_OK;
 }
@@ -265,13 +266,13 @@ rs_status ys_resolve(const yn *root, const ys_scene *y, rs_scene *s)
 {
   rs_status st;
   snprintf(s->title, sizeof s->title, "%s", y->title ? y->title : "");
-  if ((st = ys_resolve_material(root, &y->material, &s->material)) != RS_OK) return st;
-  if ((st = resolve_core(root, &y->core, &s->core)) != RS_OK) return st;
+  if ((st = ys_resolve_material(root, &y->material, &s->problem.material)) != RS_OK) return st;
+  if ((st = resolve_core(root, &y->core, &s->problem.core)) != RS_OK) return st;
   if ((st = resolve_winding(root, &y->winding, s)) != RS_OK) return st;
   if ((st = ys_resolve_recipe(root, "winding.tension", "tension", &y->winding.tension,
-                              s->core.radius, s->final_radius, &s->tension)) != RS_OK)
+                              s->problem.core.radius, s->problem.final_radius, &s->problem.tension)) != RS_OK)
     return st;
   if ((st = resolve_nip(root, &y->nip, s)) != RS_OK) return st;
-  if ((st = resolve_numerics(root, &y->numerics, &s->numerics)) != RS_OK) return st;
+  if ((st = resolve_numerics(root, &y->numerics, &s->problem.numerics)) != RS_OK) return st;
   return resolve_output(root, &y->output, s);
 }

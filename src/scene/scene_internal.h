@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "reelsim/scene.h"
+#include "scene/scene_type.h"
 #include "scene/schema.h"
 #include "scene/ytree.h"
 

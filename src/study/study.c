@@ -219,10 +219,10 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
   *out = NULL;
   rs_study_plan *p = calloc(1, sizeof *p);
   if (!p) return RS_ERROR(RS_ERR_MEMORY, "cannot plan a study");
-  p->has_nip = scene->nip.model != RS_NIP_NONE;
-  p->contact = scene->nip.model == RS_NIP_CONTACT;
+  p->has_nip = rs_scene_problem(scene)->nip.model != RS_NIP_NONE;
+  p->contact = rs_scene_problem(scene)->nip.model == RS_NIP_CONTACT;
   p->quick = quick != 0;
-  const int N = scene->n_layers;
+  const int N = rs_scene_problem(scene)->n_layers;
   plan_builder b = {p, 0, RS_OK};
   rs_study_setting s, def;
   reference(p->has_nip, p->contact, 0, &s);

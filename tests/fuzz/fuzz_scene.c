@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -62,17 +63,18 @@ static const char *body_of(const char *resolved)
  * source after inlining), bytes where it may not. */
 static int same_scene(const rs_scene *a, const rs_scene *b)
 {
-  return strcmp(a->title, b->title) == 0 && strcmp(a->material.name, b->material.name) == 0 &&
-         a->material.caliper == b->material.caliper && a->material.E_theta == b->material.E_theta &&
-         a->material.nu_rtheta == b->material.nu_rtheta &&
-         a->material.G_rtheta == b->material.G_rtheta &&
-         a->material.density == b->material.density &&
-         memcmp(&a->material.radial, &b->material.radial, sizeof a->material.radial) == 0 &&
-         memcmp(&a->core, &b->core, sizeof a->core) == 0 && a->final_radius == b->final_radius &&
-         a->n_layers == b->n_layers &&
-         memcmp(&a->tension, &b->tension, sizeof a->tension) == 0 &&
-         memcmp(&a->nip, &b->nip, sizeof a->nip) == 0 &&
-         memcmp(&a->numerics, &b->numerics, sizeof a->numerics) == 0 &&
+  return strcmp(a->title, b->title) == 0 && strcmp(a->problem.material.name, b->problem.material.name) == 0 &&
+         a->problem.material.caliper == b->problem.material.caliper && a->problem.material.E_theta == b->problem.material.E_theta &&
+         a->problem.material.nu_rtheta == b->problem.material.nu_rtheta &&
+         a->problem.material.G_rtheta == b->problem.material.G_rtheta &&
+         a->problem.material.density == b->problem.material.density &&
+         memcmp(&a->problem.material.radial, &b->problem.material.radial, sizeof a->problem.material.radial) == 0 &&
+         memcmp(&a->problem.core, &b->problem.core, sizeof a->problem.core) == 0 && a->problem.final_radius == b->problem.final_radius &&
+         a->problem.n_layers == b->problem.n_layers &&
+         memcmp(&a->problem.tension, &b->problem.tension, sizeof a->problem.tension) == 0 &&
+         memcmp(&a->problem.nip, &b->problem.nip, sizeof a->problem.nip) == 0 &&
+         memcmp(&a->problem.numerics, &b->problem.numerics, sizeof a->problem.numerics) == 0 &&
+         memcmp(&a->problem.record, &b->problem.record, sizeof a->problem.record) == 0 &&
          memcmp(&a->output, &b->output, sizeof a->output) == 0;
 }
 
@@ -94,7 +96,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     return 0;
   }
   if (!scene || !scene->resolved_text) fuzz_fail("RS_OK without a scene", st);
-  if (scene->n_layers < 1) fuzz_fail("a scene with no layers was accepted", st);
+  if (scene->problem.n_layers < 1) fuzz_fail("a scene with no layers was accepted", st);
 
   rs_scene *again = NULL, *third = NULL;
   const char *resolved = scene->resolved_text;

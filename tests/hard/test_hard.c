@@ -490,14 +490,14 @@ static void taper_through_zero(void)
       CHECK(st == RS_OK);
       if (st != RS_OK) continue;
       rs_reel_result *res = NULL;
-      st = rs_reel_wind(sc, NULL, &res);
+      st = rs_scene_wind(sc, NULL, &res);
       if (st != RS_OK) printf("  %s\n", rs_error_message());
       CHECK(st == RS_OK);
       int n = res->n_layers;
       printf("  %s, final radius %s: %d layers, last T0 %.17g, core pressure %.17g\n", zero[i],
              radii[k], n, res->wound_on_tension[n - 1], res->core_pressure);
-      CHECK(n == sc->n_layers);
-      if (res->radius[n - 1] >= sc->final_radius) {
+      CHECK(n == rs_scene_problem(sc)->n_layers);
+      if (res->radius[n - 1] >= rs_scene_problem(sc)->final_radius) {
         /* at or beyond r1 the taper's end value 0 holds */
         CHECK(res->wound_on_tension[n - 1] == 0.0);
         CHECK(res->sigma_r[n - 1] == 0.0 && res->sigma_theta[n - 1] == 0.0);
@@ -657,7 +657,7 @@ static void failure_keeps_finished(void)
   snprintf(text, sizeof text, scene, "0.07");
   CHECK(rs_scene_load_text("fail.yaml", text, strlen(text), 0, NULL, &sc) == RS_OK);
   if (!sc) return;
-  rs_status st = rs_reel_wind(sc, NULL, &res);
+  rs_status st = rs_scene_wind(sc, NULL, &res);
   printf("  %s\n  (at %s)\n", rs_error_message(), rs_error_where());
   CHECK(st == RS_ERR_SOLVER);
   CHECK(strstr(rs_error_message(), "is not positive") != NULL);
@@ -667,7 +667,7 @@ static void failure_keeps_finished(void)
   if (!res) return;
   int k = res->n_layers;
   CHECK_LOG("layers finished", k);
-  CHECK(k > 0 && k < sc->n_layers);
+  CHECK(k > 0 && k < rs_scene_problem(sc)->n_layers);
   rs_scene_destroy(&sc);
 
   char radius[64];
@@ -675,8 +675,8 @@ static void failure_keeps_finished(void)
   snprintf(text, sizeof text, scene, radius);
   CHECK(rs_scene_load_text("fail.yaml", text, strlen(text), 0, NULL, &sc) == RS_OK);
   if (!sc) return;
-  CHECK(sc->n_layers == k);
-  CHECK(rs_reel_wind(sc, NULL, &again) == RS_OK);
+  CHECK(rs_scene_problem(sc)->n_layers == k);
+  CHECK(rs_scene_wind(sc, NULL, &again) == RS_OK);
   CHECK(again->n_layers == k);
   CHECK(memcmp(res->sigma_r, again->sigma_r, (size_t)k * sizeof(double)) == 0);
   CHECK(memcmp(res->sigma_theta, again->sigma_theta, (size_t)k * sizeof(double)) == 0);

@@ -748,12 +748,12 @@ static void taper_to_zero(void)
       CHECK(load_scene("0.088", tapers[t], winders[w], "0.19", "", &sc) == RS_OK);
       if (!sc) continue;
       rs_reel_result *res = NULL;
-      st = rs_reel_wind(sc, NULL, &res);
+      st = rs_scene_wind(sc, NULL, &res);
       if (st) printf("  %s\n", rs_error_message());
       CHECK(st == RS_OK);
       if (res && st == RS_OK) {
         int n = res->n_layers, bad = 0;
-        CHECK(n == sc->n_layers);
+        CHECK(n == rs_scene_problem(sc)->n_layers);
         check_reel(res);
         double tmin = INFINITY;
         for (int j = 0; j < n; ++j) tmin = fmin(tmin, res->wound_on_tension[j]);
@@ -798,18 +798,18 @@ static void taper_t0_zero(void)
                      runs[i].share > 0 ? ", torque_share: 0.5" : "", &sc) == RS_OK);
     if (!sc) continue;
     rs_reel_result *res = NULL;
-    rs_status st = rs_reel_wind(sc, NULL, &res);
+    rs_status st = rs_scene_wind(sc, NULL, &res);
     if (st) printf("  %s\n", rs_error_message());
     CHECK(st == RS_OK);
     if (res && st == RS_OK) {
       int n = res->n_layers, bad_solve = 0, bad_layer = 0;
-      CHECK(n == sc->n_layers);
+      CHECK(n == rs_scene_problem(sc)->n_layers);
       check_reel(res);
       for (int k = 0; k < res->n_nip; ++k)
         bad_solve += !(fabs(res->nip_T0[k] - runs[i].share * res->nip_Ti[k]) <= 1e-9 * res->nip_Ti[k] + 1e-12);
       double smax = 0;
       for (int j = 0; j < n; ++j) {
-        if (runs[i].share > 0 && res->radius[j] <= sc->final_radius)
+        if (runs[i].share > 0 && res->radius[j] <= rs_scene_problem(sc)->final_radius)
           bad_layer += !(fabs(res->wound_on_tension[j] - runs[i].share * res->web_tension[j]) <= 1e-9);
         if (runs[i].share == 0) bad_layer += !(fabs(res->wound_on_tension[j]) <= 1e-12 * 350);
         smax = fmax(smax, fmax(fabs(res->sigma_r[j]), fabs(res->sigma_theta[j])));
@@ -875,7 +875,7 @@ static void nip_failure_keeps_finished(void)
   rs_reel_result *res = NULL, *again = NULL;
   CHECK(load_scene("0.088", tension, "surface", "0.19", every, &sc) == RS_OK);
   if (!sc) return;
-  rs_status st = rs_reel_wind(sc, NULL, &res);
+  rs_status st = rs_scene_wind(sc, NULL, &res);
   printf("  %s\n", rs_error_message());
   CHECK(st == RS_ERR_SOLVER);
   CHECK(strstr(rs_error_message(), "cannot wind past layer") != NULL);
@@ -890,7 +890,7 @@ static void nip_failure_keeps_finished(void)
   }
   int k = res->n_layers;
   CHECK_LOG("layers finished", k);
-  CHECK(k > 0 && k < sc->n_layers);
+  CHECK(k > 0 && k < rs_scene_problem(sc)->n_layers);
   check_reel(res);
   /* the last finished layer's Ti could still be carried, the next one's not */
   CHECK(res->web_tension[k - 1] < 0.35 * 1750);
@@ -902,8 +902,8 @@ static void nip_failure_keeps_finished(void)
     rs_reel_result_destroy(&res);
     return;
   }
-  CHECK(sc->n_layers == k);
-  CHECK(rs_reel_wind(sc, NULL, &again) == RS_OK);
+  CHECK(rs_scene_problem(sc)->n_layers == k);
+  CHECK(rs_scene_wind(sc, NULL, &again) == RS_OK);
   if (again && again->n_layers == k) {
     CHECK(memcmp(res->sigma_r, again->sigma_r, (size_t)k * sizeof(double)) == 0);
     CHECK(memcmp(res->sigma_theta, again->sigma_theta, (size_t)k * sizeof(double)) == 0);

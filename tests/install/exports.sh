@@ -15,7 +15,7 @@ n="$(printf '%s\n' "$syms" | grep -c .)"
 echo "$lib: $n exported symbols"
 others="$(printf '%s\n' "$syms" | grep -v '^rs_')"
 [ -z "$others" ] || { printf '%s\n' "$others"; fail "symbols without the rs_ prefix are exported"; }
-for s in rs_scene_load rs_scene_load_text rs_scene_destroy rs_reel_wind rs_reel_result_destroy \
+for s in rs_scene_load rs_scene_load_text rs_scene_destroy rs_scene_problem rs_scene_wind rs_reel_wind rs_reel_result_destroy \
          rs_error_message rs_status_exit_code rs_version; do
   printf '%s\n' "$syms" | grep -qx "$s" || fail "$s is not exported"
 done

@@ -53,11 +53,11 @@ static void wind_many_matches_single(void)
                      load(small_scene, 2, sets)};
   if (!sc[0] || !sc[1] || !sc[2]) return;
   rs_reel_result *alone[3] = {NULL, NULL, NULL};
-  for (int i = 0; i < 3; ++i) CHECK(rs_reel_wind(sc[i], NULL, &alone[i]) == RS_OK);
+  for (int i = 0; i < 3; ++i) CHECK(rs_scene_wind(sc[i], NULL, &alone[i]) == RS_OK);
   for (int threads = 1; threads <= 3; ++threads) {
     rs_reel_job jobs[3];
     memset(jobs, 0, sizeof jobs);
-    for (int i = 0; i < 3; ++i) jobs[i].scene = sc[i];
+    for (int i = 0; i < 3; ++i) jobs[i].problem = rs_scene_problem(sc[i]);
     int used = 0;
     CHECK(rs_reel_wind_many(3, jobs, threads, &used) == RS_OK);
     printf("  %d threads asked, %d used\n", threads, used);
@@ -88,7 +88,7 @@ static void wind_many_failure_isolated(void)
   if (!sc[0] || !sc[1] || !sc[2]) return;
   rs_reel_job jobs[3];
   memset(jobs, 0, sizeof jobs);
-  for (int i = 0; i < 3; ++i) jobs[i].scene = sc[i];
+  for (int i = 0; i < 3; ++i) jobs[i].problem = rs_scene_problem(sc[i]);
   CHECK(rs_reel_wind_many(3, jobs, 2, NULL) == RS_OK);
   printf("  job 2: %s\n  at %s\n", jobs[1].message, jobs[1].where);
   CHECK(jobs[0].status == RS_OK && jobs[2].status == RS_OK);

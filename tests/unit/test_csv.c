@@ -30,7 +30,7 @@ static rs_reel_result *wind_small(rs_scene **sc_out)
   rs_reel_result *res = NULL;
   const char *sets[] = {"winding.web_length=60"};
   if (rs_scene_load(RS_ROOT_DIR "/cases/linerboard-table.yaml", 1, sets, &sc) != RS_OK ||
-      rs_reel_wind(sc, NULL, &res) != RS_OK)
+      rs_scene_wind(sc, NULL, &res) != RS_OK)
     printf("  error: %s\n", rs_error_message());
   *sc_out = sc;
   return res;

@@ -386,17 +386,17 @@ static void limits_from_scene(void)
   CHECK(rs_scene_load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 4, sets, &sc) == RS_OK);
   if (!sc) return;
   rs_defect_limits lim;
-  rs_defect_limits_from_scene(sc, &lim);
+  rs_defect_limits_from_problem(rs_scene_problem(sc), &lim);
   CHECK(lim.pressure_limit == 2.5e6 && lim.friction_layer == 0.35);
   CHECK(lim.accel_torque == 40.0 && lim.core_rating == 3e6);
   /* the buckling rule's web: newsprint's E_theta and Pfeiffer law (models/newsprint.yaml) */
-  CHECK(lim.E_theta == 3.5e9 && lim.radial == &sc->material.radial);
+  CHECK(lim.E_theta == 3.5e9 && lim.radial == &rs_scene_problem(sc)->material.radial);
   CHECK(lim.radial->law == RS_RADIAL_PFEIFFER && lim.radial->K1 == 5.0e3 && lim.radial->K2 == 60);
   rs_scene_destroy(&sc);
   /* absent keys: 0, "not given" */
   CHECK(rs_scene_load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 0, NULL, &sc) == RS_OK);
   if (!sc) return;
-  rs_defect_limits_from_scene(sc, &lim);
+  rs_defect_limits_from_problem(rs_scene_problem(sc), &lim);
   CHECK(lim.pressure_limit == 0.0 && lim.friction_layer == 0.0);
   CHECK(lim.accel_torque == 0.0 && lim.core_rating == 0.0);
   rs_scene_destroy(&sc);

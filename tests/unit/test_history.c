@@ -27,7 +27,7 @@ static rs_reel_result *wind(int n_sets, const char **sets, rs_status *st_out,
   rs_scene *sc = NULL;
   rs_reel_result *res = NULL;
   rs_status st = rs_scene_load(small, n_sets, sets, &sc);
-  if (st == RS_OK) st = rs_reel_wind(sc, opts, &res);
+  if (st == RS_OK) st = rs_scene_wind(sc, opts, &res);
   if (st_out) *st_out = st;
   if (st != RS_OK && !st_out) printf("  error: %s\n", rs_error_message());
   rs_scene_destroy(&sc);
@@ -247,7 +247,7 @@ static int write_run(const char *path, const char *every, rs_reel_result **res_o
   rs_scene *sc = NULL;
   const char *sets[] = {every};
   rs_status st = rs_scene_load(small, 1, sets, &sc);
-  if (st == RS_OK) st = rs_reel_wind(sc, NULL, res_out);
+  if (st == RS_OK) st = rs_scene_wind(sc, NULL, res_out);
   if (st == RS_OK) st = rs_output_write(path, sc, *res_out);
   if (st != RS_OK) printf("  error: %s\n", rs_error_message());
   rs_scene_destroy(&sc);

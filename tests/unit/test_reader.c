@@ -122,7 +122,7 @@ static void compare_file(void)
       free(v);
       char *t = NULL;
       CHECK(rs_reader_attr_string(r, rs_reader_run_base(r, i), "title", &t) == RS_OK &&
-            strcmp(t, sc[i]->title) == 0);
+            strcmp(t, rs_scene_title(sc[i])) == 0);
       free(t);
     }
     char **s = NULL;

@@ -12,6 +12,7 @@
 
 #include "check.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 
 #ifndef RS_ROOT_DIR
 #error "RS_ROOT_DIR must name the project root"
@@ -53,22 +54,22 @@ static rs_scene *load(const char *path, int n, const char *const *sets)
 static void same_scene(const rs_scene *a, const rs_scene *b)
 {
   CHECK(strcmp(a->title, b->title) == 0);
-  CHECK(strcmp(a->material.name, b->material.name) == 0);
-  CHECK(a->material.caliper == b->material.caliper);
-  CHECK(a->material.E_theta == b->material.E_theta);
-  CHECK(a->material.nu_rtheta == b->material.nu_rtheta);
-  CHECK(memcmp(&a->material.radial, &b->material.radial, sizeof a->material.radial) == 0);
-  CHECK(memcmp(&a->core, &b->core, sizeof a->core) == 0);
-  CHECK(a->final_radius == b->final_radius);
-  CHECK(a->n_layers == b->n_layers);
-  CHECK(a->tension.law == b->tension.law);
-  CHECK(a->tension.start == b->tension.start);
-  CHECK(a->tension.n_points == b->tension.n_points);
-  if (a->tension.law == RS_RECIPE_HYPERBOLIC) CHECK_CLOSE(b->tension.k, a->tension.k, 1e-12);
-  if (a->tension.law == RS_RECIPE_LINEAR) CHECK(a->tension.end == b->tension.end);
-  CHECK(a->nip.model == b->nip.model);
-  CHECK(a->nip.mu_roll == b->nip.mu_roll);
-  CHECK(memcmp(&a->numerics, &b->numerics, sizeof a->numerics) == 0);
+  CHECK(strcmp(a->problem.material.name, b->problem.material.name) == 0);
+  CHECK(a->problem.material.caliper == b->problem.material.caliper);
+  CHECK(a->problem.material.E_theta == b->problem.material.E_theta);
+  CHECK(a->problem.material.nu_rtheta == b->problem.material.nu_rtheta);
+  CHECK(memcmp(&a->problem.material.radial, &b->problem.material.radial, sizeof a->problem.material.radial) == 0);
+  CHECK(memcmp(&a->problem.core, &b->problem.core, sizeof a->problem.core) == 0);
+  CHECK(a->problem.final_radius == b->problem.final_radius);
+  CHECK(a->problem.n_layers == b->problem.n_layers);
+  CHECK(a->problem.tension.law == b->problem.tension.law);
+  CHECK(a->problem.tension.start == b->problem.tension.start);
+  CHECK(a->problem.tension.n_points == b->problem.tension.n_points);
+  if (a->problem.tension.law == RS_RECIPE_HYPERBOLIC) CHECK_CLOSE(b->problem.tension.k, a->problem.tension.k, 1e-12);
+  if (a->problem.tension.law == RS_RECIPE_LINEAR) CHECK(a->problem.tension.end == b->problem.tension.end);
+  CHECK(a->problem.nip.model == b->problem.nip.model);
+  CHECK(a->problem.nip.mu_roll == b->problem.nip.mu_roll);
+  CHECK(memcmp(&a->problem.numerics, &b->problem.numerics, sizeof a->problem.numerics) == 0);
   CHECK(strcmp(a->output.file, b->output.file) == 0);
 }
 
@@ -89,7 +90,7 @@ static void load_all_cases(void)
     rs_scene *s = load(path, 0, NULL);
     if (!s) continue;
     ++n;
-    printf("  %-28s %6d layers, material from %s\n", e->d_name, s->n_layers, s->material_source);
+    printf("  %-28s %6d layers, material from %s\n", e->d_name, s->problem.n_layers, s->material_source);
     CHECK(s->resolved_text && strstr(s->resolved_text, "title:"));
     /* round trip: the resolved text is itself a scene, beside which no model is needed */
     snprintf(again, sizeof again, "%s/%s", tmpdir, e->d_name);
@@ -114,20 +115,20 @@ static void contract_scene(void)
   rs_scene *s = load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 0, NULL);
   if (!s) return;
   CHECK(strcmp(s->title, "Newsprint, center winding with a rider roll") == 0);
-  CHECK(strcmp(s->material.name, "newsprint") == 0);
+  CHECK(strcmp(s->problem.material.name, "newsprint") == 0);
   CHECK(strstr(s->material_source, "models/newsprint.yaml") != NULL);
-  CHECK(s->material.caliper == 70.0e-6);
-  CHECK(s->material.E_theta == 3.5e9);
-  CHECK(s->material.radial.law == RS_RADIAL_PFEIFFER);
-  CHECK(s->material.radial.K1 == 5.0e3 && s->material.radial.K2 == 60);
-  CHECK(s->core.kind == RS_CORE_ELASTIC && s->core.radius == 0.0762 && s->core.stiffness == 1e9);
-  CHECK(s->final_radius == 0.5 && s->web_length == 0.0);
-  CHECK(s->n_layers == 6054); /* (0.5 - 0.0762) / 70e-6 = 6054.3 */
-  CHECK(s->tension.law == RS_RECIPE_CONSTANT && s->tension.start == 350);
-  CHECK(s->nip.model == RS_NIP_FRICTION && s->nip.mu_roll == 0.19);
-  CHECK(s->nip.load.law == RS_RECIPE_CONSTANT && s->nip.load.start == 1750);
-  CHECK(s->nip.nodes == 64 && s->nip.winder == RS_WINDER_CENTER);
-  CHECK(s->numerics.layers_per_step == 1 && s->numerics.rtol == 1e-6);
+  CHECK(s->problem.material.caliper == 70.0e-6);
+  CHECK(s->problem.material.E_theta == 3.5e9);
+  CHECK(s->problem.material.radial.law == RS_RADIAL_PFEIFFER);
+  CHECK(s->problem.material.radial.K1 == 5.0e3 && s->problem.material.radial.K2 == 60);
+  CHECK(s->problem.core.kind == RS_CORE_ELASTIC && s->problem.core.radius == 0.0762 && s->problem.core.stiffness == 1e9);
+  CHECK(s->problem.final_radius == 0.5 && s->web_length == 0.0);
+  CHECK(s->problem.n_layers == 6054); /* (0.5 - 0.0762) / 70e-6 = 6054.3 */
+  CHECK(s->problem.tension.law == RS_RECIPE_CONSTANT && s->problem.tension.start == 350);
+  CHECK(s->problem.nip.model == RS_NIP_FRICTION && s->problem.nip.mu_roll == 0.19);
+  CHECK(s->problem.nip.load.law == RS_RECIPE_CONSTANT && s->problem.nip.load.start == 1750);
+  CHECK(s->problem.nip.nodes == 64 && s->problem.nip.winder == RS_WINDER_CENTER);
+  CHECK(s->problem.numerics.layers_per_step == 1 && s->problem.numerics.rtol == 1e-6);
   CHECK(strcmp(s->output.file, "newsprint-rider.h5") == 0);
   rs_scene_destroy(&s);
 }
@@ -138,10 +139,10 @@ static void set_override(void)
                         "output.file=x.h5"};
   rs_scene *s = load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 4, sets);
   if (!s) return;
-  CHECK(s->tension.law == RS_RECIPE_CONSTANT && s->tension.start == 300);
-  CHECK(s->material.caliper == 80e-6);
-  CHECK(s->n_layers == (int)lround((0.5 - 0.0762) / 80e-6));
-  CHECK(s->nip.mu_roll == 0.25);
+  CHECK(s->problem.tension.law == RS_RECIPE_CONSTANT && s->problem.tension.start == 300);
+  CHECK(s->problem.material.caliper == 80e-6);
+  CHECK(s->problem.n_layers == (int)lround((0.5 - 0.0762) / 80e-6));
+  CHECK(s->problem.nip.mu_roll == 0.25);
   CHECK(strcmp(s->output.file, "x.h5") == 0);
   CHECK(strstr(s->resolved_text, "# --set winding.tension=300") != NULL);
   rs_scene_destroy(&s);
@@ -150,10 +151,10 @@ static void set_override(void)
   const char *more[] = {"numerics.layers_per_step=10", "material=pet-film",
                         "winding.tension.k=0.5"};
   s = load(RS_ROOT_DIR "/cases/newsprint-taper.yaml", 1, more);
-  if (s) CHECK(s->numerics.layers_per_step == 10);
+  if (s) CHECK(s->problem.numerics.layers_per_step == 10);
   rs_scene_destroy(&s);
   s = load(RS_ROOT_DIR "/cases/newsprint-taper.yaml", 2, more);
-  if (s) CHECK(strcmp(s->material.name, "pet-film") == 0 && s->material.caliper == 23e-6);
+  if (s) CHECK(strcmp(s->problem.material.name, "pet-film") == 0 && s->problem.material.caliper == 23e-6);
   rs_scene_destroy(&s);
 
   /* both end and k on a hyperbolic taper: refused, naming k */
@@ -176,13 +177,13 @@ static void web_length_formula(void)
 {
   rs_scene *s = load(RS_ROOT_DIR "/cases/linerboard-table.yaml", 0, NULL);
   if (!s) return;
-  double rc = s->core.radius, t = s->material.caliper, L = s->web_length;
+  double rc = s->problem.core.radius, t = s->problem.material.caliper, L = s->web_length;
   CHECK(L == 3000.0);
-  double r1 = s->final_radius;
+  double r1 = s->problem.final_radius;
   CHECK_LOG("final radius from 3000 m of 250 um board", r1);
   CHECK_CLOSE(M_PI * (r1 * r1 - rc * rc), L * t, 1e-14);
   CHECK_CLOSE(r1, sqrt(0.0762 * 0.0762 + 3000.0 * 250e-6 / M_PI), 1e-15);
-  CHECK(s->n_layers == (int)lround((r1 - rc) / t));
+  CHECK(s->problem.n_layers == (int)lround((r1 - rc) / t));
   rs_scene_destroy(&s);
 }
 
@@ -198,14 +199,14 @@ static void defaults_filled(void)
   if (s) {
     CHECK(strcmp(s->title, "plain-roll") == 0);
     CHECK(strcmp(s->material_source, "inline") == 0);
-    CHECK(strcmp(s->material.name, "inline") == 0);
-    CHECK(s->material.nu_rtheta == 0.0 && s->material.G_rtheta == 0.0);
-    CHECK(s->core.kind == RS_CORE_RIGID);
-    CHECK(s->n_layers == 100);
-    CHECK(s->nip.model == RS_NIP_NONE);
-    CHECK(s->numerics.layers_per_step == 1 && s->numerics.rtol == 1e-5);
-    CHECK(s->numerics.atol == 0.0 && s->numerics.max_steps == 0);
-    CHECK(strcmp(s->output.file, "plain-roll.h5") == 0 && s->output.history_every == 0);
+    CHECK(strcmp(s->problem.material.name, "inline") == 0);
+    CHECK(s->problem.material.nu_rtheta == 0.0 && s->problem.material.G_rtheta == 0.0);
+    CHECK(s->problem.core.kind == RS_CORE_RIGID);
+    CHECK(s->problem.n_layers == 100);
+    CHECK(s->problem.nip.model == RS_NIP_NONE);
+    CHECK(s->problem.numerics.layers_per_step == 1 && s->problem.numerics.rtol == 1e-5);
+    CHECK(s->problem.numerics.atol == 0.0 && s->problem.numerics.max_steps == 0);
+    CHECK(strcmp(s->output.file, "plain-roll.h5") == 0 && s->problem.record.history_every == 0);
     CHECK(strstr(s->resolved_text, "layers_per_step: 1") != NULL);
   }
   rs_scene_destroy(&s);
@@ -214,8 +215,8 @@ static void defaults_filled(void)
   const char *nip[] = {"nip.model=friction", "nip.load=1000", "nip.friction.roll=0.2"};
   s = load(path, 3, nip);
   if (s) {
-    CHECK(s->nip.model == RS_NIP_FRICTION && s->nip.nodes == 64);
-    CHECK(s->nip.winder == RS_WINDER_CENTER && s->nip.mu_roll == 0.2);
+    CHECK(s->problem.nip.model == RS_NIP_FRICTION && s->problem.nip.nodes == 64);
+    CHECK(s->problem.nip.winder == RS_WINDER_CENTER && s->problem.nip.mu_roll == 0.2);
   }
   rs_scene_destroy(&s);
   rm_rf(tmpdir);
@@ -235,7 +236,7 @@ static double lookup_caliper(const char *scene, char *source, size_t size)
   rs_scene *s = NULL;
   double c = NAN;
   if (rs_scene_load(scene, 0, NULL, &s) == RS_OK) {
-    c = s->material.caliper;
+    c = s->problem.material.caliper;
     snprintf(source, size, "%s", s->material_source);
   } else {
     snprintf(source, size, "%s", rs_error_message());
@@ -357,7 +358,7 @@ static void resolved_quoting(void)
     if (t) {
       same_scene(s, t);
       CHECK(strcmp(t->output.file, "out dir/x: y.h5") == 0);
-      CHECK(t->tension.n_points == 2 && t->tension.value[1] == 90);
+      CHECK(t->problem.tension.n_points == 2 && t->problem.tension.value[1] == 90);
     }
     rs_scene_destroy(&t);
   }

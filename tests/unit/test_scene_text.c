@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the fields: these tests look inside */
 
 #ifndef RS_ROOT_DIR
 #error "RS_ROOT_DIR must name the project root"
@@ -44,7 +45,7 @@ static void matches_file(void)
     CHECK(rs_scene_load_text(path, text, len, 0, NULL, &b) == RS_OK);
     if (a && b) {
       CHECK(strcmp(a->resolved_text, b->resolved_text) == 0);
-      CHECK(a->n_layers == b->n_layers);
+      CHECK(a->problem.n_layers == b->problem.n_layers);
     }
     printf("  %s: %s\n", e->d_name, a && b ? "same" : "failed");
     rs_scene_destroy(&a);
@@ -70,7 +71,7 @@ static void reads_len_bytes(void)
   rs_scene *s = NULL;
   CHECK(rs_scene_load_text("mem.yaml", buf, len, 0, NULL, &s) == RS_OK);
   if (s) {
-    CHECK(s->n_layers == 200);
+    CHECK(s->problem.n_layers == 200);
     CHECK(strcmp(s->title, "mem") == 0);         /* default title from the name */
     CHECK(strcmp(s->output.file, "mem.h5") == 0); /* default output from the name */
   }

@@ -109,19 +109,19 @@ static void check_plan(const char *scene_name, int quick, int want_nip, int want
       if (!want_nip) CHECK(strncmp(r->sets[k], "nip.", 4) != 0);
     }
     rs_scene *s = NULL;
-    rs_status st = rs_scene_load(sc->path, r->n_sets, sets, &s);
+    rs_status st = rs_scene_load(rs_scene_path(sc), r->n_sets, sets, &s);
     CHECK(st == RS_OK);
     if (st) fprintf(stderr, "run %s: %s\n", r->label, rs_error_message());
     if (s) {
-      CHECK_CLOSE(s->numerics.rtol, r->set.rtol, 0.0);
-      CHECK(s->numerics.layers_per_step == r->set.layers_per_step);
-      CHECK(s->output.history_every == r->set.history_every);
-      if (want_contact) CHECK(s->nip.nodes == r->set.nodes && s->nip.terms == r->set.terms);
+      CHECK_CLOSE(rs_scene_problem(s)->numerics.rtol, r->set.rtol, 0.0);
+      CHECK(rs_scene_problem(s)->numerics.layers_per_step == r->set.layers_per_step);
+      CHECK(rs_scene_problem(s)->record.history_every == r->set.history_every);
+      if (want_contact) CHECK(rs_scene_problem(s)->nip.nodes == r->set.nodes && rs_scene_problem(s)->nip.terms == r->set.terms);
       if (want_nip)
-        CHECK(r->set.update_every > 0 ? s->nip.update == RS_NIP_UPDATE_EVERY &&
-                                            s->nip.update_every == r->set.update_every
-                                      : s->nip.update == RS_NIP_UPDATE_ADAPTIVE &&
-                                            s->nip.T0_rtol == r->set.T0_rtol);
+        CHECK(r->set.update_every > 0 ? rs_scene_problem(s)->nip.update == RS_NIP_UPDATE_EVERY &&
+                                            rs_scene_problem(s)->nip.update_every == r->set.update_every
+                                      : rs_scene_problem(s)->nip.update == RS_NIP_UPDATE_ADAPTIVE &&
+                                            rs_scene_problem(s)->nip.T0_rtol == r->set.T0_rtol);
     }
     rs_scene_destroy(&s);
   }

@@ -36,10 +36,10 @@ static double nit_curve(const char *const *sets, int n_sets, double R, const dou
   rs_nip_contact *nc = NULL;
   double mu = 0;
   rs_status st = rs_scene_load(SCENE, n_sets, sets, &sc);
-  if (st == RS_OK) st = rs_nip_contact_create_from_spec(&sc->nip, &sc->material, &nc);
+  if (st == RS_OK) st = rs_nip_contact_create_from_spec(&rs_scene_problem(sc)->nip, &rs_scene_problem(sc)->material, &nc);
   for (int i = 0; st == RS_OK && i < n; ++i) {
-    rs_nip_state ns = {R, sc->core.radius, rs_recipe_eval(&sc->tension, R), loads[i], 0, 0};
-    ns.surface_modulus = rs_radial_modulus(&sc->material.radial, 0.0);
+    rs_nip_state ns = {R, rs_scene_problem(sc)->core.radius, rs_recipe_eval(&rs_scene_problem(sc)->tension, R), loads[i], 0, 0};
+    ns.surface_modulus = rs_radial_modulus(&rs_scene_problem(sc)->material.radial, 0.0);
     rs_nip_solution sol = {0};
     st = rs_nip_contact_solve_state(nc, &ns, &sol);
     if (st == RS_OK) nit[i] = sol.T0 - sol.Ti;
@@ -47,7 +47,7 @@ static double nit_curve(const char *const *sets, int n_sets, double R, const dou
   }
   if (st != RS_OK) printf("  error: %s\n", rs_error_message());
   CHECK(st == RS_OK);
-  if (st == RS_OK) mu = sc->nip.mu_roll;
+  if (st == RS_OK) mu = rs_scene_problem(sc)->nip.mu_roll;
   rs_nip_contact_destroy(&nc);
   rs_scene_destroy(&sc);
   return mu;
@@ -126,14 +126,14 @@ static void refused_without_g_rtheta(void)
   rs_status st = rs_scene_load_text("no-g.yaml", text, strlen(text), 0, NULL, &sc);
   CHECK(st == RS_OK);
   if (st != RS_OK) return;
-  st = rs_nip_contact_create_from_spec(&sc->nip, &sc->material, &nc);
+  st = rs_nip_contact_create_from_spec(&rs_scene_problem(sc)->nip, &rs_scene_problem(sc)->material, &nc);
   printf("  message: %s\n", rs_error_message());
   CHECK(st == RS_ERR_INPUT);
   CHECK(rs_status_exit_code(st) == 2);
   CHECK(strstr(rs_error_message(), "material.G_rtheta") != NULL);
   CHECK(nc == NULL);
   rs_nip *nip = NULL; /* the reel's seam refuses it alike */
-  st = rs_nip_create(&sc->nip, &sc->material, &nip);
+  st = rs_nip_create(&rs_scene_problem(sc)->nip, &rs_scene_problem(sc)->material, &nip);
   CHECK(st == RS_ERR_INPUT);
   CHECK(strstr(rs_error_message(), "material.G_rtheta") != NULL);
   rs_nip_destroy(&nip);

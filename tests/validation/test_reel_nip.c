@@ -20,7 +20,7 @@ static rs_reel_result *wind(const char *scene, int n_sets, const char **sets)
   rs_scene *sc = NULL;
   rs_reel_result *res = NULL;
   rs_status st = rs_scene_load(scene, n_sets, sets, &sc);
-  if (st == RS_OK) st = rs_reel_wind(sc, NULL, &res);
+  if (st == RS_OK) st = rs_scene_wind(sc, NULL, &res);
   if (st != RS_OK) printf("  error: %s\n", rs_error_message());
   CHECK(st == RS_OK);
   rs_scene_destroy(&sc);

@@ -11,27 +11,27 @@
 
 static double min_hoop(rs_recipe_kind law, double start, double end)
 {
-  rs_scene sc;
-  memset(&sc, 0, sizeof sc);
-  sc.material.caliper = 70e-6;
-  sc.material.E_theta = 3.5e9;
-  sc.material.radial.law = RS_RADIAL_PFEIFFER;
-  sc.material.radial.K1 = 5e3;
-  sc.material.radial.K2 = 60;
-  sc.core.kind = RS_CORE_RIGID;
-  sc.core.radius = 0.0762;
-  sc.final_radius = 0.16;
-  sc.n_layers = (int)lround((sc.final_radius - sc.core.radius) / sc.material.caliper);
-  sc.tension.law = law;
-  sc.tension.start = start;
-  sc.tension.end = end;
-  sc.tension.k = NAN;
-  CHECK(rs_radial_law_prepare(&sc.material.radial) == RS_OK);
-  CHECK(rs_recipe_prepare(&sc.tension, sc.core.radius, sc.final_radius) == RS_OK);
-  sc.numerics.layers_per_step = 1;
-  sc.numerics.rtol = 1e-6;
+  rs_problem pb;
+  memset(&pb, 0, sizeof pb);
+  pb.material.caliper = 70e-6;
+  pb.material.E_theta = 3.5e9;
+  pb.material.radial.law = RS_RADIAL_PFEIFFER;
+  pb.material.radial.K1 = 5e3;
+  pb.material.radial.K2 = 60;
+  pb.core.kind = RS_CORE_RIGID;
+  pb.core.radius = 0.0762;
+  pb.final_radius = 0.16;
+  pb.n_layers = (int)lround((pb.final_radius - pb.core.radius) / pb.material.caliper);
+  pb.tension.law = law;
+  pb.tension.start = start;
+  pb.tension.end = end;
+  pb.tension.k = NAN;
+  CHECK(rs_radial_law_prepare(&pb.material.radial) == RS_OK);
+  CHECK(rs_recipe_prepare(&pb.tension, pb.core.radius, pb.final_radius) == RS_OK);
+  pb.numerics.layers_per_step = 1;
+  pb.numerics.rtol = 1e-6;
   rs_reel_result *res = NULL;
-  CHECK(rs_reel_wind(&sc, NULL, &res) == RS_OK);
+  CHECK(rs_reel_wind(&pb, NULL, &res) == RS_OK);
   rs_reel_summary sum;
   rs_reel_summarize(res, &sum);
   rs_reel_result_destroy(&res);

@@ -9,6 +9,7 @@
 #include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "scene/scene_type.h" /* the scene's web length: this test looks inside */
 
 #ifndef RS_ROOT_DIR
 #error "RS_ROOT_DIR must name the project root"
@@ -22,7 +23,7 @@ static rs_reel_result *wind(rs_scene **sc)
   *sc = NULL;
   CHECK(rs_scene_load(RS_ROOT_DIR "/cases/pet-topweb.yaml", 0, NULL, sc) == RS_OK);
   if (!*sc) return NULL;
-  CHECK(rs_reel_wind(*sc, NULL, &res) == RS_OK);
+  CHECK(rs_scene_wind(*sc, NULL, &res) == RS_OK);
   return res;
 }
 
@@ -39,7 +40,7 @@ static void diameter(void)
   CHECK_LOG("layers", res->n_layers);
   CHECK_LOG("reelsim diameter (m)", D);
   CHECK_LOG("closed-form diameter (m)", D_closed);
-  CHECK(sc->material.caliper == t && sc->core.radius == 0.5 * D0 && sc->web_length == L);
+  CHECK(sc->problem.material.caliper == t && sc->problem.core.radius == 0.5 * D0 && sc->web_length == L);
   CHECK(res->n_layers == (int)lround((0.5 * D_closed - 0.5 * D0) / t));
   CHECK_ABS(D, D_closed, t);
   CHECK_ABS(D, 0.636, 0.5e-3); /* TopWeb's 636 mm, as rounded there */
@@ -56,11 +57,11 @@ static void hoop_compression_no_buckling(void)
   rs_reel_result *res = wind(&sc);
   if (!res) return;
   rs_defect_limits lim;
-  rs_defect_limits_from_scene(sc, &lim);
+  rs_defect_limits_from_problem(rs_scene_problem(sc), &lim);
   rs_defect_report *rep = NULL;
   CHECK(rs_defects_assess(res, &lim, &rep) == RS_OK);
   if (rep) {
-    double T0_t = 150.0 / sc->material.caliper; /* 1.5 MPa */
+    double T0_t = 150.0 / sc->problem.material.caliper; /* 1.5 MPa */
     CHECK_LOG("layers in hoop compression", rep->hoop.layers);
     CHECK_LOG("of layers", res->n_layers);
     CHECK_LOG("least sigma_theta / (T0/t)", rep->hoop.min / T0_t);

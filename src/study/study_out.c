@@ -8,8 +8,8 @@
 
 #include "output/h5_layout.h"
 #include "output/h5_util.h"
-#include "output/staging.h"
-#include "reelsim/output.h"
+#include "util/atomic_file.h"
+#include "reelsim/study.h"
 
 typedef enum col_kind { COL_DOUBLE, COL_INT, COL_STRING } col_kind;
 
@@ -180,9 +180,9 @@ static rs_status build_study(hid_t file, const void *vctx)
   const rs_study_report *rep = c->rep;
   hid_t g = -1, runs = -1, orders = -1;
   rs_status st = rs_h5_group_create(file, "study", &g);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "title", c->scene->title);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "scene_file", c->scene->path);
-  if (st == RS_OK) st = rs_h5_attr_string(g, "scene", c->scene->resolved_text);
+  if (st == RS_OK) st = rs_h5_attr_string(g, "title", rs_scene_title(c->scene));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "scene_file", rs_scene_path(c->scene));
+  if (st == RS_OK) st = rs_h5_attr_string(g, "scene", rs_scene_resolved_text(c->scene));
   if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->n_layers);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "quick", rep->plan->quick);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "runs", rep->plan->n_runs);
@@ -213,7 +213,7 @@ static rs_status build_study(hid_t file, const void *vctx)
   return st;
 }
 
-rs_status rs_output_write_study(const char *path, const rs_scene *scene, const rs_study_report *rep)
+rs_status rs_study_write(const char *path, const rs_scene *scene, const rs_study_report *rep)
 {
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
   if (!scene || !rep || !rep->plan || !rep->rows)
@@ -239,10 +239,10 @@ static void csv_string(FILE *f, const char *s)
   fputc('"', f);
 }
 
-rs_status rs_output_write_study_csv(const char *path, const rs_study_report *rep)
+rs_status rs_study_write_csv(const char *path, const rs_study_report *rep)
 {
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
-  rs_status st = rs_staging_check_target(path);
+  rs_status st = rs_atomic_file_check_target(path);
   if (st != RS_OK) return st;
   char *text = NULL, buf[RS_STUDY_MAX_SETS * RS_STUDY_SET_LEN];
   size_t size = 0;
@@ -272,7 +272,7 @@ rs_status rs_output_write_study_csv(const char *path, const rs_study_report *rep
     free(text);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory for the study CSV");
   }
-  st = rs_staging_write(path, text, size);
+  st = rs_atomic_file_write(path, text, size);
   free(text);
   return st;
 }

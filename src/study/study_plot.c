@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "plot/gnuplot.h"
-#include "reelsim/plot.h"
+#include "reelsim/study.h"
 
 static const char *const knob_color[RS_N_KNOBS] = {
     [RS_KNOB_RTOL] = "#1f77b4",    [RS_KNOB_LAYERS] = "#d62728",  [RS_KNOB_NODES] = "#2ca02c",
@@ -48,7 +48,7 @@ static int by_time(const void *a, const void *b)
   return (x[0] > y[0]) - (x[0] < y[0]);
 }
 
-rs_status rs_plot_study(const rs_study_report *rep, const char *title, const char *png,
+rs_status rs_study_plot(const rs_study_report *rep, const char *title, const char *png,
                         const rs_plot_options *opts)
 {
   const rs_study_plan *plan = rep->plan;

@@ -1,9 +1,9 @@
-/* Putting a finished file in place (internal to the output module): the bytes go to
+/* Atomic files (base layer, internal): putting a finished file in place. The bytes go to
  * "<path>.tmp.<pid>.<n>" beside the target, are flushed to disk, and the temporary is
  * renamed onto `path`. rename() within one directory is atomic on POSIX file systems,
  * so readers see either the old file or the whole new one, never a part. */
-#ifndef RS_OUTPUT_STAGING_H
-#define RS_OUTPUT_STAGING_H
+#ifndef RS_UTIL_ATOMIC_FILE_H
+#define RS_UTIL_ATOMIC_FILE_H
 
 #include <stddef.h>
 
@@ -12,19 +12,19 @@
 /* Checks, before any work, what users most often get wrong: the directory of `path`
  * is missing, not a directory or not writable, or `path` itself is a directory or a
  * device. Records RS_ERR_IO with a message naming the path. */
-rs_status rs_staging_check_target(const char *path);
+rs_status rs_atomic_file_check_target(const char *path);
 
 /* Writes `size` bytes to a new temporary beside `path` and renames it onto `path`.
  * On failure the temporary is removed and an existing file at `path` is untouched;
  * the error (RS_ERR_IO) names the path and gives the system's reason. */
-rs_status rs_staging_write(const char *path, const void *data, size_t size);
+rs_status rs_atomic_file_write(const char *path, const void *data, size_t size);
 
 /* The same in two steps, for several files that should appear together: prepare writes
  * the bytes to a flushed temporary beside `path` (*tmp, malloc'd); commit renames it onto
  * `path` and frees *tmp; abort removes the temporary and frees *tmp (NULL is fine).
  * Preparing every file before committing any keeps a failure from leaving a mix. */
-rs_status rs_staging_prepare(const char *path, const void *data, size_t size, char **tmp);
-rs_status rs_staging_commit(const char *path, char **tmp);
-void rs_staging_abort(char **tmp);
+rs_status rs_atomic_file_prepare(const char *path, const void *data, size_t size, char **tmp);
+rs_status rs_atomic_file_commit(const char *path, char **tmp);
+void rs_atomic_file_abort(char **tmp);
 
 #endif

@@ -1,6 +1,6 @@
-/* Temporary name, target checks and the final rename; see staging.h. */
+/* Temporary name, target checks and the final rename; see atomic_file.h. */
 
-#include "output/staging.h"
+#include "util/atomic_file.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -58,7 +58,7 @@ static rs_status check_dir(const char *path, const char *dir)
   return RS_OK;
 }
 
-rs_status rs_staging_check_target(const char *path)
+rs_status rs_atomic_file_check_target(const char *path)
 {
   struct stat sb;
   char *dir = dir_of(path);
@@ -132,7 +132,7 @@ static void sync_dir_of(const char *path)
   free(dir);
 }
 
-rs_status rs_staging_prepare(const char *path, const void *data, size_t size, char **tmp)
+rs_status rs_atomic_file_prepare(const char *path, const void *data, size_t size, char **tmp)
 {
   char why[256];
   int fd;
@@ -155,12 +155,12 @@ rs_status rs_staging_prepare(const char *path, const void *data, size_t size, ch
     errno_text(err, why, sizeof why);
     st = RS_ERROR(RS_ERR_IO, "cannot %s output file '%s' (temporary '%s'): %s", failed, path,
                   *tmp, why);
-    rs_staging_abort(tmp);
+    rs_atomic_file_abort(tmp);
   }
   return st;
 }
 
-rs_status rs_staging_commit(const char *path, char **tmp)
+rs_status rs_atomic_file_commit(const char *path, char **tmp)
 {
   char why[256];
   rs_status st = RS_OK;
@@ -168,7 +168,7 @@ rs_status rs_staging_commit(const char *path, char **tmp)
     errno_text(errno, why, sizeof why);
     st = RS_ERROR(RS_ERR_IO, "cannot rename the temporary onto output file '%s' (temporary '%s'): %s",
                   path, *tmp, why);
-    rs_staging_abort(tmp);
+    rs_atomic_file_abort(tmp);
     return st;
   }
   sync_dir_of(path);
@@ -177,7 +177,7 @@ rs_status rs_staging_commit(const char *path, char **tmp)
   return st;
 }
 
-void rs_staging_abort(char **tmp)
+void rs_atomic_file_abort(char **tmp)
 {
   if (!tmp || !*tmp) return;
   unlink(*tmp);
@@ -185,10 +185,10 @@ void rs_staging_abort(char **tmp)
   *tmp = NULL;
 }
 
-rs_status rs_staging_write(const char *path, const void *data, size_t size)
+rs_status rs_atomic_file_write(const char *path, const void *data, size_t size)
 {
   char *tmp = NULL;
-  rs_status st = rs_staging_prepare(path, data, size, &tmp);
-  if (st == RS_OK) st = rs_staging_commit(path, &tmp);
+  rs_status st = rs_atomic_file_prepare(path, data, size, &tmp);
+  if (st == RS_OK) st = rs_atomic_file_commit(path, &tmp);
   return st;
 }

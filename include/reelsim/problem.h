@@ -1,0 +1,49 @@
+/* A winding problem: everything the reel needs to wind one roll, as plain data.
+ *
+ * The physics (material, core, tension recipe, nip) and the numerics, and what the reel
+ * itself records (stress history, nip profiles). No file format: a scene (reelsim/scene.h)
+ * resolves a YAML file into one, and a program may equally fill one in itself. */
+#ifndef REELSIM_PROBLEM_H
+#define REELSIM_PROBLEM_H
+
+#include "reelsim/core.h"
+#include "reelsim/material.h"
+#include "reelsim/nip.h"
+#include "reelsim/recipe.h"
+#include "reelsim/roll.h"
+
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
+
+enum { RS_MAX_PROFILES = 64 };
+
+typedef struct rs_numerics {
+  int layers_per_step;     /* layers wound per increment */
+  double rtol;             /* CVODE relative tolerance */
+  double atol;             /* CVODE absolute tolerance (0: = rtol) */
+  long max_steps;          /* CVODE steps per increment */
+  rs_reuse reuse;          /* keep the deep part of an earlier integration (default) or not */
+  rs_load_placement load_placement; /* where a new layer's load goes (default: beneath it) */
+} rs_numerics;
+
+/* What the reel records beside the final state. */
+typedef struct rs_record_spec {
+  int history_every;       /* layers between stored history stages; 0 = no history */
+  int n_profiles;          /* contact distributions kept (contact nip only) */
+  double nip_profiles_at[RS_MAX_PROFILES]; /* m, roll radii of those */
+} rs_record_spec;
+
+typedef struct rs_problem {
+  rs_material material;
+  rs_core core;
+  double final_radius;     /* m */
+  int n_layers;            /* round((final_radius - core radius) / caliper) */
+  rs_recipe tension;       /* N/m, web tension against radius */
+  double accel_torque;     /* N m/m, torque during speed changes (slip check); 0 = not given */
+  rs_nip_spec nip;         /* model RS_NIP_NONE: T0 = web tension */
+  rs_numerics numerics;
+  rs_record_spec record;
+} rs_problem;
+
+RS_END_DECLS
+#endif

@@ -1,0 +1,13 @@
+/* The figures of a file (internal to the plot module): drawn by the files named, called
+ * only by rs_plot_file (plot.c), so that the figures depend on the shared pieces
+ * (plot_internal.h, figure.c) and not on the entry point. */
+#ifndef RS_PLOT_FIGURES_H
+#define RS_PLOT_FIGURES_H
+
+#include "plot/plot_internal.h"
+
+rs_status plot_run_figures(plot_ctx *c, const run_data *d);      /* plot_run.c */
+rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n); /* plot_compare.c */
+rs_status plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run); /* plot_nip.c */
+
+#endif
