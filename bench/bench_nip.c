@@ -41,6 +41,7 @@ static void setup(void)
   mat.E_theta = 5e9;
   mat.nu_rtheta = 0.01;
   mat.nu_md_cd = 0.3;
+  mat.G_rtheta = 7e7; /* E_theta/70, paper's out-of-plane shear (models/newsprint.yaml) */
   mat.radial.law = RS_RADIAL_PFEIFFER;
   mat.radial.K1 = 1e4;
   mat.radial.K2 = 50;

@@ -14,7 +14,7 @@ seconds="${1:-${RS_FUZZ_SECONDS:-60}}"
 command -v clang >/dev/null || { echo "fuzz: clang is not installed (scripts/setup.sh installs it)" >&2; exit 1; }
 
 CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREELSIM_FUZZ=ON \
-  -DREELSIM_BENCH=OFF >/dev/null
+  -DREELSIM_BENCH=OFF -DREELSIM_DEVELOPER=ON >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target fuzz_scene >/dev/null
 
 work="$(mktemp -d)"

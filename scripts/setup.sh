@@ -20,5 +20,8 @@ if [ -n "$missing" ]; then
 fi
 
 BUILD_DIR="${RS_BUILD_DIR:-build}"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="${RS_BUILD_TYPE:-RelWithDebInfo}" ${RS_CMAKE_ARGS:-} >/dev/null
+# A developer/CI build: warnings are errors, and AVX2 where this machine has it (a plain
+# `cmake -S . -B b` is the portable build a user of the library gets).
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="${RS_BUILD_TYPE:-RelWithDebInfo}" \
+  -DREELSIM_DEVELOPER=ON -DREELSIM_SIMD=ON ${RS_CMAKE_ARGS:-} >/dev/null
 cmake --build "$BUILD_DIR" -j "$(nproc)"

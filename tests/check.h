@@ -7,7 +7,8 @@
  *   int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
  *
  * ctest runs one entry per case (`exe altmann_rigid`); without an argument every case
- * runs. Values print to 17 significant digits so a failure shows what really differed. */
+ * runs. Values print to 17 significant digits so a failure shows what really differed.
+ * A case that runs no check fails: it could not have caught anything. */
 #ifndef RS_TESTS_CHECK_H
 #define RS_TESTS_CHECK_H
 
@@ -74,10 +75,15 @@ static inline int check_main_(int argc, char **argv, const check_case *cases, si
   int ran = 0;
   for (size_t i = 0; i < n; ++i) {
     if (argc > 1 && strcmp(argv[1], cases[i].name) != 0) continue;
-    int before = check_failures;
+    int before = check_failures, counted = check_count;
     printf("case %s\n", cases[i].name);
     fflush(stdout);
     cases[i].fn();
+    if (check_count == counted) {
+      ++check_failures;
+      fprintf(stderr, "case %s ran no check: a test that checks nothing cannot fail\n",
+              cases[i].name);
+    }
     printf("case %s: %s\n", cases[i].name, check_failures == before ? "ok" : "FAILED");
     ++ran;
   }

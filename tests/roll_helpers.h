@@ -79,23 +79,35 @@ static inline void altmann_increment(double g, double kc, double rc, double s, d
   *rds = -(T / s) * ((g - 1.0) * a - (g + 1.0) * b) / den;
 }
 
-/* sigma_r, sigma_theta per layer and core pressure from the closed form, accumulated. */
+/* sigma_r, sigma_theta per layer and core pressure from the closed form, accumulated, with
+ * layer k's load where `placement` puts it: on the roll beneath it (the increment on
+ * [rc, s_{k-1}]; a layer's hoop stress is its mean over the turn) or at its own outer
+ * radius s_k (Hakiel: layer k itself keeps T/t; hoop stress at the outer radius). */
 static inline void altmann_roll(double g, double kc, double rc, double t, int n, double T,
-                                double *sr, double *st, double *core_p)
+                                double *sr, double *st, double *core_p,
+                                rs_load_placement placement)
 {
+  const int shift = placement == RS_LOAD_BENEATH;
   double core = 0.0;
   for (int j = 0; j < n; ++j) {
     sr[j] = 0.0;
     st[j] = T / t;
   }
   for (int k = 1; k <= n; ++k) {
-    double s = rc + k * t, ds, rds;
+    const int top = k - shift; /* the node the layer loads */
+    double s = rc + top * t, ds, rds;
     altmann_increment(g, kc, rc, s, T, rc, &ds, &rds);
     core += ds;
-    for (int j = 1; j <= k; ++j) {
+    double ds_below = ds; /* at the inner face of turn j */
+    for (int j = 1; j <= top; ++j) {
       altmann_increment(g, kc, rc, s, T, rc + j * t, &ds, &rds);
       sr[j - 1] += ds;
-      if (j < k) st[j - 1] += ds + rds;
+      /* beneath: the turn's mean hoop stress, the exact integral of d(r ds)/dr over it */
+      if (shift)
+        st[j - 1] += ((rc + j * t) * ds - (rc + (j - 1) * t) * ds_below) / t;
+      else if (j < k)
+        st[j - 1] += ds + rds;
+      ds_below = ds;
     }
   }
   *core_p = -core;

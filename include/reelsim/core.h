@@ -2,9 +2,8 @@
 #ifndef REELSIM_CORE_H
 #define REELSIM_CORE_H
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef enum rs_core_kind { RS_CORE_RIGID, RS_CORE_ELASTIC, RS_CORE_TUBE } rs_core_kind;
 
@@ -25,7 +24,5 @@ double rs_core_stiffness(const rs_core *core);
 
 const char *rs_core_kind_name(rs_core_kind kind);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

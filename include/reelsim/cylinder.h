@@ -42,9 +42,8 @@
 
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* Orthotropic constants of eq. (2), Pa. Positive definite: A_rr, A_tt, G_rt > 0 and
  * A_rr A_tt > A_rt^2. */
@@ -185,7 +184,5 @@ rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double 
                                        const rs_series_opts *opts, double a_max, double rtol,
                                        rs_contact_result *out);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

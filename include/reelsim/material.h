@@ -5,9 +5,8 @@
 
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 enum { RS_TABLE_MAX = 256, RS_HAKIEL_MAX_COEF = 5, RS_NAME_MAX = 128 };
 
@@ -58,7 +57,5 @@ typedef struct rs_material {
   double friction_layer; /* web-on-web friction coefficient (slip check); 0 = not given */
 } rs_material;
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -10,9 +10,8 @@
 #include "reelsim/recipe.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef enum rs_nip_model_kind {
   RS_NIP_NONE,     /* no nip section: T0 = web tension, no nip code runs */
@@ -101,7 +100,5 @@ rs_status rs_nip_wrap(const rs_nip_ops *ops, void *ctx, rs_nip **out);
 /* The friction model: T0 = Ti + mu * P (Good, Wu & Fikes 1994). */
 rs_status rs_nip_friction_create(double mu_roll, rs_nip **out);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

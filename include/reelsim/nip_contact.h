@@ -40,9 +40,8 @@
 #include "reelsim/sheet.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_nip_contact_config {
   rs_ortho drum;               /* constants of the lower cylinder (plane strain) */
@@ -148,7 +147,5 @@ double rs_radial_secant_modulus(const rs_radial_law *law, double p0, double dp);
 /* The nip seam entry: an rs_nip handle for RS_NIP_CONTACT (used by rs_nip_create). */
 rs_status rs_nip_contact_nip_create(const rs_nip_spec *spec, const rs_material *mat, rs_nip **out);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -8,9 +8,8 @@
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* Writes the result to `path`: first to a temporary name beside it, renamed onto
  * `path` only when complete, so a failed run never leaves a file that looks whole. */
@@ -50,7 +49,5 @@ rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *
  * that the groups sort in run order. */
 void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

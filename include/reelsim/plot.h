@@ -14,9 +14,8 @@
 
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_plot_options {
   const char *gnuplot; /* program to run; NULL: "gnuplot" from PATH */
@@ -33,7 +32,5 @@ rs_status rs_plot_file(const char *file, const char *dir, const rs_plot_options 
                        char ***written, int *n_written);
 void rs_plot_list_free(char ***list, int n);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -12,9 +12,8 @@
 #include "reelsim/recipe.h"
 #include "reelsim/roll.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 enum { RS_MAX_PROFILES = 64 };
 
@@ -24,6 +23,7 @@ typedef struct rs_numerics {
   double atol;             /* CVODE absolute tolerance (0: = rtol) */
   long max_steps;          /* CVODE steps per increment */
   rs_reuse reuse;          /* keep the deep part of an earlier integration (default) or not */
+  rs_load_placement load_placement; /* where a new layer's load goes (default: beneath it) */
 } rs_numerics;
 
 /* What the reel records beside the final state. */
@@ -45,7 +45,5 @@ typedef struct rs_problem {
   rs_record_spec record;
 } rs_problem;
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -18,9 +18,8 @@
 
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_reader rs_reader;
 
@@ -68,7 +67,5 @@ rs_status rs_reader_attr_int64(const rs_reader *r, const char *path, const char 
  * rs_reader_free_strings. RS_ERR_INPUT when `path` is not a group. */
 rs_status rs_reader_children(const rs_reader *r, const char *path, char ***names, size_t *n);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

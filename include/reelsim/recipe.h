@@ -5,9 +5,8 @@
 #include "reelsim/material.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef enum rs_recipe_kind {
   RS_RECIPE_CONSTANT,   /* value = start */
@@ -40,7 +39,5 @@ rs_status rs_recipe_prepare(rs_recipe *rc, double r0, double r1);
 
 const char *rs_recipe_law_name(rs_recipe_kind law);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -5,9 +5,8 @@
 #include "reelsim/problem.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 struct rs_nip_solution;
 
@@ -109,7 +108,5 @@ typedef struct rs_reel_job {
  * NULL) how many threads ran. */
 rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -2,9 +2,11 @@
  *
  * Plane stress, axisymmetric, cylindrically orthotropic roll on a core (Hakiel 1987).
  * Each call to rs_roll_add_layers winds m layers of caliper t at wound-on tensions T0
- * (N/m) and adds the stress increment ds(r) on [r_c, s], s the new outer radius, that
- * solves   r^2 ds'' + 3 r ds' - (g^2 - 1) ds = 0,  g^2 = E_theta / E_r(P)   with
- * ds(s) = -sum(T0) / s and the core condition r_c ds'(r_c) = (E_theta/E_c + nu - 1) ds(r_c).
+ * (N/m); each layer k adds the stress increment ds(r) that solves
+ *     r^2 ds'' + 3 r ds' - (g^2 - 1) ds = 0,  g^2 = E_theta / E_r(P)
+ * with the core condition r_c ds'(r_c) = (E_theta/E_c + nu - 1) ds(r_c) and, by default,
+ * ds(s_{k-1}) = -T0/s_{k-1} on the roll beneath the layer (RS_LOAD_BENEATH), or Hakiel's
+ * ds(s_k) = -T0/s_k at its outer radius (RS_LOAD_HAKIEL).
  * E_r is the tangent radial modulus at the pressure before the increment (frozen).
  * See docs/roll-model.md for the scale-free (Riccati) formulation that never overflows. */
 #ifndef REELSIM_ROLL_H
@@ -13,9 +15,8 @@
 #include "reelsim/material.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef struct rs_roll rs_roll;
 
@@ -27,6 +28,17 @@ typedef enum rs_lumping {
   RS_LUMP_FROZEN = 1     /* the first scheme: the block's load at its outer radius, modulus
                             frozen before the block (kept for comparison) */
 } rs_lumping;
+
+/* Where a new layer's wound-on load goes (docs/roll-model.md, "Where a new layer's load
+ * goes"). Both meet as the caliper goes to zero; they differ at first order in t. */
+typedef enum rs_load_placement {
+  RS_LOAD_BENEATH = 0,   /* the default: the layer joins at hoop stress T0/t and, as a thin
+                            ring, presses on the roll beneath it: the increment lives on
+                            [r_c, s_{k-1}] with ds(s_{k-1}) = -T0/s_{k-1}, the new layer's
+                            outer face is traction free (the exact statics of real layers) */
+  RS_LOAD_HAKIEL = 1     /* Hakiel (1987): ds(s_k) = -T0/s_k at the new layer's outer radius,
+                            the new layer part of the loaded body */
+} rs_load_placement;
 
 /* Whether an increment may keep the deep part of an earlier integration from the core
  * where the modulus has barely changed since, and integrate only from there up (the error
@@ -50,6 +62,7 @@ typedef struct rs_roll_params {
   long max_steps;          /* CVODE internal steps per increment; <= 0: 100000 */
   rs_lumping lumping;      /* lumped increments; 0 = RS_LUMP_CORRECTED */
   rs_reuse reuse;          /* 0 = RS_REUSE_ON */
+  rs_load_placement placement; /* 0 = RS_LOAD_BENEATH */
 } rs_roll_params;
 
 typedef struct rs_roll_stats {
@@ -65,7 +78,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out);
 void rs_roll_destroy(rs_roll **roll); /* accepts NULL and *roll == NULL */
 
 /* Winds m >= 1 layers in one increment; T0[i] >= 0 (N/m) is the wound-on tension of
- * the i-th of them, innermost first. The outer condition is ds(s) = -sum(T0)/s. */
+ * the i-th of them, innermost first; each layer's load where params.placement puts it. */
 rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0);
 
 int rs_roll_layers(const rs_roll *roll);
@@ -76,7 +89,8 @@ double rs_roll_layer_radius(const rs_roll *roll, int j);   /* outer radius of la
 const double *rs_roll_sigma_r(const rs_roll *roll);
 const double *rs_roll_sigma_theta(const rs_roll *roll);
 double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression positive */
-/* Tangent radial modulus E_r (Pa) of the outermost layer at its current pressure. */
+/* Tangent radial modulus E_r (Pa) at the outermost loaded interface: under the outermost
+ * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL). */
 double rs_roll_surface_modulus(const rs_roll *roll);
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats);
 
@@ -90,7 +104,5 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *state);
 /* Restores a state saved from this roll (same parameters). */
 rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *state);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

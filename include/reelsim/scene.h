@@ -14,9 +14,8 @@
 #include "reelsim/reel.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 enum { RS_PATH_MAX = 4096 };
 
@@ -55,7 +54,5 @@ void rs_scene_name(const rs_scene *scene, char *buf, size_t size);
  * ("  - core: elastic (E_c = 1e9 Pa), radius 76.2 mm", "  - nip: none (T0 = web tension)"). */
 void rs_scene_print_effects(const rs_scene *scene, FILE *out);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -21,9 +21,8 @@
 
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* Engineering constants of the sheet. Poisson convention nu_ij = -eps_j / eps_i under a
  * uniaxial stress in direction i (so nu_ij / E_i = nu_ji / E_j). nu_md_zd is the ratio the
@@ -59,7 +58,5 @@ double rs_sheet_thinning(const rs_sheet *s, double N, double p);
 /* eps+ = eps- = c11 N / (2h) - c12 p: MD strain of both faces (tension positive). */
 double rs_sheet_strain(const rs_sheet *s, double N, double p);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -7,9 +7,8 @@
 #ifndef REELSIM_STATUS_H
 #define REELSIM_STATUS_H
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 typedef enum rs_status {
   RS_OK = 0,
@@ -40,7 +39,5 @@ void rs_error_clear(void);
 const char *rs_status_name(rs_status st);
 int rs_status_exit_code(rs_status st); /* 0, 2 (input), 3 (solver), 1 (other) */
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -15,9 +15,8 @@
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
 
 /* ---- the Pareto front ----------------------------------------------------------------- */
 
@@ -208,7 +207,5 @@ rs_status rs_study_plot(const rs_study_report *rep, const char *title, const cha
  * (and finite, positive x and error). Returns NAN with fewer than two such points. */
 double rs_study_order(int n, const double *x, const double *error, double floor);
 
-#ifdef __cplusplus
-}
-#endif
+RS_END_DECLS
 #endif

@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "cli/cli.h"
+#include "reelsim/clock.h"
 #include "cli/signals.h"
 #include "reelsim/output.h"
 #include "reelsim/reel.h"
@@ -30,13 +30,6 @@ static int on_progress(void *user, int layers_done, int layers_total)
   (void)layers_done;
   (void)layers_total;
   return cli_signal_caught() != 0;
-}
-
-static double now_seconds(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 typedef struct compare_state {
@@ -110,7 +103,7 @@ static int check_jobs(compare_state *c)
       cli_fail(k, "%s: solver failure: %s", rs_scene_path(c->scenes[i]), job->message);
     else
       cli_fail(k, "%s: %s: %s", rs_scene_path(c->scenes[i]), rs_status_name(job->status), job->message);
-    if (job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
+    if (cli_fail_is_verbose() && job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
     if (job->result && job->status == RS_ERR_SOLVER)
       fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
               rs_scene_problem(c->scenes[i])->n_layers);
@@ -131,7 +124,7 @@ static void free_state(compare_state *c)
 
 int cli_compare(const cli_args *a)
 {
-  double t0 = now_seconds();
+  double t0 = rs_clock_wall();
   compare_state c = {.n = a->n_scenes, .output = a->output ? a->output : default_output};
   c.scenes = calloc((size_t)c.n, sizeof *c.scenes);
   c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
@@ -187,7 +180,7 @@ int cli_compare(const cli_args *a)
   }
 
   code = check_jobs(&c);
-  if (!a->quiet) print_table(&c, now_seconds() - t0, threads);
+  if (!a->quiet) print_table(&c, rs_clock_wall() - t0, threads);
   if (code != CLI_EXIT_OK) {
     fprintf(stderr, "reelsim: compare: a run failed; no output written\n");
     goto done;

@@ -29,41 +29,16 @@ static const char *winder_name(rs_winder_kind w)
   return w == RS_WINDER_CENTER ? "center" : w == RS_WINDER_SURFACE ? "surface" : "center-surface";
 }
 
-int cli_nip(int argc, char **argv, int first)
+int cli_nip(const cli_args *a)
 {
-  const char *scene_path = NULL, *radius_text = NULL;
-  int json = 0, n_sets = 0;
-  const char **sets = calloc((size_t)argc, sizeof *sets);
-  if (!sets) return cli_fail(CLI_EXIT_OTHER, "out of memory");
-  for (int i = first; i < argc; ++i) {
-    if (!strcmp(argv[i], "--json")) json = 1;
-    else if (!strcmp(argv[i], "--radius") && i + 1 < argc) radius_text = argv[++i];
-    else if (!strcmp(argv[i], "--set") && i + 1 < argc) sets[n_sets++] = argv[++i];
-    else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      free(sets);
-      printf("usage: reelsim nip SCENE --radius R [--json] [--set key.path=value]...\n"
-             "  Solves the scene's contact nip (nip.model: contact) at roll radius R (m):\n"
-             "  half-width, load, wound-on tension T0, stick/slip zones (docs/nip.md).\n");
-      return CLI_EXIT_OK;
-    } else if (argv[i][0] == '-' || scene_path) {
-      free(sets);
-      return cli_fail(CLI_EXIT_USAGE, "nip: unexpected argument '%s' (usage: reelsim nip SCENE "
-                      "--radius R [--json] [--set key=value])", argv[i]);
-    } else scene_path = argv[i];
-  }
-  if (!scene_path || !radius_text) {
-    free(sets);
-    return cli_fail(CLI_EXIT_USAGE, "nip: need SCENE and --radius R (m)");
-  }
+  const char *scene_path = a->scene, *radius_text = a->radius;
+  if (!radius_text) return cli_fail(CLI_EXIT_USAGE, "nip: need SCENE and --radius R (m)");
   char *end = NULL;
   double R = strtod(radius_text, &end);
-  if (!end || *end || !(isfinite(R) && R > 0)) {
-    free(sets);
+  if (!end || *end || !(isfinite(R) && R > 0))
     return cli_fail(CLI_EXIT_USAGE, "nip: --radius must be a positive number of metres (got '%s')", radius_text);
-  }
   rs_scene *scene = NULL;
-  rs_status st = rs_scene_load(scene_path, n_sets, sets, &scene);
-  free(sets);
+  rs_status st = rs_scene_load(scene_path, a->n_sets, a->sets, &scene);
   if (st) return cli_fail_status(st);
   const rs_problem *pb = rs_scene_problem(scene);
   if (pb->nip.model != RS_NIP_CONTACT) {
@@ -90,7 +65,7 @@ int cli_nip(int argc, char **argv, int first)
     return cli_fail_status(st);
   }
   int M = sol.M, E = M - 1;
-  if (json) {
+  if (a->json) {
     printf("{\"radius\":%.17g,\"winder\":\"%s\",\"a\":%.17g,\"load\":%.17g,\"Ti\":%.17g,\"T0\":%.17g,"
            "\"NIT\":%.17g,\"xi2\":%.17g,\"delta0\":%.17g,\"eps0\":%.17g,\"E_r\":%.17g,"
            "\"iterations\":%d,\"width_iterations\":%d,\"total_solves\":%d,"

@@ -17,21 +17,15 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "reelsim/clock.h"
 #include "reelsim/output.h"
+#include "cli/outdir.h"
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
-
-static double now_seconds(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct progress {
   int done, total;
@@ -71,7 +65,7 @@ static int on_progress(void *user, int layers_done, int layers_total)
   p->done = layers_done;
   p->total = layers_total;
   if (p->bar) {
-    double now = now_seconds();
+    double now = rs_clock_wall();
     if (now - p->t_start >= 1.0 && now - p->t_last >= 0.1) {
       progress_draw(p, now);
       p->t_last = now;
@@ -134,7 +128,7 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
 
 int cli_run(const cli_args *a)
 {
-  double t0 = now_seconds();
+  double t0 = rs_clock_wall();
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
 
@@ -142,9 +136,9 @@ int cli_run(const cli_args *a)
   rs_reel_result *res = NULL;
   rs_defect_report *defects = NULL;
   int code = CLI_EXIT_OK;
-  /* a mistyped --csv directory must not cost a whole winding */
-  rs_status st = a->csv_dir ? rs_output_check_csv_dir(a->csv_dir) : RS_OK;
-  if (st == RS_OK) st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
+  /* a --csv path that cannot be a directory must not cost a whole winding */
+  if (a->csv_dir && (code = cli_outdir_check("--csv", a->csv_dir)) != CLI_EXIT_OK) goto done;
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
@@ -198,14 +192,21 @@ int cli_run(const cli_args *a)
   if (st == RS_OK) st = rs_output_write(rs_scene_output_file(scene), scene, res);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
+    cli_outdir made;
+    if ((code = cli_outdir_make("--csv", a->csv_dir, &made)) != CLI_EXIT_OK) {
+      cli_outdir_undo(&made);
+      goto done;
+    }
     rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv(a->csv_dir, stem, res);
+    if (st != RS_OK) cli_outdir_undo(&made);
+    else cli_outdir_free(&made);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, now_seconds() - t0);
+  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, rs_clock_wall() - t0);
 
 done:
   rs_defect_report_destroy(&defects);

@@ -8,111 +8,30 @@
  * each against the reference, prints a table and writes DIR/study.h5, DIR/study.csv and
  * DIR/study.png. A run other than the references and the defaults that fails is reported
  * and left out of the front; a failed reference or default run stops the study (exit 3). */
-#include <errno.h>
 #include <math.h>
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
 
 #include "cli/cli.h"
+#include "cli/outdir.h"
+#include "cli/signals.h"
+#include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "reelsim/plot.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/study.h"
 
-static atomic_int interrupted;
-
-static void on_sigint(int sig)
-{
-  (void)sig;
-  atomic_store(&interrupted, 1);
-}
+static const char DIR_LABEL[] = "study: output directory";
 
 static int on_progress(void *user, int done, int total)
 {
   (void)user;
   (void)done;
   (void)total;
-  return atomic_load(&interrupted) != 0;
-}
-
-static double now_seconds(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-typedef struct study_args {
-  const char *scene, *dir;
-  int quick, quiet, jobs;
-  int n_sets;
-  const char **sets;
-} study_args;
-
-static int parse(int argc, char **argv, study_args *a)
-{
-  memset(a, 0, sizeof *a);
-  a->jobs = 1;
-  if (!(a->sets = calloc((size_t)argc + 1, sizeof *a->sets)))
-    return cli_fail(CLI_EXIT_OTHER, "out of memory");
-  for (int i = 2; i < argc; ++i) {
-    const char *arg = argv[i];
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-      cli_usage(stdout, "study");
-      return CLI_EXIT_OK;
-    } else if (strcmp(arg, "--set") == 0 || strcmp(arg, "-s") == 0) {
-      if (i + 1 >= argc) return cli_fail(CLI_EXIT_USAGE, "study: --set needs key.path=value");
-      a->sets[a->n_sets++] = argv[++i];
-    } else if (strncmp(arg, "--set=", 6) == 0) {
-      a->sets[a->n_sets++] = arg + 6;
-    } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--output") == 0) {
-      if (i + 1 >= argc || !argv[i + 1][0])
-        return cli_fail(CLI_EXIT_USAGE, "study: %s needs a directory", arg);
-      a->dir = argv[++i];
-    } else if (strncmp(arg, "--output=", 9) == 0 && arg[9]) {
-      a->dir = arg + 9;
-    } else if (strcmp(arg, "--quick") == 0) {
-      a->quick = 1;
-    } else if (strcmp(arg, "--jobs") == 0 || strcmp(arg, "-j") == 0 ||
-               strncmp(arg, "--jobs=", 7) == 0) {
-      const char *v = arg[6] == '=' ? arg + 7 : i + 1 < argc ? argv[++i] : "";
-      char *end;
-      long j = strtol(v, &end, 10);
-      if (!v[0] || *end || j < 1 || j > 64)
-        return cli_fail(CLI_EXIT_USAGE, "study: --jobs needs a number of threads in [1, 64] (got '%s')", v);
-      a->jobs = (int)j;
-    } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-      a->quiet = 1;
-    } else if (arg[0] == '-' && arg[1]) {
-      return cli_fail(CLI_EXIT_USAGE, "study: unknown option '%s' (see reelsim study --help)", arg);
-    } else if (a->scene) {
-      return cli_fail(CLI_EXIT_USAGE, "study: one scene at a time (got '%s' and '%s')", a->scene, arg);
-    } else {
-      a->scene = arg;
-    }
-  }
-  if (!a->scene)
-    return cli_fail(CLI_EXIT_USAGE, "study: missing the scene file (usage: reelsim study SCENE ...)");
-  return -1;
-}
-
-/* DIR exists (made here if its parent does) and is a writable directory. */
-static int make_dir(const char *dir)
-{
-  struct stat sb;
-  if (stat(dir, &sb) != 0) {
-    if (errno != ENOENT || mkdir(dir, 0777) != 0)
-      return cli_fail(CLI_EXIT_OTHER, "study: cannot make the directory '%s': %s", dir, strerror(errno));
-    return CLI_EXIT_OK;
-  }
-  if (!S_ISDIR(sb.st_mode)) return cli_fail(CLI_EXIT_OTHER, "study: '%s' is not a directory", dir);
-  return CLI_EXIT_OK;
+  return cli_signal_caught() != 0;
 }
 
 /* Errors print as %.2e; an exact zero as "0" and errors below the reference's uncertainty
@@ -237,16 +156,10 @@ static void slim(rs_reel_result *res)
 
 static int n_runs_of(const rs_study_plan *p) { return p ? p->n_runs : 0; }
 
-int cli_study(int argc, char **argv)
+int cli_study(const cli_args *a)
 {
-  study_args a;
-  int code = parse(argc, argv, &a);
-  if (code >= 0) {
-    free(a.sets);
-    return code;
-  }
-  code = CLI_EXIT_OK;
-  double t_start = now_seconds();
+  int code = CLI_EXIT_OK;
+  double t_start = rs_clock_wall();
   rs_scene *base = NULL, **scenes = NULL;
   rs_study_plan *plan = NULL;
   rs_reel_job *jobs = NULL;
@@ -254,18 +167,13 @@ int cli_study(int argc, char **argv)
   double *wall = NULL, *cpu = NULL;
   const char **sets = NULL;
   rs_study_report rep = {0};
+  cli_outdir made = {NULL, NULL};
   char name[256], dir[RS_PATH_MAX], path[RS_PATH_MAX + 32];
-  struct sigaction sa, old;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_sigint;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &sa, &old);
-  if (old.sa_handler == SIG_IGN) sigaction(SIGINT, &old, NULL);
-  atomic_store(&interrupted, 0);
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
 
-  rs_status st = rs_scene_load(a.scene, a.n_sets, a.sets, &base);
-  if (st == RS_OK) st = rs_study_plan_create(base, a.quick, &plan);
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &base);
+  if (st == RS_OK) st = rs_study_plan_create(base, a->quick, &plan);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
@@ -276,7 +184,7 @@ int cli_study(int argc, char **argv)
   results = calloc((size_t)n, sizeof *results);
   wall = calloc((size_t)n, sizeof *wall);
   cpu = calloc((size_t)n, sizeof *cpu);
-  sets = calloc((size_t)a.n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
+  sets = calloc((size_t)a->n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
   if (!scenes || !jobs || !results || !wall || !cpu || !sets) {
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
     goto done;
@@ -284,9 +192,9 @@ int cli_study(int argc, char **argv)
   /* every run is the scene with the user's overrides, then the run's own */
   for (int i = 0; i < n; ++i) {
     const rs_study_run *r = &plan->runs[i];
-    for (int k = 0; k < a.n_sets; ++k) sets[k] = a.sets[k];
-    for (int k = 0; k < r->n_sets; ++k) sets[a.n_sets + k] = r->sets[k];
-    if ((st = rs_scene_load(a.scene, a.n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
+    for (int k = 0; k < a->n_sets; ++k) sets[k] = a->sets[k];
+    for (int k = 0; k < r->n_sets; ++k) sets[a->n_sets + k] = r->sets[k];
+    if ((st = rs_scene_load(a->scene, a->n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
       rs_error_wrap("study run '%s'", r->label);
       code = cli_fail_status(st);
       fprintf(stderr, "reelsim: study: nothing was wound\n");
@@ -294,32 +202,31 @@ int cli_study(int argc, char **argv)
     }
   }
   rs_scene_name(base, name, sizeof name);
-  if (a.dir) snprintf(dir, sizeof dir, "%s", a.dir);
+  if (a->output) snprintf(dir, sizeof dir, "%s", a->output);
   else snprintf(dir, sizeof dir, "study-%s", name);
-  if ((code = make_dir(dir)) != CLI_EXIT_OK) goto done;
-  snprintf(path, sizeof path, "%s/study.h5", dir);
-  if ((st = rs_output_check_target(path)) != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
+  /* checked now, made when there is something to write: an interrupted or failed study
+   * leaves no empty directory */
+  if ((code = cli_outdir_check(DIR_LABEL, dir)) != CLI_EXIT_OK) goto done;
 
-  if (!a.quiet) {
-    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a.scene, rs_scene_title(base),
-           rs_scene_problem(base)->n_layers, n, a.quick ? " (quick)" : "", a.jobs);
+  if (!a->quiet) {
+    printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, rs_scene_title(base),
+           rs_scene_problem(base)->n_layers, n, a->quick ? " (quick)" : "", a->jobs);
     fflush(stdout);
   }
   for (int i = 0; i < n; ++i) {
     jobs[i].problem = rs_scene_problem(scenes[i]);
     jobs[i].opts.progress = on_progress;
   }
-  for (int first = 0; first < n; first += a.jobs) {
-    int m = n - first < a.jobs ? n - first : a.jobs;
+  for (int first = 0; first < n; first += a->jobs) {
+    int m = n - first < a->jobs ? n - first : a->jobs;
     if ((st = rs_reel_wind_many(m, jobs + first, m, NULL)) != RS_OK) {
       code = cli_fail_status(st);
       goto done;
     }
-    if (atomic_load(&interrupted)) {
-      code = cli_fail(CLI_EXIT_INTERRUPTED, "study: interrupted (no output written)");
+    int sig = cli_signal_caught();
+    if (sig) {
+      code = cli_fail(cli_signal_exit_code(sig), "study: %s (no output written)",
+                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
       goto done;
     }
     for (int i = first; i < first + m; ++i) {
@@ -328,7 +235,7 @@ int cli_study(int argc, char **argv)
       wall[i] = job->wall_seconds;
       cpu[i] = job->cpu_seconds;
       results[i] = job->status == RS_OK ? job->result : NULL;
-      if (!a.quiet) {
+      if (!a->quiet) {
         printf("  [%2d/%d] %-34s %8.2f s%s%s\n", i + 1, n, plan->runs[i].label, job->wall_seconds,
                job->status ? "  FAILED: " : "", job->status ? job->message : "");
         fflush(stdout);
@@ -345,10 +252,12 @@ int cli_study(int argc, char **argv)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a.quiet) {
+  if (!a->quiet) {
     print_report(plan, &rep, jobs);
     print_summary(plan, &rep);
   }
+  if ((code = cli_outdir_make(DIR_LABEL, dir, &made)) != CLI_EXIT_OK) goto done;
+  snprintf(path, sizeof path, "%s/study.h5", dir);
   st = rs_study_write(path, base, &rep);
   if (st == RS_OK) {
     snprintf(path, sizeof path, "%s/study.csv", dir);
@@ -365,11 +274,14 @@ int cli_study(int argc, char **argv)
                     rs_error_message());
     goto done;
   }
-  if (!a.quiet)
+  if (!a->quiet)
     printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
-           now_seconds() - t_start);
+           rs_clock_wall() - t_start);
 
 done:
+  /* the directories made for a study that then failed go again when they are empty */
+  if (code != CLI_EXIT_OK) cli_outdir_undo(&made);
+  else cli_outdir_free(&made);
   rs_study_report_free(&rep);
   for (int i = 0; jobs && i < n_runs_of(plan); ++i) rs_reel_result_destroy(&jobs[i].result);
   for (int i = 0; scenes && i < n_runs_of(plan); ++i) rs_scene_destroy(&scenes[i]);
@@ -381,7 +293,6 @@ done:
   free(sets);
   rs_study_plan_destroy(&plan);
   rs_scene_destroy(&base);
-  free(a.sets);
-  sigaction(SIGINT, &old, NULL);
+  cli_signals_restore(&sig_saved);
   return code;
 }

@@ -3,7 +3,23 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "reelsim_version.h"
+#include "cli/usage.h"
+#include "reelsim/version.h"
+
+typedef int (*command_fn)(const cli_args *a);
+
+static const struct {
+  const char *name;
+  command_fn fn;
+} commands[] = {{"run", cli_run},     {"check", cli_check}, {"compare", cli_compare},
+                {"plot", cli_plot},   {"study", cli_study}, {"nip", cli_nip}};
+
+static int unknown_command(const char *what, const char *cmd)
+{
+  char names[256];
+  cli_command_names(names, sizeof names);
+  return cli_fail(CLI_EXIT_USAGE, "%sunknown command '%s' (commands: %s)", what, cmd, names);
+}
 
 int main(int argc, char **argv)
 {
@@ -17,25 +33,28 @@ int main(int argc, char **argv)
     return CLI_EXIT_OK;
   }
   if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
-    if (strcmp(cmd, "help") == 0 && argc > 2) return cli_usage(stdout, argv[2]);
-    return cli_usage(stdout, NULL);
+    if (strcmp(cmd, "help") != 0 || argc < 3 || strcmp(argv[2], "help") == 0) {
+      cli_usage(stdout, NULL);
+      return CLI_EXIT_OK;
+    }
+    const cli_command *c = cli_command_find(argv[2]);
+    if (!c) return unknown_command("help: ", argv[2]);
+    cli_usage(stdout, c);
+    return CLI_EXIT_OK;
   }
-  if (strcmp(cmd, "nip") == 0) return cli_nip(argc, argv, 2);
-  if (strcmp(cmd, "plot") == 0) return cli_plot(argc, argv);
-  if (strcmp(cmd, "study") == 0) return cli_study(argc, argv);
-  if (strcmp(cmd, "run") != 0 && strcmp(cmd, "check") != 0 && strcmp(cmd, "compare") != 0) {
-    if (cmd[0] == '-')
-      return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
-    return cli_fail(CLI_EXIT_USAGE,
-                    "unknown command '%s' (commands: run, check, compare, plot, study, nip, help)", cmd);
+  for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i) {
+    if (strcmp(cmd, commands[i].name) != 0) continue;
+    const cli_command *c = cli_command_find(cmd);
+    if (!c) return cli_fail(CLI_EXIT_OTHER, "internal error: no help for command '%s'", cmd);
+    cli_args a;
+    int code = cli_parse(argc, argv, 2, c, &a);
+    if (code < 0) {
+      cli_fail_verbose(a.verbose);
+      code = commands[i].fn(&a);
+    }
+    cli_args_free(&a);
+    return code;
   }
-
-  cli_args a;
-  int code = cli_parse(argc, argv, 2, &a);
-  if (code < 0)
-    code = strcmp(cmd, "run") == 0       ? cli_run(&a)
-           : strcmp(cmd, "compare") == 0 ? cli_compare(&a)
-                                         : cli_check(&a);
-  cli_args_free(&a);
-  return code;
+  if (cmd[0] == '-') return cli_fail(CLI_EXIT_USAGE, "unknown option '%s' (see reelsim --help)", cmd);
+  return unknown_command("", cmd);
 }

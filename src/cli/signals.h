@@ -1,4 +1,5 @@
-/* Signals for the commands that wind reels (run, compare). */
+/* Signals for the commands that wind reels (run, compare, study): one handler, so each
+ * stops the same way on SIGINT and SIGTERM. */
 #ifndef RS_CLI_SIGNALS_H
 #define RS_CLI_SIGNALS_H
 

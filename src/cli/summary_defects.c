@@ -1,5 +1,5 @@
 /* The "defect risk" part of the run summary: one line per rule, a WARNING line where a
- * rule flags risk (rules in docs/defects.md). */
+ * rule flags risk; hoop compression is an information line (rules in docs/defects.md). */
 #include <math.h>
 #include <stdio.h>
 
@@ -31,6 +31,7 @@ static void print_ranges(FILE *out, const rs_defect_range *rg, int n)
   }
 }
 
+/* Hoop compression is information (the buckling line weighs it): never a WARNING. */
 static void print_hoop(FILE *out, const rs_defect_report *rep)
 {
   char a[64];
@@ -40,15 +41,47 @@ static void print_hoop(FILE *out, const rs_defect_report *rep)
   }
   cli_fmt_stress(a, sizeof a, rep->hoop.min);
   if (rep->hoop.verdict == RS_DEFECT_OK) {
-    fprintf(out, "  hoop stress        no compression (least %s at r = %.1f mm): ok\n", a,
+    fprintf(out, "  hoop stress        no compression (least %s at r = %.1f mm)\n", a,
             rep->hoop.min_radius * 1e3);
     return;
   }
-  fprintf(out,
-          "  WARNING: hoop compression (sigma_theta < 0: starring/buckling risk) in %d layer%s",
-          rep->hoop.layers, rep->hoop.layers == 1 ? "" : "s");
+  fprintf(out, "  hoop stress        compression (sigma_theta < 0) in %d layer%s", rep->hoop.layers,
+          rep->hoop.layers == 1 ? "" : "s");
   print_ranges(out, rep->hoop.ranges, rep->hoop.n_ranges);
   fprintf(out, "; least %s at r = %.1f mm\n", a, rep->hoop.min_radius * 1e3);
+}
+
+static void print_buckling(FILE *out, const rs_defect_report *rep)
+{
+  char a[64], b[64];
+  switch (rep->buckling.verdict) {
+  case RS_DEFECT_NOT_ASSESSED:
+    if (rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED)
+      fprintf(out, "  hoop buckling      not assessed (no E_theta or radial law)\n");
+    return;
+  case RS_DEFECT_OK:
+    if (rep->buckling.compressed == 0) {
+      fprintf(out, "  hoop buckling      no hoop compression: ok\n");
+      return;
+    }
+    cli_fmt_stress(a, sizeof a, rep->buckling.margin_sigma);
+    cli_fmt_stress(b, sizeof b, rep->buckling.margin_critical);
+    fprintf(out,
+            "  hoop buckling      compression below the critical stress sqrt(E_theta E_r/3): "
+            "least margin %.*f x (%s against -%s at r = %.1f mm): ok\n",
+            rep->buckling.margin_min >= 10.0 ? 0 : 2, rep->buckling.margin_min, a, b,
+            rep->buckling.margin_radius * 1e3);
+    return;
+  default:
+    break;
+  }
+  cli_fmt_stress(a, sizeof a, rep->buckling.margin_sigma);
+  cli_fmt_stress(b, sizeof b, rep->buckling.margin_critical);
+  fprintf(out, "  WARNING: hoop buckling (starring) risk in %d layer%s", rep->buckling.layers,
+          rep->buckling.layers == 1 ? "" : "s");
+  print_ranges(out, rep->buckling.ranges, rep->buckling.n_ranges);
+  fprintf(out, ": sigma_theta %s against the critical -%s (sqrt(E_theta E_r/3)) at r = %.1f mm\n",
+          a, b, rep->buckling.margin_radius * 1e3);
 }
 
 static void print_pressure(FILE *out, const rs_defect_report *rep)
@@ -73,6 +106,7 @@ static void print_pressure(FILE *out, const rs_defect_report *rep)
             a, r, rep->pressure.ratio, b);
     return;
   case RS_DEFECT_RISK:
+  case RS_DEFECT_PRESENT: /* not a verdict of these rules */
     cli_fmt_stress(b, sizeof b, rep->pressure.limit);
     fprintf(out,
             "  WARNING: pressure %s at r = %.1f mm exceeds material.pressure_limit %s (%.2f x): "
@@ -96,6 +130,7 @@ static void print_slip(FILE *out, const rs_defect_report *rep)
             rep->slip.margin_min, rep->slip.torque, rep->slip.margin_radius * 1e3);
     return;
   case RS_DEFECT_RISK:
+  case RS_DEFECT_PRESENT: /* not a verdict of these rules */
     fprintf(out, "  WARNING: interlayer slip (cinching) risk at %d interface%s", rep->slip.layers,
             rep->slip.layers == 1 ? "" : "s");
     print_ranges(out, rep->slip.ranges, rep->slip.n_ranges);
@@ -120,6 +155,7 @@ static void print_core(FILE *out, const rs_defect_report *rep)
     fprintf(out, "  core               %s, %.2f of core.rating %s: ok\n", a, rep->core.ratio, b);
     return;
   case RS_DEFECT_RISK:
+  case RS_DEFECT_PRESENT: /* not a verdict of these rules */
     fprintf(out, "  WARNING: core pressure %s exceeds core.rating %s (%.2f x): core crush risk\n",
             a, b, rep->core.ratio);
     return;
@@ -130,6 +166,7 @@ void cli_print_defects(FILE *out, const rs_defect_report *rep)
 {
   fprintf(out, "defect risk (rules: docs/defects.md):\n");
   print_hoop(out, rep);
+  print_buckling(out, rep);
   print_pressure(out, rep);
   print_slip(out, rep);
   print_core(out, rep);

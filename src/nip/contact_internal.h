@@ -3,6 +3,9 @@
 #define RS_NIP_CONTACT_INTERNAL_H
 
 #include <lapacke.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_nvector.h>
 
 #include "reelsim/nip_contact.h"
 
@@ -19,7 +22,7 @@ enum { KP, KQU, KQE, NKER };
 #define COL_Q(k, e) ((M - 2) + (k) * (M - 1) + (e))
 #define ROW_STICK(k, e) (M + (k) * (M - 1) + (e))
 
-/* contact_linear.c: the kept factorization and the GMRES work space */
+/* contact_linear.c: the kept factorization and the Krylov solver refining from it */
 typedef struct rs_nipc_lin {
   double *LU;             /* n x n, equilibrated and factored (dgetrf) */
   lapack_int *ipiv;
@@ -30,8 +33,13 @@ typedef struct rs_nipc_lin {
   int valid;
   int solved_state_differs; /* the last solve had other stick/slip rows than the LU */
   int fresh;              /* the last solve factored the matrix it solved */
-  double *V, *H, *work;   /* GMRES basis, Hessenberg matrix, vectors */
+  double *work;           /* vectors */
   lapack_int *iwork;
+  /* SUNDIALS' SPGMR, right-preconditioned with the kept LU */
+  SUNContext sunctx;
+  SUNLinearSolver spgmr;
+  N_Vector nx, nb;        /* solution and right-hand side (own data) */
+  double *gm_rs;          /* the row scales of the system SPGMR is on */
 } rs_nipc_lin;
 
 struct rs_nip_contact {

@@ -8,8 +8,12 @@
  * with a the Hertz half-width of the two cylinders made with that E_r (a fixed point,
  * solved by iteration; the exact half-width differs from a_H by the shear and sheet terms,
  * a few per cent, and E_r depends on it only weakly). The sheet's thickness modulus is the
- * same E_r unless material.E_z is given; G_rtheta defaults to E_r (an assumption: give
- * material.G_rtheta from data). */
+ * same E_r unless material.E_z is given.
+ *
+ * Transverse shear modulus: material.G_rtheta is required (docs/nip.md, "G_rtheta"). The
+ * nip-induced tension depends on it (newsprint, 1000 N/m: NIT = 0.79 mu P with G = E_r,
+ * 0.95 mu P with the sheet's 50 MPa) and no one default fits paper (tens of MPa), board
+ * and film (GPa), so a material without it is refused rather than given a guess. */
 #include "nip/contact_internal.h"
 
 #include <math.h>
@@ -51,7 +55,7 @@ static rs_status roll_ortho(const rs_material *m, double E_r, rs_ortho *out, rol
 {
   rc->E_r = E_r;
   rc->E_cd = m->E_cd > 0 ? m->E_cd : m->E_theta;
-  rc->G = m->G_rtheta > 0 ? m->G_rtheta : E_r;
+  rc->G = m->G_rtheta;
   rs_ortho_engineering e = {E_r, m->E_theta, rc->E_cd, m->nu_rtheta * E_r / m->E_theta,
                             m->nu_rtheta * E_r / rc->E_cd, m->nu_md_cd, rc->G};
   rs_status st = rs_ortho_from_engineering(&e, 1, out);
@@ -89,7 +93,13 @@ rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_mate
   *out = NULL;
   if (!(mat->caliper > 0)) return RS_ERROR(RS_ERR_INPUT, "material.caliper must be > 0");
   if (!(mat->E_theta > 0)) return RS_ERROR(RS_ERR_INPUT, "material.E_theta must be > 0");
-  if (!(mat->G_rtheta >= 0)) return RS_ERROR(RS_ERR_INPUT, "material.G_rtheta must be >= 0");
+  if (!(mat->G_rtheta > 0))
+    return RS_ERROR(RS_ERR_INPUT,
+                    "material.G_rtheta is required by the contact nip (material '%s': %s): "
+                    "the stack's transverse shear modulus in Pa, on which the nip-induced "
+                    "tension depends (paper: about E_theta/100 .. E_theta/50; film: "
+                    "E/(2(1 + nu)); docs/nip.md)",
+                    mat->name, mat->G_rtheta == 0 ? "not given" : "not > 0");
   if (!(mat->E_z >= 0)) return RS_ERROR(RS_ERR_INPUT, "material.E_z must be >= 0");
   if (!(mat->E_cd >= 0)) return RS_ERROR(RS_ERR_INPUT, "material.E_cd must be >= 0");
   if (!(spec->drum.radius > 0))

@@ -58,13 +58,39 @@ static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
   rs_status st = rule_group(parent, "hoop_compression", rep->hoop.verdict,
-                            "risk where sigma_theta < 0", &g);
+                            "information, not a risk: present where sigma_theta < 0 (the "
+                            "buckling rule is /defects/hoop_buckling)",
+                            &g);
   if (st != RS_OK) return st;
   if (rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_int64(g, "layers", rep->hoop.layers);
     if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta", rep->hoop.min);
     if (st == RS_OK) st = rs_h5_attr_double(g, "min_sigma_theta_radius", rep->hoop.min_radius);
     if (st == RS_OK) st = write_ranges(g, rep->hoop.ranges, rep->hoop.n_ranges);
+  }
+  H5Gclose(g);
+  return st;
+}
+
+static rs_status write_buckling(hid_t parent, const rs_defect_report *rep)
+{
+  hid_t g;
+  rs_status st = rule_group(parent, "hoop_buckling", rep->buckling.verdict,
+                            "risk where -sigma_theta > sqrt(E_theta E_r / 3), E_r the radial "
+                            "modulus at the softer face of the layer",
+                            &g);
+  if (st != RS_OK) return st;
+  if (rep->buckling.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_int64(g, "layers", rep->buckling.layers);
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "compressed_layers", rep->buckling.compressed);
+    if (st == RS_OK && rep->buckling.compressed > 0) {
+      st = rs_h5_attr_double(g, "min_margin", rep->buckling.margin_min);
+      if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin_radius", rep->buckling.margin_radius);
+      if (st == RS_OK)
+        st = rs_h5_attr_double(g, "critical_stress", rep->buckling.margin_critical);
+      if (st == RS_OK) st = rs_h5_attr_double(g, "sigma_theta", rep->buckling.margin_sigma);
+    }
+    if (st == RS_OK) st = write_ranges(g, rep->buckling.ranges, rep->buckling.n_ranges);
   }
   H5Gclose(g);
   return st;
@@ -133,6 +159,7 @@ rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_r
   if (st == RS_OK) {
     st = rs_h5_attr_string(g, "rules", "docs/defects.md");
     if (st == RS_OK) st = write_hoop(g, rep);
+    if (st == RS_OK) st = write_buckling(g, rep);
     if (st == RS_OK) st = write_pressure(g, rep);
     if (st == RS_OK) st = write_slip(g, rep);
     if (st == RS_OK) st = write_core(g, rep);

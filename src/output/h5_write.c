@@ -15,7 +15,7 @@
 #include "output/h5_nip.h"
 #include "output/h5_util.h"
 #include "util/atomic_file.h"
-#include "reelsim_version.h"
+#include "reelsim/version.h"
 
 /* The file records when it was made, in UTC so files from different machines sort. */
 static void iso8601_now(char *buf, size_t len)

@@ -153,12 +153,14 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   char path[PLOT_PATH];
   double limit;
   plot_at(path, "%s/defects/pressure", d->base);
-  if (st == RS_OK && rs_reader_exists(c->rd, path) &&
-      rs_reader_attr_double(c->rd, path, "limit", &limit) == RS_OK && isfinite(limit)) {
-    snprintf(title, sizeof title, "pressure limit %.1f kPa", limit / 1e3);
-    plot_hline(c, limit / 1e3, "#d62728", title);
+  if (st == RS_OK && rs_reader_exists(c->rd, path)) {
+    if (rs_reader_attr_double(c->rd, path, "limit", &limit) == RS_OK && isfinite(limit)) {
+      snprintf(title, sizeof title, "pressure limit %.1f kPa", limit / 1e3);
+      plot_hline(c, limit / 1e3, "#d62728", title);
+    } else {
+      rs_error_clear(); /* no limit recorded: the figure goes without it */
+    }
   }
-  rs_error_clear();
   if (st == RS_OK && slip) plot_band_key(c, "#ff7f0e", "interlayer slip risk");
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
@@ -184,7 +186,7 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
   if (st == RS_OK) st = plot_curve(c, d->r_mm, d->hoop_mpa, d->n, style, title, NULL);
-  if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (defect risk)");
+  if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);

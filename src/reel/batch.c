@@ -6,9 +6,9 @@
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 #include <unistd.h>
 
+#include "reelsim/clock.h"
 #include "reelsim/reel.h"
 
 typedef struct pool {
@@ -17,30 +17,16 @@ typedef struct pool {
   atomic_int next;
 } pool;
 
-static double batch_now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static double thread_cpu(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
 static void run_job(rs_reel_job *job)
 {
-  double t0 = batch_now(), c0 = thread_cpu();
+  double t0 = rs_clock_wall(), c0 = rs_clock_thread_cpu();
   rs_error_clear();
   job->result = NULL;
   job->status = rs_reel_wind(job->problem, &job->opts, &job->result);
   snprintf(job->message, sizeof job->message, "%s", job->status ? rs_error_message() : "");
   snprintf(job->where, sizeof job->where, "%s", job->status ? rs_error_where() : "");
-  job->wall_seconds = batch_now() - t0;
-  job->cpu_seconds = thread_cpu() - c0;
+  job->wall_seconds = rs_clock_wall() - t0;
+  job->cpu_seconds = rs_clock_thread_cpu() - c0;
 }
 
 static void *worker(void *arg)

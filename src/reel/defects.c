@@ -15,6 +15,7 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
   case RS_DEFECT_NOT_ASSESSED: return "not assessed";
   case RS_DEFECT_OK: return "ok";
   case RS_DEFECT_RISK: return "risk";
+  case RS_DEFECT_PRESENT: return "present";
   }
   return "?";
 }
@@ -25,6 +26,13 @@ void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
   lim->core_rating = pb->core.rating;
   lim->accel_torque = pb->accel_torque;
   lim->friction_layer = pb->material.friction_layer;
+  lim->E_theta = pb->material.E_theta;
+  lim->radial = &pb->material.radial;
+}
+
+double rs_defect_critical_hoop_stress(double E_theta, double E_r)
+{
+  return E_theta > 0.0 && E_r > 0.0 ? sqrt(E_theta * E_r / 3.0) : 0.0;
 }
 
 /* Coulomb friction on the cylindrical interface of radius r (per unit width): shear
@@ -39,6 +47,7 @@ void rs_defect_report_destroy(rs_defect_report **rep)
 {
   if (!rep || !*rep) return;
   free((*rep)->hoop.ranges);
+  free((*rep)->buckling.ranges);
   free((*rep)->slip.ranges);
   free(*rep);
   *rep = NULL;
@@ -74,10 +83,10 @@ static int flag_ranges(const unsigned char *flag, int n, const double *radius,
   return count;
 }
 
-/* Hoop compression, sigma_theta < 0: the layers are circumferentially compressed, the
- * necessary condition for them to buckle into the star pattern seen on roll ends
- * ("starring"). No threshold: any compression is flagged; whether a layer buckles also
- * depends on its bending stiffness and radial support, which the rule does not weigh. */
+/* Hoop compression, sigma_theta < 0: reported as information. It is the necessary
+ * condition for a layer to buckle (starring), not a sufficient one: interior layers of
+ * most rolls carry a small compressive residual (a few per cent of T0/t) and do not buckle.
+ * The buckling rule below weighs it against the layer's critical stress. */
 static rs_status assess_hoop(const rs_reel_result *res, unsigned char *flag, rs_defect_report *rep)
 {
   int n = res->n_layers;
@@ -93,7 +102,58 @@ static rs_status assess_hoop(const rs_reel_result *res, unsigned char *flag, rs_
   }
   rep->hoop.layers = flag_ranges(flag, n, res->radius, &rep->hoop.ranges, &rep->hoop.n_ranges);
   if (rep->hoop.layers < 0) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the hoop ranges");
-  rep->hoop.verdict = rep->hoop.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
+  rep->hoop.verdict = rep->hoop.layers > 0 ? RS_DEFECT_PRESENT : RS_DEFECT_OK;
+  return RS_OK;
+}
+
+/* Interlayer pressure (Pa, compression positive, a gap as 0) on the inner face of layer j
+ * (the core contact for the first) and on its outer face. */
+static double pressure_below(const rs_reel_result *res, int j)
+{
+  double P = j == 0 ? res->core_pressure : 0.0 - res->sigma_r[j - 1];
+  return P > 0.0 ? P : 0.0;
+}
+
+static double pressure_above(const rs_reel_result *res, int j)
+{
+  double P = 0.0 - res->sigma_r[j];
+  return P > 0.0 ? P : 0.0;
+}
+
+/* Hoop buckling (starring): layer j buckles on the stack's elastic foundation where its
+ * compression exceeds sigma_cr = sqrt(E_theta E_r / 3) (rs_defect_critical_hoop_stress),
+ * E_r the stack's tangent radial modulus at the softer of its two faces (the lesser
+ * E_r(P) of the interfaces below and above it). Risk where -sigma_theta > sigma_cr. */
+static rs_status assess_buckling(const rs_reel_result *res, const rs_defect_limits *lim,
+                                 unsigned char *flag, rs_defect_report *rep)
+{
+  int n = res->n_layers;
+  rep->buckling.verdict = RS_DEFECT_NOT_ASSESSED;
+  if (n == 0 || !lim->radial || !(lim->E_theta > 0.0)) return RS_OK;
+  rep->buckling.margin_min = INFINITY;
+  for (int j = 0; j < n; ++j) {
+    flag[j] = 0;
+    double c = 0.0 - res->sigma_theta[j];
+    if (!(c > 0.0)) continue;
+    double E_lo = rs_radial_modulus(lim->radial, pressure_below(res, j));
+    double E_hi = rs_radial_modulus(lim->radial, pressure_above(res, j));
+    double crit = rs_defect_critical_hoop_stress(lim->E_theta, E_lo < E_hi ? E_lo : E_hi);
+    double margin = crit / c;
+    rep->buckling.compressed++;
+    flag[j] = c > crit;
+    if (margin < rep->buckling.margin_min) {
+      rep->buckling.margin_min = margin;
+      rep->buckling.margin_radius = res->radius[j];
+      rep->buckling.margin_critical = crit;
+      rep->buckling.margin_sigma = res->sigma_theta[j];
+    }
+  }
+  if (rep->buckling.compressed == 0) rep->buckling.margin_min = 0.0;
+  rep->buckling.layers =
+      flag_ranges(flag, n, res->radius, &rep->buckling.ranges, &rep->buckling.n_ranges);
+  if (rep->buckling.layers < 0)
+    return RS_ERROR(RS_ERR_MEMORY, "out of memory for the buckling ranges");
+  rep->buckling.verdict = rep->buckling.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
   return RS_OK;
 }
 
@@ -171,6 +231,7 @@ rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *l
     st = RS_ERROR(RS_ERR_MEMORY, "out of memory assessing %d layers", res->n_layers);
   } else {
     st = assess_hoop(res, flag, rep);
+    if (st == RS_OK) st = assess_buckling(res, lim, flag, rep);
     assess_pressure(res, lim->pressure_limit, rep);
     if (st == RS_OK) st = assess_slip(res, lim->accel_torque, lim->friction_layer, flag, rep);
     assess_core(res, lim->core_rating, rep);

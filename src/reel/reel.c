@@ -5,20 +5,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "reel/nip_policy.h"
+#include "reelsim/clock.h"
 #include "reelsim/nip.h"
 #include "reelsim/nip_contact.h"
 #include "reelsim/reel.h"
 #include "reelsim/roll.h"
-
-static double reel_now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 void rs_reel_result_destroy(rs_reel_result **resp)
 {
@@ -78,6 +71,7 @@ static void reel_params(const rs_problem *pb, rs_roll_params *p)
   p->atol = pb->numerics.atol;
   p->max_steps = pb->numerics.max_steps;
   p->reuse = pb->numerics.reuse;
+  p->placement = pb->numerics.load_placement;
 }
 
 /* ---- stress history -------------------------------------------------------------------
@@ -175,7 +169,7 @@ static void reel_collect(const rs_roll *roll, rs_reel_result *res, double t_star
   res->cvode_steps = stats.cvode_steps;
   res->rhs_evals = stats.rhs_evals;
   res->full_integrations = stats.full_integrations;
-  res->wall_seconds = reel_now() - t_start;
+  res->wall_seconds = rs_clock_wall() - t_start;
 }
 
 /* Appends one kept nip solve to the result's record. */
@@ -221,7 +215,7 @@ static int compare_doubles(const void *a, const void *b)
 rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
   *out = NULL;
-  const double t_start = reel_now();
+  const double t_start = rs_clock_wall();
   const int N = pb->n_layers, per_step = pb->numerics.layers_per_step;
   if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the problem winds no layers");
   if (per_step < 1)

@@ -137,6 +137,11 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
             winder_name(s->problem.nip.winder), f(a, s->problem.nip.mu_roll), f(b, s->problem.nip.mu_drum),
             f(c, s->problem.nip.drum.radius * 1e3), s->problem.nip.nodes);
     print_recipe(out, "nip load", &s->problem.nip.load);
+    if (m->G_rtheta > 0.0)
+      fprintf(out, "  - nip stack shear modulus: G_rtheta = %s Pa (material)\n", f(a, m->G_rtheta));
+    else
+      fprintf(out, "  - nip stack shear modulus: material.G_rtheta not given: the contact nip "
+                   "will refuse this material (docs/nip.md)\n");
     break;
   }
   if (s->problem.nip.model != RS_NIP_NONE) {
@@ -155,5 +160,10 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
   fprintf(out, s->problem.numerics.reuse == RS_REUSE_ON
                    ? ", deep solution reused (error held to rtol x T0/s)\n"
                    : ", every increment integrated from the core\n");
+  fprintf(out, s->problem.numerics.load_placement == RS_LOAD_BENEATH
+                   ? "  - load placement: beneath (a new layer joins at T0/t and presses T0/r on "
+                     "the roll beneath it)\n"
+                   : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "
+                     "own outer radius)\n");
   print_defect_checks(out, s);
 }

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "reelsim_version.h"
+#include "reelsim/version.h"
 #include "scene/scene_internal.h"
 
 /* The resolved scene: a header of comments (what it came from, derived values), then the

@@ -2,7 +2,9 @@
  *   1. <scene dir>/newsprint.yaml
  *   2. <scene dir>/models/newsprint.yaml
  *   3. <scene dir>/../models/newsprint.yaml
- *   4. $REELSIM_MODELS/newsprint.yaml, or the project's models/ when that is unset
+ *   4. $REELSIM_MODELS/newsprint.yaml when that is set
+ *   5. the shipped models: the source tree's models/ for a program run from the build
+ *      tree, else the installed <datadir>/reelsim/models (model_dirs.c)
  * A name ending in .yaml/.yml or holding a '/' is a path (relative to the scene's
  * directory). The model file's lines stay attached to its values, so an error in it
  * names the model file, not the scene. */
@@ -12,11 +14,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "scene/model_dirs.h"
 #include "scene/scene_internal.h"
-
-#ifndef RS_SOURCE_MODELS_DIR
-#define RS_SOURCE_MODELS_DIR "models"
-#endif
 
 static int ends_with(const char *s, const char *suffix)
 {
@@ -90,9 +89,9 @@ int ys_model_candidates(const char *scene_path, const char *name, char cand[][RS
     snprintf(rel, sizeof rel, "%s%s", sub[i], file);
     join(cand[n++], RS_PATH_MAX, dir, rel);
   }
-  const char *env = getenv("REELSIM_MODELS");
-  const char *lib = env && env[0] ? env : RS_SOURCE_MODELS_DIR;
-  if (n < max) join(cand[n++], RS_PATH_MAX, lib, file);
+  char lib[YS_MODEL_DIRS_MAX][RS_PATH_MAX];
+  int n_lib = ys_model_dirs(lib, YS_MODEL_DIRS_MAX);
+  for (int i = 0; i < n_lib && n < max; ++i) join(cand[n++], RS_PATH_MAX, lib[i], file);
   return n;
 }
 
@@ -112,8 +111,8 @@ rs_status ys_inline_material(yn *root, rs_scene *scene)
   if (mat->kind != YN_SCALAR || yn_is_empty(mat))
     return yn_error(mat, "expected a model name (e.g. newsprint) or a mapping of material keys");
 
-  char cand[4][RS_PATH_MAX];
-  int n = ys_model_candidates(scene->path, mat->text, cand, 4);
+  char cand[3 + YS_MODEL_DIRS_MAX][RS_PATH_MAX];
+  int n = ys_model_candidates(scene->path, mat->text, cand, 3 + YS_MODEL_DIRS_MAX);
   struct stat self, st;
   int have_self = stat(scene->path, &self) == 0;
   const char *found = NULL;
@@ -121,7 +120,7 @@ rs_status ys_inline_material(yn *root, rs_scene *scene)
     if (stat(cand[i], &st) == 0 && S_ISREG(st.st_mode) && !(have_self && same_file(&st, &self)))
       found = cand[i];
   if (!found) {
-    char tried[4 * RS_PATH_MAX + 16];
+    char tried[(3 + YS_MODEL_DIRS_MAX) * (RS_PATH_MAX + 2)];
     size_t len = 0;
     tried[0] = '\0';
     for (int i = 0; i < n; ++i) {

@@ -256,6 +256,7 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   n->atol = atol;
   n->max_steps = max_steps;
   n->reuse = (rs_reuse)ys_enum(root, "numerics.reuse");
+  n->load_placement = (rs_load_placement)ys_enum(root, "numerics.load_placement");
   return RS_OK;
 }
 

@@ -131,6 +131,9 @@ static const ys_value v_nip = MAP(nip_fields);
 /* ---- numerics and output ------------------------------------------------------------- */
 static const ys_name reuses[] = {{"deep", RS_REUSE_ON}, {"none", RS_REUSE_OFF}, {NULL, 0}};
 static const ys_value v_reuse = ENUM(reuses);
+static const ys_name placements[] = {
+    {"beneath", RS_LOAD_BENEATH}, {"hakiel", RS_LOAD_HAKIEL}, {NULL, 0}};
+static const ys_value v_placement = ENUM(placements);
 
 static const ys_field numerics_fields[] = {
     DEF("layers_per_step", &v_int, "1"),
@@ -138,6 +141,7 @@ static const ys_field numerics_fields[] = {
     DEF("atol", &v_float, "0"),
     DEF("max_steps", &v_long, "0"),
     DEF("reuse", &v_reuse, "deep"),
+    DEF("load_placement", &v_placement, "beneath"),
     END};
 static const ys_value v_numerics = MAP(numerics_fields);
 

@@ -1,7 +1,7 @@
 # reelsim compare and reelsim plot on the command line (scripts take REELSIM SCENES CASE).
 function(rs_cli_case name script case)
   add_test(NAME cli.${name}
-           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script} $<TARGET_FILE:reelsim>
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script} $<TARGET_FILE:reelsim_cli>
                    ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes ${case}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 300)
@@ -10,7 +10,7 @@ endfunction()
 foreach(c identical bad_scene solver_failure default_name missing_dir interrupted)
   rs_cli_case(compare_${c} compare.sh ${c})
 endforeach()
-foreach(c run_file compare_file no_gnuplot not_reelsim missing_dir)
+foreach(c run_file compare_file no_gnuplot not_reelsim missing_dir not_dir bad_file_dir)
   rs_cli_case(plot_${c} plot.sh ${c})
 endforeach()
 

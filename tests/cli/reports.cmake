@@ -10,15 +10,30 @@ rs_cli_script(run_history_too_large_no_file no_output.sh 2 ${SC}/small.yaml
               --set winding.final_radius=5 --set output.history_every=1)
 
 rs_cli_script(csv_writes csv_writes.sh ${SC}/small.yaml)
-rs_cli_test(csv_missing_dir 2 [[reelsim: --csv no-such-dir: no such directory]]
-            run ${SC}/small.yaml -o csv-missing-dir.h5 --csv no-such-dir)
-rs_cli_script(run_csv_missing_dir_no_file no_output.sh 2 ${SC}/small.yaml --csv no-such-dir)
+# --csv DIR is made as needed (mkdir -p); a path that is a file, or below one, is refused
+# before winding, with nothing written
+rs_cli_script(csv_makes_dir csv_writes.sh ${SC}/small.yaml made/csv)
+rs_cli_test(csv_not_dir 2 [[reelsim: --csv '.*small\.yaml' is not a directory]]
+            run ${SC}/small.yaml -o csv-not-dir.h5 --csv ${SC}/small.yaml)
+rs_cli_script(run_csv_not_dir_no_file no_output.sh 2 ${SC}/small.yaml --csv ${SC}/small.yaml)
+rs_cli_script(run_csv_below_file_no_file no_output.sh 2 ${SC}/small.yaml --csv ${SC}/small.yaml/csv)
 rs_cli_test(csv_check_refused 2 [[reelsim: check: --csv only applies to run]]
             check ${SC}/small.yaml --csv .)
 
-rs_cli_test(falling_taper_warning 0
-            [[WARNING: hoop compression \(sigma_theta < 0: starring/buckling risk\) in [0-9]+ layers at r = 76\.3 \.\. 89\.4 mm. least -3\.[0-9]+ MPa at r = 76\.3 mm]]
-            run ${CASES}/newsprint-falling-taper.yaml -o falling-taper.h5)
+# Hoop compression is information, the buckling rule weighs it (docs/defects.md): the
+# falling-taper scene compresses its inner layers (-3.4 to -3.6 MPa, by the load
+# placement) far below the critical stress of a layer on the stack (about 240 MPa there),
+# so no WARNING line at all.
+rs_cli_script(falling_taper_hoop_info summary_lines.sh
+              [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers at r = 76\.3 \.\. [0-9.]+ mm. least -3\.[0-9]+ MPa at r = 76\.[0-9] mm$]]
+              [[^  hoop buckling +compression below the critical stress sqrt\(E_theta E_r/3\): least margin [0-9]+ x .*: ok$]]
+              -- run ${CASES}/newsprint-falling-taper.yaml -o falling-taper.h5)
+# A core that gives way (E_c = 0.5 MPa) under the same recipe: the first layer's
+# compression exceeds its critical stress, a WARNING.
+rs_cli_test(soft_core_buckling_warning 0
+            [[WARNING: hoop buckling \(starring\) risk in [0-9]+ layers? at r = 76\.3 \.\. [0-9.]+ mm: sigma_theta -[0-9.]+ MPa against the critical -[0-9.]+ MPa \(sqrt\(E_theta E_r/3\)\) at r = 76\.3 mm]]
+            run ${CASES}/newsprint-falling-taper.yaml -o soft-core-buckling.h5
+            --set core.stiffness=5e5)
 rs_cli_script(falling_taper_defects_file defects_file.sh ${CASES}/newsprint-falling-taper.yaml)
 rs_cli_test(defects_not_assessed 0 [[interlayer slip +not assessed \(no winding\.accel_torque\)]]
             run ${SC}/small.yaml -o defects-not-assessed.h5)
@@ -36,7 +51,15 @@ rs_cli_test(bad_accel_without_friction 2 [[--set winding\.accel_torque=50: the i
 
 rs_cli_script(progress_tty progress_tty.sh ${CASES}/newsprint-falling-taper.yaml)
 
-# A steep rising taper compresses the inner layers (the issue's hoop-compression warning).
-rs_cli_test(rising_taper_warning 0
-            [[WARNING: hoop compression \(sigma_theta < 0: starring/buckling risk\) in [0-9]+ layers at r = [0-9.]+ \.\. [0-9.]+ mm. least -[0-9.]+ MPa]]
-            run ${SC}/rising-taper.yaml -o rising-taper.h5)
+# A steep rising taper compresses the inner layers: reported, no buckling WARNING.
+rs_cli_script(rising_taper_hoop_info summary_lines.sh
+              [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers at r = [0-9.]+ \.\. [0-9.]+ mm. least -[0-9.]+ MPa at r = [0-9.]+ mm$]]
+              [[^  hoop buckling +compression below the critical stress .*: ok$]]
+              -- run ${SC}/rising-taper.yaml -o rising-taper.h5)
+# The TopWeb example (cases/pet-topweb.yaml): hoop compression through most of the roll,
+# no WARNING (TopWeb: "no wrinkle or tin-canning warning"), the 636 mm roll.
+rs_cli_script(topweb_no_warning summary_lines.sh
+              [[^  final radius +318\.0 mm$]]
+              [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers]]
+              [[^  hoop buckling +compression below the critical stress .*: ok$]]
+              -- run ${CASES}/pet-topweb.yaml -o pet-topweb.h5)

@@ -5,6 +5,7 @@
 #   nip_quick    a 120-layer reel with the contact nip (study-nip.yaml): the same, and the nip
 #                knobs are there (none of them in small_quick)
 #   bad_input    a bad --set: exit 2, nothing wound, no directory made
+#   not_dir      -o onto a file, or below one: exit 2 before anything is wound
 #   usage        no scene: exit 2
 # Checks on a finished study's CSV:
 #   - the reference is tighter than every other run: each run (but the second reference,
@@ -117,8 +118,8 @@ check_study() { # dir kind
 }
 
 case "$case" in
-small_quick)
-  run "$bin" study "$sc/small.yaml" --quick -o "$tmp/out"
+small_quick) # into a directory made as mkdir -p would
+  run "$bin" study "$sc/small.yaml" --quick -o "$tmp/out/a/b"
   [ "$got" -eq 0 ] || fail "exit status $got, expected 0"
   has "^reference: +rtol 1e-09, 1 layer per step$"
   has "reference uncertainty"
@@ -126,7 +127,7 @@ small_quick)
   has "^Pareto front \([0-9]+ runs\)"
   has "answers are bit for bit those of the defaults"
   printf '%s\n' "$out" | grep -q "nip" && fail "a scene without a nip got nip runs"
-  check_study "$tmp/out" plain
+  check_study "$tmp/out/a/b" plain
   ;;
 nip_quick)
   run "$bin" study "$sc/study-nip.yaml" --quick -o "$tmp/out"
@@ -140,6 +141,16 @@ bad_input)
   [ "$got" -eq 2 ] || fail "exit status $got, expected 2"
   has "--set numerics\.rtol=abc: not a number"
   [ ! -e "$tmp/out" ] || fail "a directory was made"
+  ;;
+not_dir)
+  touch "$tmp/file"
+  for d in "$tmp/file" "$tmp/file/sub"; do
+    run "$bin" study "$sc/small.yaml" --quick -o "$d"
+    [ "$got" -eq 2 ] || fail "exit status $got, expected 2"
+    has "reelsim: study: output directory '$d'.* is not a directory"
+    printf '%s\n' "$out" | grep -q "reference" && fail "something was wound"
+  done
+  [ "$(ls -A "$tmp")" = file ] || { ls -la "$tmp"; fail "stray files"; }
   ;;
 usage)
   run "$bin" study

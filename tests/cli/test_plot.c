@@ -3,6 +3,8 @@
  * image); optional groups are drawn when present and absent files are refused; failures
  * of gnuplot leave no PNG and no temporary directory. */
 #include <hdf5.h>
+#include <signal.h>
+#include <sys/resource.h>
 
 #include "check.h"
 #include "output/h5_util.h"
@@ -339,6 +341,38 @@ static void refuses_bad_input(void)
   free(dir);
 }
 
+/* A curve whose data file cannot be written (a 2 kB file-size limit: the second history
+ * stage's data is larger) fails the plot with the reason still recorded: the figure's
+ * later steps must not clear the error of a failed curve. No PNG, no temporary left. */
+static void curve_failure_reported(void)
+{
+  char *tmp = private_tmpdir(), *dir = scratch_dir("plot");
+  char *file = write_run_file(dir, "reel.h5", N_LAYERS);
+  add_optional_groups(file); /* history stages, and a pressure limit read after the curves */
+  struct rlimit old, small;
+  CHECK(getrlimit(RLIMIT_FSIZE, &old) == 0);
+  small = old;
+  small.rlim_cur = 2048;
+  void (*old_xfsz)(int) = signal(SIGXFSZ, SIG_IGN); /* the write fails instead (EFBIG) */
+  CHECK(setrlimit(RLIMIT_FSIZE, &small) == 0);
+  rs_error_clear();
+  rs_status st = rs_plot_file(file, dir, NULL, NULL, NULL);
+  CHECK(setrlimit(RLIMIT_FSIZE, &old) == 0);
+  signal(SIGXFSZ, old_xfsz);
+  printf("  status %s: '%s'\n", rs_status_name(st), rs_error_message());
+  CHECK(st == RS_ERR_IO);
+  CHECK(rs_error_status() == RS_ERR_IO);
+  CHECK(strstr(rs_error_message(), "cannot write") != NULL);
+  CHECK(strstr(rs_error_message(), "File too large") != NULL);
+  CHECK(scratch_count_entries(dir) == 1); /* the run file only */
+  CHECK(scratch_count_entries(tmp) == 0);
+  scratch_remove_tree(dir);
+  rmdir(tmp);
+  free(file);
+  free(dir);
+  free(tmp);
+}
+
 /* gnuplot missing, or failing: RS_ERR_IO, no PNG, no temporary directory left. */
 static void gnuplot_missing_or_failing(void)
 {
@@ -451,6 +485,7 @@ static const check_case cases[] = {
     {"empty_run", empty_run},
     {"refuses_bad_input", refuses_bad_input},
     {"gnuplot_missing_or_failing", gnuplot_missing_or_failing},
+    {"curve_failure_reported", curve_failure_reported},
     {"checker_sees_blank", checker_sees_blank},
 };
 

@@ -4,7 +4,7 @@
  *
  *   soft_linear_g2_1e6, _1e8   g^2 = E_theta/E_r = 1e6, 1e8: Altmann's closed form
  *   soft_pfeiffer_g2_1e8       Pfeiffer, K1 = 1 Pa (g^2 = 1e9 at rest): bounds, rtol
- *   core_very_soft_limit       E_c -> 0: core pressure ~ E_c -> 0 (closed form, limit)
+ *   core_very_soft_limit       E_c -> 0: core pressure - T/r_c ~ E_c -> 0 (closed form, limit)
  *   core_stiff_soft_web        E_c 1e3..1e13 Pa under a soft web: monotone, rigid limit
  *   thin_film_100k             100,000 layers of 6 um (lumped increments): closed form
  *   ratio_20                   roll/core radius 20: closed form (linear), bounds (Pfeiffer)
@@ -47,26 +47,37 @@ static int all_finite(const rs_roll *roll)
  *    ln 2 (u >= tanh(x - x_c)), so |ds| <= 2 T/s: P_j <= 2 sum_{k >= j} T/s_k, the same
  *    for the core (`upper` asks for this one; a rigid core nearly reaches the factor 2).
  * The outer layer carries exactly -T/s and T/t. Returns the core pressure / sum_k T/s_k. */
-static double check_bounds(const rs_roll *roll, double t, double T, int upper)
+static double check_bounds(const rs_roll *roll, const rs_roll_params *p, double T, int upper)
 {
-  int n = rs_roll_layers(roll);
+  /* the loads sit at the nodes s_j, j = 1..n (Hakiel) or 0..n-1 (beneath: node 0 is the
+   * core, and the outermost layer's outer face is free) */
+  const int n = rs_roll_layers(roll), beneath = p->placement == RS_LOAD_BENEATH;
+  const double t = p->caliper;
   const double *sr = rs_roll_sigma_r(roll), *st = rs_roll_sigma_theta(roll);
   double sum = 0.0;
   int bad_low = 0, bad_high = 0, bad_hoop = 0;
   for (int j = n - 1; j >= 0; --j) {
     double s = rs_roll_layer_radius(roll, j), P = -sr[j];
+    if (beneath && j == n - 1) {
+      if (!(P == 0.0)) ++bad_low;
+      continue;
+    }
     sum += T / s;
     if (!(P >= (T / s) * (1.0 - 1e-12))) ++bad_low;
     if (upper && !(P <= 2.0 * sum)) ++bad_high;
     if (!(st[j] <= (T / t) * (1.0 + 1e-12))) ++bad_hoop;
   }
+  if (beneath) sum += T / p->core_radius;
   CHECK(bad_low == 0);
   CHECK(bad_high == 0);
   CHECK(bad_hoop == 0);
   CHECK(rs_roll_core_pressure(roll) > 0.0);
   if (upper) CHECK(rs_roll_core_pressure(roll) <= 2.0 * sum);
   double s = rs_roll_outer_radius(roll);
-  CHECK_CLOSE(sr[n - 1], -T / s, 1e-14);
+  if (beneath)
+    CHECK(sr[n - 1] == 0.0);
+  else
+    CHECK_CLOSE(sr[n - 1], -T / s, 1e-14);
   CHECK_CLOSE(st[n - 1], T / t, 1e-14);
   return rs_roll_core_pressure(roll) / sum;
 }
@@ -113,7 +124,7 @@ static double vs_altmann(const rs_roll_params *p, int n, double T, double rtol_c
   double g = sqrt(p->E_theta / p->radial.E_r);
   double kc = (isinf(p->core_stiffness) ? 0.0 : p->E_theta / p->core_stiffness) + p->nu_rtheta - 1;
   double *sr = malloc((size_t)n * sizeof(double)), *st = malloc((size_t)n * sizeof(double)), core;
-  altmann_roll(g, kc, p->core_radius, p->caliper, n, T, sr, st, &core);
+  altmann_roll(g, kc, p->core_radius, p->caliper, n, T, sr, st, &core, p->placement);
   const double *er = rs_roll_sigma_r(roll), *et = rs_roll_sigma_theta(roll);
   double max_r = 0.0, max_t = 0.0;
   for (int j = 0; j < n; ++j) {
@@ -178,7 +189,7 @@ static void soft_pfeiffer_g2_1e8(void)
   CHECK(all_finite(ref));
   CHECK_LOG("surface g^2", Et / rs_roll_surface_modulus(ref));
   CHECK_LOG("core pressure (Pa)", rs_roll_core_pressure(ref));
-  CHECK_LOG("core pressure / sum T/s", check_bounds(ref, t, T, 1));
+  CHECK_LOG("core pressure / sum T/s", check_bounds(ref, &p, T, 1));
   CHECK_LT(1e5, Et / rs_roll_surface_modulus(ref));
   converges_in_rtol(&p, n, T, rtols, ref);
   rs_roll_destroy(&ref);
@@ -203,6 +214,11 @@ static void core_very_soft_limit(void)
     vs_altmann(&p, n, 300.0, 1e-6, &P[i]);
     printf("  E_c %-8g core pressure %.17g Pa   P/E_c %.17g\n", Ec[i], P[i], P[i] / Ec[i]);
   }
+  /* with the load beneath each layer, the first layer presses T/r_c on the core whatever
+   * its stiffness (its wound-on tension is what it keeps on the roll); what the later layers
+   * add through the roll vanishes like E_c. Hakiel's placement has no such term. */
+  const double first = 300.0 / 0.05;
+  for (int i = 0; i < nE; ++i) P[i] -= first;
   for (int i = 1; i < nE; ++i) CHECK_LT(P[i], P[i - 1]);
   CHECK_CLOSE(P[nE - 1] / Ec[nE - 1], P[nE - 2] / Ec[nE - 2], 1e-3);
   CHECK_LT(P[nE - 1], 1e-6 * P[0]);
@@ -223,7 +239,7 @@ static void core_stiff_soft_web(void)
     rs_roll *roll = wind(&p, n, 1, 300.0);
     if (!roll) return;
     CHECK(all_finite(roll));
-    check_bounds(roll, p.caliper, 300.0, 1);
+    check_bounds(roll, &p, 300.0, 1);
     P[i] = rs_roll_core_pressure(roll);
     printf("  E_c %-8g core pressure %.17g Pa\n", Ec[i], P[i]);
     rs_roll_destroy(&roll);
@@ -240,22 +256,26 @@ static void core_stiff_soft_web(void)
  * radius of node j, as the engine lumps it: nodes below the block get all of it, node j
  * inside the block the share of the block's layers at or above it. */
 static double lumped_at(double g, double kc, double rc, double t, int k_end, int mb, double T,
-                        int j)
+                        int j, rs_load_placement placement)
 {
-  double s = rc + k_end * t, ds, rds;
+  /* the block's load at its top node: its outer radius (Hakiel) or one layer below */
+  const int shift = placement == RS_LOAD_BENEATH;
+  double s = rc + (k_end - shift) * t, ds, rds;
+  if (j > k_end - shift) return 0.0;
   altmann_increment(g, kc, rc, s, mb * T, rc + j * t, &ds, &rds);
   int k0 = k_end - mb;
-  return j <= k0 ? ds : ds * (double)(k_end - j + 1) / mb;
+  return j <= k0 ? ds : ds * (double)(k_end - j + 1 - shift) / mb;
 }
 
 /* Core pressure of the lumped closed form, blocks of mb layers (mb = 1: exact accretion). */
-static double lumped_core(double g, double kc, double rc, double t, int n, int mb, double T)
+static double lumped_core(double g, double kc, double rc, double t, int n, int mb, double T,
+                          rs_load_placement placement)
 {
   double sum = 0.0;
   for (int k_end = mb;; k_end += mb) {
     if (k_end > n) k_end = n;
     int b = k_end % mb ? k_end % mb : mb;
-    sum += lumped_at(g, kc, rc, t, k_end, b, T, 0);
+    sum += lumped_at(g, kc, rc, t, k_end, b, T, 0, placement);
     if (k_end == n) break;
   }
   return -sum;
@@ -298,16 +318,16 @@ static void thin_film_100k(void)
   CHECK_LOG("layers per increment", m);
   CHECK_LOG("increments", stats.increments);
   CHECK_LOG("CVODE steps", stats.cvode_steps);
-  double lumped = lumped_core(g, kc, rc, t, n, m, T);
+  double lumped = lumped_core(g, kc, rc, t, n, m, T, p.placement);
   CHECK_LOG("core pressure, engine (Pa)", rs_roll_core_pressure(roll));
   CHECK_LOG("core pressure, lumped closed form (Pa)", lumped);
   CHECK_CLOSE(rs_roll_core_pressure(roll), lumped, 2e-6);
 
   const int mbs[3] = {10, 20, 40};
-  double exact = lumped_core(g, kc, rc, t, n, 1, T), e[3];
+  double exact = lumped_core(g, kc, rc, t, n, 1, T, p.placement), e[3];
   CHECK_LOG("core pressure, closed form m = 1 (Pa)", exact);
   for (int c = 0; c < 3; ++c) {
-    e[c] = fabs(lumped_core(g, kc, rc, t, n, mbs[c], T) - exact) / exact;
+    e[c] = fabs(lumped_core(g, kc, rc, t, n, mbs[c], T, p.placement) - exact) / exact;
     printf("  lumping error of the core pressure, m = %-3d %.17g\n", mbs[c], e[c]);
   }
   CHECK_CLOSE(e[1] / e[0], 2.0, 0.1);
@@ -323,7 +343,7 @@ static void thin_film_100k(void)
     for (int k_end = ((j - 1) / m + 1) * m;; k_end += m) {
       if (k_end > n) k_end = n;
       int mb = k_end % m ? k_end % m : m;
-      sum += lumped_at(g, kc, rc, t, k_end, mb, T, j);
+      sum += lumped_at(g, kc, rc, t, k_end, mb, T, j, p.placement);
       if (k_end == n) break;
     }
     worst = fmax(worst, fabs(sr[j - 1] - sum) / fabs(sum));
@@ -350,7 +370,7 @@ static void ratio_20(void)
   CHECK_CLOSE(rs_roll_outer_radius(roll), 20.0 * rc, 1e-12);
   CHECK(all_finite(roll));
   CHECK_LOG("Pfeiffer core pressure (Pa)", rs_roll_core_pressure(roll));
-  CHECK_LOG("core pressure / sum T/s", check_bounds(roll, q.caliper, 300.0, 1));
+  CHECK_LOG("core pressure / sum T/s", check_bounds(roll, &q, 300.0, 1));
   rs_roll_destroy(&roll);
 }
 
@@ -401,7 +421,7 @@ static void tension_limits_pfeiffer(void)
   rs_roll *low = wind(&p, n, 1, 1e-4);
   if (!low) return;
   double *sr = malloc(n * sizeof(double)), *st = malloc(n * sizeof(double)), core;
-  altmann_roll(sqrt(Et / (K1 * K2)), -1.0, rc, t, n, 1e-4, sr, st, &core);
+  altmann_roll(sqrt(Et / (K1 * K2)), -1.0, rc, t, n, 1e-4, sr, st, &core, p.placement);
   double worst = 0.0;
   for (int j = 0; j < n; ++j)
     worst = fmax(worst, fabs(rs_roll_sigma_r(low)[j] - sr[j]) / fabs(sr[j]));
@@ -416,7 +436,7 @@ static void tension_limits_pfeiffer(void)
   if (!high) return;
   CHECK(all_finite(high));
   CHECK_LOG("T = 1e5: core pressure (Pa)", rs_roll_core_pressure(high));
-  CHECK_LOG("T = 1e5: core pressure / sum T/s", check_bounds(high, t, 1e5, 0));
+  CHECK_LOG("T = 1e5: core pressure / sum T/s", check_bounds(high, &p, 1e5, 0));
   double E_core = rs_radial_modulus(&p.radial, rs_roll_core_pressure(high));
   CHECK_LOG("T = 1e5: g at the core", sqrt(Et / E_core));
   /* stiffer under pressure than at rest: more pressure than the rest-modulus roll */
@@ -508,7 +528,7 @@ static void hakiel_vs_table(void)
   rs_roll *hk = wind(&p, n, 1, 400.0);
   if (!hk) return;
   CHECK(all_finite(hk));
-  check_bounds(hk, p.caliper, 400.0, 1);
+  check_bounds(hk, &p, 400.0, 1);
   double Pmax = -rs_roll_sigma_r(hk)[0] * 4.0;
   rs_roll_params q = p;
   q.radial.law = RS_RADIAL_TABLE;
@@ -553,7 +573,7 @@ static void table_steep(void)
   if (!ref) return;
   CHECK(all_finite(ref));
   CHECK_LOG("core pressure (Pa)", rs_roll_core_pressure(ref));
-  CHECK_LOG("core pressure / sum T/s", check_bounds(ref, p.caliper, 300.0, 1));
+  CHECK_LOG("core pressure / sum T/s", check_bounds(ref, &p, 300.0, 1));
   const double rtols[2] = {1e-5, 1e-7};
   converges_in_rtol(&p, n, 300.0, rtols, ref);
   rs_roll_destroy(&ref);
@@ -569,7 +589,10 @@ static void table_steep(void)
  * Pfeiffer modulus changes at layer scale and so does ds); tolerance 1e-8 of
  * max |d sigma_theta| (the engine runs at rtol 1e-10). The accumulated
  * profile does not obey it at layer scale: each layer adds its own -T/s and T/t where it
- * is born, a jump the finite difference sees (docs/robustness.md). */
+ * is born, a jump the finite difference sees (docs/robustness.md). The point values at the
+ * nodes are Hakiel's accounting; with the default placement the engine reports each
+ * layer's mean hoop stress, built from this same equilibrium over the turn and checked
+ * against the exact turn-by-turn statics (tests/validation/test_ring_statics.c). */
 static void equilibrium_increment(void)
 {
   const int n = 2000;
@@ -577,6 +600,7 @@ static void equilibrium_increment(void)
   rs_roll_params p = pfeiffer_params(0.0762, t, 4.5e9, 3e3, 80.0, 3e9, n + 1);
   p.rtol = 1e-10;
   p.atol = 0;
+  p.placement = RS_LOAD_HAKIEL;
   rs_roll *roll = wind(&p, n, 1, T);
   if (!roll) return;
   double *sr0 = malloc(n * sizeof(double)), *st0 = malloc(n * sizeof(double));

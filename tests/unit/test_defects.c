@@ -1,8 +1,10 @@
 /* Defect-risk rules (docs/defects.md) on hand-made profiles whose answers are known:
- * where sigma_theta < 0, where mu P 2 pi r^2 falls below the torque (a closed-form
- * threshold radius), ratios against the limits, and "not assessed" when a limit is
- * absent. */
+ * where sigma_theta < 0 (information), where the compression exceeds the critical stress
+ * of a layer on the stack's elastic foundation (its closed form, the threshold, a small
+ * residual), where mu P 2 pi r^2 falls below the torque (a closed-form threshold radius),
+ * ratios against the limits, and "not assessed" when a limit is absent. */
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "check.h"
@@ -68,7 +70,7 @@ static void hoop_one_layer(void)
   rs_reel_result *r = profile(50);
   r->sigma_theta[17] = -3.0e4;
   rs_defect_report *rep = assess(r, NULL);
-  CHECK(rep->hoop.verdict == RS_DEFECT_RISK);
+  CHECK(rep->hoop.verdict == RS_DEFECT_PRESENT);
   CHECK(rep->hoop.layers == 1 && rep->hoop.n_ranges == 1);
   CHECK(rep->hoop.ranges[0].first == 17 && rep->hoop.ranges[0].last == 17);
   CHECK(rep->hoop.ranges[0].r_first == r->radius[17] &&
@@ -90,7 +92,7 @@ static void hoop_ranges(void)
   for (int j = 38; j < 40; ++j)
     r->sigma_theta[j] = -1.0;
   rs_defect_report *rep = assess(r, NULL);
-  CHECK(rep->hoop.verdict == RS_DEFECT_RISK);
+  CHECK(rep->hoop.verdict == RS_DEFECT_PRESENT);
   CHECK(rep->hoop.layers == 10 && rep->hoop.n_ranges == 3);
   if (rep->hoop.n_ranges == 3) {
     CHECK(rep->hoop.ranges[0].first == 0 && rep->hoop.ranges[0].last == 4);
@@ -126,9 +128,12 @@ static void limits_absent(void)
 static void zero_layers(void)
 {
   rs_reel_result *r = profile(0);
-  rs_defect_limits lim = {1e6, 1e6, 10.0, 0.3};
+  rs_radial_law law = {.law = RS_RADIAL_LINEAR, .E_r = 1e6};
+  rs_defect_limits lim = {.pressure_limit = 1e6, .core_rating = 1e6, .accel_torque = 10.0,
+                          .friction_layer = 0.3, .E_theta = 3e9, .radial = &law};
   rs_defect_report *rep = assess(r, &lim);
   CHECK(rep->hoop.verdict == RS_DEFECT_NOT_ASSESSED);
+  CHECK(rep->buckling.verdict == RS_DEFECT_NOT_ASSESSED);
   CHECK(rep->pressure.verdict == RS_DEFECT_NOT_ASSESSED);
   CHECK(rep->slip.verdict == RS_DEFECT_NOT_ASSESSED);
   CHECK(rep->core.verdict == RS_DEFECT_NOT_ASSESSED);
@@ -227,6 +232,152 @@ static void slip_one_layer(void)
   profile_free(r);
 }
 
+/* sigma_cr = sqrt(E_theta E_r / 3) is Hetenyi's N_cr = 2 sqrt(k D) of a strip of unit
+ * width (D = E_theta t^3 / 12) on a Winkler foundation k = E_r / t, divided by t: checked
+ * against that formula evaluated directly at several calipers (the caliper cancels). */
+static void buckling_critical_formula(void)
+{
+  const double E[][2] = {{3.5e9, 3.0e5}, {3.5e9, 6.0e7}, {4.5e9, 1.0e6}, {1.0e8, 2.0e4}};
+  const double t[] = {23e-6, 70e-6, 1e-3};
+  for (size_t i = 0; i < sizeof E / sizeof E[0]; ++i) {
+    double sc = rs_defect_critical_hoop_stress(E[i][0], E[i][1]);
+    for (size_t m = 0; m < sizeof t / sizeof t[0]; ++m) {
+      double D = E[i][0] * t[m] * t[m] * t[m] / 12.0, k = E[i][1] / t[m];
+      CHECK_CLOSE(sc, 2.0 * sqrt(k * D) / t[m], 1e-14);
+    }
+  }
+  /* newsprint at zero pressure, E_r = K1 K2 = 3e5 Pa: sqrt(3.5e14) Pa */
+  CHECK_CLOSE(rs_defect_critical_hoop_stress(3.5e9, 3.0e5), 18708286.933869706, 1e-15);
+  CHECK(rs_defect_critical_hoop_stress(0.0, 1e6) == 0.0);
+  CHECK(rs_defect_critical_hoop_stress(3e9, -1.0) == 0.0);
+}
+
+/* An independent route to the same value: a layer inside the roll, between two unloaded
+ * half-stacks of identical layers joined by interface springs k = E_r / t. A mode
+ * w_n = w0 alpha^|n| cos(q x) decays into each half-stack with alpha + 1/alpha =
+ * 2 + D q^4 / k, so the buckling layer needs N(q) = D q^2 + 2 k (1 - alpha) / q^2. Its
+ * infimum over wavelengths (q -> 0) is 2 sqrt(k D): the one-sided Winkler value. */
+static void buckling_layered_stack_limit(void)
+{
+  const double E_theta = 3.5e9, E_r = 6.0e7, t = 70e-6;
+  double D = E_theta * t * t * t / 12.0, k = E_r / t;
+  double q0 = pow(k / D, 0.25); /* the Winkler half-wavenumber scale */
+  double want = rs_defect_critical_hoop_stress(E_theta, E_r) * t, prev = INFINITY;
+  for (double f = 1.0; f > 1e-3; f *= 0.5) {
+    double q = f * q0, s = D * pow(q, 4) / k;
+    double one_minus_alpha = sqrt(s + 0.25 * s * s) - 0.5 * s; /* the root alpha < 1 */
+    double N = D * q * q + 2.0 * k * one_minus_alpha / (q * q);
+    CHECK(N > want * (1.0 - 1e-12)); /* never below the Winkler value */
+    CHECK(N <= prev);                /* falling towards it as the wave lengthens */
+    prev = N;
+  }
+  CHECK_LOG("N(q -> 0) (N/m)", prev);
+  CHECK_LOG("2 sqrt(k D) (N/m)", want);
+  CHECK_CLOSE(prev, want, 1e-9);
+}
+
+/* A linear stack (E_r fixed): the rule flags a layer whose compression exceeds sigma_cr,
+ * not one exactly at it; the least margin is sigma_cr / compression. */
+static void buckling_threshold(void)
+{
+  rs_reel_result *r = profile(40);
+  rs_radial_law law = {.law = RS_RADIAL_LINEAR, .E_r = 2.0e6};
+  CHECK(rs_radial_law_prepare(&law) == RS_OK);
+  rs_defect_limits lim = {.E_theta = 3.0e9, .radial = &law};
+  double crit = sqrt(3.0e9 * 2.0e6 / 3.0); /* 44.7 MPa */
+  r->sigma_theta[10] = -crit;                       /* at the threshold: ok */
+  r->sigma_theta[11] = -nextafter(crit, INFINITY);  /* just over it: risk */
+  r->sigma_theta[30] = -0.5 * crit;                 /* half of it: ok, margin 2 */
+  rs_defect_report *rep = assess(r, &lim);
+  CHECK(rep->hoop.verdict == RS_DEFECT_PRESENT && rep->hoop.layers == 3);
+  CHECK(rep->buckling.verdict == RS_DEFECT_RISK);
+  CHECK(rep->buckling.compressed == 3 && rep->buckling.layers == 1);
+  CHECK(rep->buckling.n_ranges == 1);
+  if (rep->buckling.n_ranges == 1)
+    CHECK(rep->buckling.ranges[0].first == 11 && rep->buckling.ranges[0].last == 11);
+  CHECK(rep->buckling.margin_radius == r->radius[11]);
+  CHECK(rep->buckling.margin_critical == rs_defect_critical_hoop_stress(3.0e9, 2.0e6));
+  CHECK_CLOSE(rep->buckling.margin_critical, crit, 1e-15);
+  CHECK_LT(rep->buckling.margin_min, 1.0);
+  rs_defect_report_destroy(&rep);
+  /* without the layer over it: ok, the least margin exactly 1 at the threshold layer */
+  r->sigma_theta[11] = 1.0e6;
+  rep = assess(r, &lim);
+  CHECK(rep->buckling.verdict == RS_DEFECT_OK && rep->buckling.layers == 0);
+  CHECK(rep->buckling.n_ranges == 0 && rep->buckling.ranges == NULL);
+  CHECK_CLOSE(rep->buckling.margin_min, 1.0, 1e-15);
+  CHECK(rep->buckling.margin_radius == r->radius[10]);
+  rs_defect_report_destroy(&rep);
+  profile_free(r);
+}
+
+/* The residual of an ordinary roll: every interior layer at -1 % of T0/t (T0 = 300 N/m,
+ * t = 1 mm here) on newsprint's Pfeiffer stack (E_r = K2 (P + K1)) at P = 1e5 Pa. Hoop
+ * compression is present in all of them; buckling is not at risk, with the margin
+ * sigma_cr / 3 kPa. No compression at all: ok with nothing weighed. */
+static void buckling_small_residual(void)
+{
+  const int n = 200;
+  rs_reel_result *r = profile(n);
+  rs_radial_law law = {.law = RS_RADIAL_PFEIFFER, .K1 = 5.0e3, .K2 = 60.0};
+  CHECK(rs_radial_law_prepare(&law) == RS_OK);
+  rs_defect_limits lim = {.E_theta = 3.5e9, .radial = &law};
+  r->core_pressure = 1.0e5;
+  for (int j = 0; j < n - 1; ++j)
+    r->sigma_theta[j] = -0.01 * 300.0 / 1e-3;
+  rs_defect_report *rep = assess(r, &lim);
+  CHECK(rep->hoop.verdict == RS_DEFECT_PRESENT && rep->hoop.layers == n - 1);
+  CHECK(rep->buckling.verdict == RS_DEFECT_OK && rep->buckling.layers == 0);
+  CHECK(rep->buckling.compressed == n - 1);
+  double crit = sqrt(3.5e9 * 60.0 * (1.0e5 + 5.0e3) / 3.0);
+  CHECK_LOG("sigma_cr (Pa)", crit);
+  CHECK_CLOSE(rep->buckling.margin_critical, crit, 1e-14);
+  CHECK_CLOSE(rep->buckling.margin_min, crit / 3.0e3, 1e-14);
+  rs_defect_report_destroy(&rep);
+  rs_reel_result *t = profile(n);
+  rep = assess(t, &lim);
+  CHECK(rep->hoop.verdict == RS_DEFECT_OK);
+  CHECK(rep->buckling.verdict == RS_DEFECT_OK && rep->buckling.compressed == 0);
+  rs_defect_report_destroy(&rep);
+  profile_free(t);
+  profile_free(r);
+}
+
+/* E_r is taken at the softer face of the layer: the lesser pressure of the interfaces below
+ * and above it (the core contact below the first layer, a gap as zero pressure). */
+static void buckling_softer_face(void)
+{
+  rs_reel_result *r = profile(10);
+  rs_radial_law law = {.law = RS_RADIAL_PFEIFFER, .K1 = 5.0e3, .K2 = 60.0};
+  CHECK(rs_radial_law_prepare(&law) == RS_OK);
+  rs_defect_limits lim = {.E_theta = 3.5e9, .radial = &law};
+  double E_at[] = {60.0 * (1.0e3 + 5.0e3), 60.0 * 5.0e3};
+  /* layer 4: 1 MPa below it, 1 kPa above it */
+  r->sigma_r[3] = -1.0e6;
+  r->sigma_r[4] = -1.0e3;
+  r->sigma_theta[4] = -1.0e6;
+  rs_defect_report *rep = assess(r, &lim);
+  CHECK_CLOSE(rep->buckling.margin_critical, sqrt(3.5e9 * E_at[0] / 3.0), 1e-14);
+  CHECK(rep->buckling.margin_radius == r->radius[4]);
+  rs_defect_report_destroy(&rep);
+  /* the first layer on a core contact with a gap (no pressure) below it */
+  r->sigma_theta[4] = 1.0e6;
+  r->sigma_theta[0] = -1.0e6;
+  r->core_pressure = -2.0e3;
+  rep = assess(r, &lim);
+  CHECK_CLOSE(rep->buckling.margin_critical, sqrt(3.5e9 * E_at[1] / 3.0), 1e-14);
+  CHECK(rep->buckling.margin_radius == r->radius[0]);
+  rs_defect_report_destroy(&rep);
+  /* no radial law or no E_theta: not assessed; hoop compression is still reported */
+  rs_defect_limits none = {.E_theta = 3.5e9};
+  rep = assess(r, &none);
+  CHECK(rep->buckling.verdict == RS_DEFECT_NOT_ASSESSED);
+  CHECK(rep->hoop.verdict == RS_DEFECT_PRESENT);
+  rs_defect_report_destroy(&rep);
+  CHECK(strcmp(rs_defect_verdict_name(RS_DEFECT_PRESENT), "present") == 0);
+  profile_free(r);
+}
+
 static void limits_from_scene(void)
 {
   const char *sets[] = {"material.pressure_limit=2.5e6", "material.friction_layer=0.35",
@@ -238,6 +389,9 @@ static void limits_from_scene(void)
   rs_defect_limits_from_problem(rs_scene_problem(sc), &lim);
   CHECK(lim.pressure_limit == 2.5e6 && lim.friction_layer == 0.35);
   CHECK(lim.accel_torque == 40.0 && lim.core_rating == 3e6);
+  /* the buckling rule's web: newsprint's E_theta and Pfeiffer law (models/newsprint.yaml) */
+  CHECK(lim.E_theta == 3.5e9 && lim.radial == &rs_scene_problem(sc)->material.radial);
+  CHECK(lim.radial->law == RS_RADIAL_PFEIFFER && lim.radial->K1 == 5.0e3 && lim.radial->K2 == 60);
   rs_scene_destroy(&sc);
   /* absent keys: 0, "not given" */
   CHECK(rs_scene_load(RS_ROOT_DIR "/cases/newsprint-rider.yaml", 0, NULL, &sc) == RS_OK);
@@ -269,6 +423,11 @@ static const check_case cases[] = {
     {"slip_capacity_formula", slip_capacity_formula},
     {"slip_threshold_radius", slip_threshold_radius},
     {"slip_one_layer", slip_one_layer},
+    {"buckling_critical_formula", buckling_critical_formula},
+    {"buckling_layered_stack_limit", buckling_layered_stack_limit},
+    {"buckling_threshold", buckling_threshold},
+    {"buckling_small_residual", buckling_small_residual},
+    {"buckling_softer_face", buckling_softer_face},
     {"limits_from_scene", limits_from_scene},
 };
 

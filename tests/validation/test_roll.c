@@ -14,17 +14,18 @@
 #include "reelsim/roll.h"
 #include "roll_helpers.h"
 
-static void compare_altmann(double Ec, double nu, double rtol_check)
+static void compare_altmann(double Ec, double nu, double rtol_check, rs_load_placement placement)
 {
   const double rc = 0.05, t = 2e-4, Et = 3.5e9, Er = 50e6, T = 300.0;
   const int n = 250;
   rs_roll_params p = linear_params(rc, t, Et, Er, Ec, n);
   p.nu_rtheta = nu;
+  p.placement = placement;
   rs_roll *roll = wind(&p, n, 1, T);
   if (!roll) return;
   double g = sqrt(Et / Er), kc = (isinf(Ec) ? 0.0 : Et / Ec) + nu - 1.0, core;
   double *sr = malloc(n * sizeof(double)), *st = malloc(n * sizeof(double));
-  altmann_roll(g, kc, rc, t, n, T, sr, st, &core);
+  altmann_roll(g, kc, rc, t, n, T, sr, st, &core, p.placement);
   const double *er = rs_roll_sigma_r(roll), *et = rs_roll_sigma_theta(roll);
   double max_r = 0.0, max_t = 0.0;
   for (int j = 0; j < n; ++j) {
@@ -55,17 +56,29 @@ static void compare_altmann(double Ec, double nu, double rtol_check)
 
 /* ---- cases ----------------------------------------------------------------------------- */
 
-static void altmann_rigid(void) { compare_altmann(INFINITY, 0.0, 1e-6); }
-static void altmann_elastic(void) { compare_altmann(2.0e8, 0.0, 1e-6); }
-static void altmann_elastic_poisson(void) { compare_altmann(1.0e9, 0.3, 1e-6); }
+static void altmann_rigid(void) { compare_altmann(INFINITY, 0.0, 1e-6, RS_LOAD_BENEATH); }
+static void altmann_elastic(void) { compare_altmann(2.0e8, 0.0, 1e-6, RS_LOAD_BENEATH); }
+static void altmann_elastic_poisson(void) { compare_altmann(1.0e9, 0.3, 1e-6, RS_LOAD_BENEATH); }
+static void altmann_rigid_hakiel(void) { compare_altmann(INFINITY, 0.0, 1e-6, RS_LOAD_HAKIEL); }
+static void altmann_elastic_hakiel(void) { compare_altmann(2.0e8, 0.0, 1e-6, RS_LOAD_HAKIEL); }
 
-/* One layer of tension T on a rigid core presses on it with T/r (thin ring). With g = 1
- * the closed form gives exactly 2 T s / (s^2 + r_c^2); the layer itself carries -T/s. */
+/* One layer of tension T on a rigid core presses on it with T/r (thin ring). With the load
+ * beneath the layer that is exact: p = T/r_c, the layer's outer face free, its hoop stress
+ * T/t. Hakiel's placement loads the layer's outer face instead; with g = 1 its closed form
+ * gives 2 T s / (s^2 + r_c^2) on the core, within t/r_c of T/r_c. */
 static void one_layer_rigid(void)
 {
   const double rc = 0.0762, t = 70e-6, T = 350.0;
   rs_roll_params p = linear_params(rc, t, 3.5e9, 3.5e9, INFINITY, 1);
   rs_roll *roll = wind(&p, 1, 1, T);
+  if (!roll) return;
+  CHECK_CLOSE(rs_roll_core_pressure(roll), T / rc, 1e-15);
+  CHECK(rs_roll_sigma_r(roll)[0] == 0.0);
+  CHECK_CLOSE(rs_roll_sigma_theta(roll)[0], T / t, 1e-15);
+  rs_roll_destroy(&roll);
+
+  p.placement = RS_LOAD_HAKIEL;
+  roll = wind(&p, 1, 1, T);
   if (!roll) return;
   double s = rc + t;
   CHECK_CLOSE(rs_roll_core_pressure(roll), 2.0 * T * s / (s * s + rc * rc), 1e-9);
@@ -75,19 +88,29 @@ static void one_layer_rigid(void)
   rs_roll_destroy(&roll);
 }
 
-/* After any winding, the outermost layer carries exactly its wound-on stress T0/t and
- * the radial stress -T0/s it presses with. */
+/* After any winding, the outermost layer carries exactly its wound-on stress T0/t. With
+ * the load beneath it, its outer face is free and the interface under it carries
+ * T0/s_{n-1}; with Hakiel's placement its outer face carries -T0/s. Lumped or not. */
 static void outer_layer_hoop(void)
 {
-  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, INFINITY, 500);
-  p.rtol = 1e-6;
-  p.atol = 0;
-  rs_roll *roll = wind(&p, 500, 1, 682.5);
-  if (!roll) return;
-  double s = rs_roll_outer_radius(roll);
-  CHECK_CLOSE(rs_roll_sigma_theta(roll)[499], 682.5 / 70e-6, 1e-14);
-  CHECK_CLOSE(rs_roll_sigma_r(roll)[499], -682.5 / s, 1e-14);
-  rs_roll_destroy(&roll);
+  for (int placement = 0; placement < 2; ++placement)
+    for (int m = 1; m <= 7; m += 6) {
+      rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, INFINITY, 500);
+      p.rtol = 1e-6;
+      p.atol = 0;
+      p.placement = placement ? RS_LOAD_HAKIEL : RS_LOAD_BENEATH;
+      rs_roll *roll = wind(&p, 500, m, 682.5);
+      if (!roll) return;
+      double s = rs_roll_outer_radius(roll);
+      CHECK_CLOSE(rs_roll_sigma_theta(roll)[499], 682.5 / 70e-6, 1e-14);
+      if (p.placement == RS_LOAD_BENEATH) {
+        CHECK(rs_roll_sigma_r(roll)[499] == 0.0);
+        CHECK_CLOSE(rs_roll_sigma_r(roll)[498], -682.5 / (s - 70e-6), 1e-14);
+      } else {
+        CHECK_CLOSE(rs_roll_sigma_r(roll)[499], -682.5 / s, 1e-14);
+      }
+      rs_roll_destroy(&roll);
+    }
 }
 
 /* ---- an independent finite-difference solution of the same increments ---------------------
@@ -164,7 +187,10 @@ static void fd_increment(const double *g2n, int k, double rc, double t, double k
   free(a); free(b); free(c); free(d); free(x);
 }
 
-static void fd_wind(fd_roll *f, int sub)
+/* Layer k loads node top = k - shift: its own outer radius (shift 0, Hakiel) or the roll
+ * beneath it (shift 1: every layer of that body takes the load in its hoop stress, and
+ * the new layer's outer face is free; the first layer presses T/r_c on the core). */
+static void fd_wind(fd_roll *f, int sub, int shift)
 {
   double kc = f->Et / f->Ec + f->nu - 1.0;
   double *g2n = malloc((f->n + 1) * sizeof(double));
@@ -172,23 +198,32 @@ static void fd_wind(fd_roll *f, int sub)
   double T = 682.5;
   f->core = 0;
   for (int k = 1; k <= f->n; ++k) {
-    for (int j = 0; j <= k; ++j) {
-      double P = j == 0 ? -f->core : (j < k ? -f->sr[j - 1] : 0.0);
-      g2n[j] = f->Et / (f->K2 * (P + f->K1));
+    const int top = k - shift;
+    if (top == 0) {
+      f->core -= T / f->rc;
+    } else {
+      for (int j = 0; j <= top; ++j) {
+        double P = j == 0 ? -f->core : (j < k ? -f->sr[j - 1] : 0.0);
+        g2n[j] = f->Et / (f->K2 * (P + f->K1));
+      }
+      fd_increment(g2n, top, f->rc, f->t, kc, T, sub, ds, rds);
+      f->core += ds[0];
+      for (int j = 1; j <= top && j < k; ++j) {
+        f->sr[j - 1] += ds[j];
+        f->st[j - 1] += ds[j] + rds[j];
+      }
     }
-    fd_increment(g2n, k, f->rc, f->t, kc, T, sub, ds, rds);
-    f->core += ds[0];
-    for (int j = 1; j < k; ++j) {
-      f->sr[j - 1] += ds[j];
-      f->st[j - 1] += ds[j] + rds[j];
-    }
-    f->sr[k - 1] = -T / (f->rc + k * f->t);
+    f->sr[k - 1] = shift ? 0.0 : -T / (f->rc + k * f->t);
     f->st[k - 1] = T / f->t;
   }
+  if (shift) /* a layer's hoop stress is its mean over the turn: the turn's equilibrium */
+    for (int j = 1; j <= f->n; ++j)
+      f->st[j - 1] = ((f->rc + j * f->t) * f->sr[j - 1] -
+                      (f->rc + (j - 1) * f->t) * (j > 1 ? f->sr[j - 2] : f->core)) / f->t;
   free(g2n); free(ds); free(rds);
 }
 
-static void pfeiffer_vs_fd(void)
+static void pfeiffer_vs_fd_placed(rs_load_placement placement)
 {
   const int n = 300;
   const double rc = 0.0762, t = 70e-6, Et = 3.5e9, K1 = 5e3, K2 = 60, Ec = 1e9;
@@ -196,8 +231,9 @@ static void pfeiffer_vs_fd(void)
   fd_roll f2 = f1;
   f2.sr = calloc(n, 8);
   f2.st = calloc(n, 8);
-  fd_wind(&f1, 8);
-  fd_wind(&f2, 16);
+  const int shift = placement == RS_LOAD_BENEATH;
+  fd_wind(&f1, 8, shift);
+  fd_wind(&f2, 16, shift);
   /* Richardson: second order */
   double core_fd = -(4 * f2.core - f1.core) / 3;
   rs_roll_params p = linear_params(rc, t, Et, 0, Ec, n);
@@ -206,12 +242,13 @@ static void pfeiffer_vs_fd(void)
   p.radial.K2 = K2;
   p.rtol = 1e-9;
   p.atol = 1e-12;
+  p.placement = placement;
   rs_roll *roll = wind(&p, n, 1, 682.5);
   if (roll) {
     double max_r = 0, max_t = 0;
     for (int j = 0; j < n; ++j) {
       double sr = (4 * f2.sr[j] - f1.sr[j]) / 3, st = (4 * f2.st[j] - f1.st[j]) / 3;
-      max_r = fmax(max_r, fabs(rs_roll_sigma_r(roll)[j] - sr) / fabs(sr));
+      if (sr != 0.0) max_r = fmax(max_r, fabs(rs_roll_sigma_r(roll)[j] - sr) / fabs(sr));
       max_t = fmax(max_t, fabs(rs_roll_sigma_theta(roll)[j] - st) / (682.5 / t));
     }
     double fd_change = fabs(f2.core - f1.core) / fabs(f2.core);
@@ -229,6 +266,9 @@ static void pfeiffer_vs_fd(void)
   rs_roll_destroy(&roll);
   free(f1.sr); free(f1.st); free(f2.sr); free(f2.st);
 }
+
+static void pfeiffer_vs_fd(void) { pfeiffer_vs_fd_placed(RS_LOAD_BENEATH); }
+static void pfeiffer_vs_fd_hakiel(void) { pfeiffer_vs_fd_placed(RS_LOAD_HAKIEL); }
 
 /* ---- convergence ------------------------------------------------------------------------ */
 
@@ -431,7 +471,7 @@ static void g700_ratio10(void)
   if (!roll) return;
   CHECK_CLOSE(rs_roll_outer_radius(roll) / rc, 10.0, 1e-12);
   double *sr = malloc(n * sizeof(double)), *st = malloc(n * sizeof(double)), core;
-  altmann_roll(700.0, -1.0, rc, t, n, T, sr, st, &core);
+  altmann_roll(700.0, -1.0, rc, t, n, T, sr, st, &core, p.placement);
   double max_r = 0, max_t = 0;
   int finite = 1;
   for (int j = 0; j < n; ++j) {
@@ -466,9 +506,12 @@ static const check_case cases[] = {
     {"altmann_rigid", altmann_rigid},
     {"altmann_elastic", altmann_elastic},
     {"altmann_elastic_poisson", altmann_elastic_poisson},
+    {"altmann_rigid_hakiel", altmann_rigid_hakiel},
+    {"altmann_elastic_hakiel", altmann_elastic_hakiel},
     {"one_layer_rigid", one_layer_rigid},
     {"outer_layer_hoop", outer_layer_hoop},
     {"pfeiffer_vs_fd", pfeiffer_vs_fd},
+    {"pfeiffer_vs_fd_hakiel", pfeiffer_vs_fd_hakiel},
     {"converges_in_rtol", converges_in_rtol},
     {"converges_in_layers_per_step", converges_in_layers_per_step},
     {"lumping_corrected", lumping_corrected},

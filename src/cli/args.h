@@ -1,0 +1,34 @@
+/* The command line of every command, parsed by one getopt_long loop (args.c) from the
+ * option table (options.h). */
+#ifndef RS_CLI_ARGS_H
+#define RS_CLI_ARGS_H
+
+#include "cli/options.h"
+
+typedef struct cli_args {
+  const cli_command *cmd;
+  const char *scene;    /* the first operand: the scene (plot: the file) */
+  int n_scenes;         /* compare: every scene, in order (others: 1) */
+  const char **scenes;
+  const char *output;   /* -o FILE (run, check, compare) or DIR (plot, study), or NULL */
+  int quiet;
+  int verbose;          /* --verbose: errors also say where in the code */
+  int keep_partial;     /* run --keep-partial: write what finished when the run stops early */
+  const char *csv_dir;  /* run --csv DIR, or NULL */
+  int quick;            /* study --quick */
+  int jobs;             /* study --jobs N (default 1) */
+  const char *radius;   /* nip --radius R, as given */
+  int json;             /* nip --json */
+  int n_sets;           /* --set key.path=value, in order; run/check/compare -o adds
+                           output.file=FILE last */
+  const char **sets;
+  char *owned;          /* the "output.file=FILE" made from -o */
+} cli_args;
+
+/* Parses argv[first..] for the command argv[first - 1]. Returns -1 when the command should
+ * run, otherwise the exit status (0 after --help, 2 on bad usage, with the message printed).
+ * Free with cli_args_free in every case. */
+int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args *a);
+void cli_args_free(cli_args *a);
+
+#endif

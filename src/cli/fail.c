@@ -1,0 +1,33 @@
+/* See fail.h. */
+#include "cli/fail.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+
+static int verbose;
+
+void cli_fail_verbose(int on) { verbose = on; }
+
+int cli_fail_is_verbose(void) { return verbose; }
+
+int cli_fail(int code, const char *fmt, ...)
+{
+  va_list ap;
+  fputs("reelsim: ", stderr);
+  va_start(ap, fmt);
+  vfprintf(stderr, fmt, ap);
+  va_end(ap);
+  fputc('\n', stderr);
+  return code;
+}
+
+int cli_fail_status(rs_status st)
+{
+  int code = rs_status_exit_code(st);
+  if (st == RS_ERR_INPUT) cli_fail(code, "%s", rs_error_message());
+  else if (st == RS_ERR_SOLVER) cli_fail(code, "solver failure: %s", rs_error_message());
+  else cli_fail(code, "%s: %s", rs_status_name(st), rs_error_message());
+  if (verbose && st != RS_ERR_INPUT && rs_error_where()[0])
+    fprintf(stderr, "reelsim:   (at %s)\n", rs_error_where());
+  return code;
+}

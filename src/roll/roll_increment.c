@@ -1,0 +1,249 @@
+/* The stress increment of a block of layers from one integration's (w, ln y), by the
+ * one-layer decays down the roll, and its commit to the roll's stresses (both lumping
+ * schemes, both load placements; docs/roll-model.md). */
+#include <math.h>
+#include <string.h>
+
+#include "roll/roll_internal.h"
+
+/* exp(d) for the decay over one layer, d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
+ * the Taylor sum to d^7 (relative error d^8/8! < 2e-17 for |d| < 0.03) costs 8 flops where
+ * exp() costs ~20 ns, and the product down the roll carries ~N x 1e-16 of rounding (1e-12
+ * for 10,000 layers). A larger step (a very soft web, g t / r > 0.03) takes exp(). */
+static inline double roll_exp_step(double d)
+{
+  return fabs(d) >= 0.03 ? exp(d) : roll_exp_small(d);
+}
+
+/* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
+ * down, of the one-layer decays exp(L_j - L_{j+1}) (roll_exp_step: the Taylor sums in a
+ * plain loop that vectorises, then the running product, which takes exp() where a decay
+ * is large). Below 1e-290 the product is 0: no subnormals. */
+static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
+{
+  for (int j = lo; j < top; ++j) {
+    const double d = L[j] - L[j + 1];
+    e[j] = roll_exp_small(d);
+  }
+  double p = 1.0;
+  for (int j = top - 1; j >= lo; --j) {
+    double t = e[j];
+    /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
+     * increasing there, and far below 1 or negative for d < -0.03): look only then */
+    if (!(t > 0.9705 && t < 1.0304)) t = roll_exp_step(L[j] - L[j + 1]);
+    p = p > 1e-290 ? p * t : 0.0;
+    e[j] = p;
+  }
+}
+
+/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
+ * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
+ * for Hakiel, the outer radius of the layer beneath it by default), and its sub-increment
+ * is exactly
+ *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
+ * because y, integrated from the core, does not depend on where the load is applied.
+ * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
+ * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
+ * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
+ * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
+ * at or above it: that layer is part of the loaded body). With mean != NULL also the mean, over the
+ * sub-increments that reach a node, of the pressure the block has added there before each:
+ *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
+ * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
+ * For m = 1 these are the single-layer formulas of Hakiel accretion, operation for
+ * operation. */
+void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+{
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  const double *L = roll->L, *w = roll->w;
+  /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
+   * of the layer beneath it (then that layer's hoop stress takes the load too, and the new
+   * outermost layer's outer face stays traction free) */
+  const int shift = roll->shift, bottom = k_old + 1 - shift;
+  double S = 0.0, V = 0.0; /* V_b = sum_{i >= b} (m - 1 - i) T_i/s_i exp(L_b - L(s_i)) */
+  for (int b = m - 1; b >= 0; --b) {
+    const int j = bottom + b;
+    const double decay = b == m - 1 ? 0.0 : exp(L[j] - L[j + 1]);
+    const double above = S * decay, c = T0[b] / (rc + j * t);
+    S = above + c;
+    roll->dsr[j] = -S;
+    roll->dsh[j] = -above * (1.0 + w[j]); /* Hakiel's hoop accounting (unused beneath) */
+    if (mean) {
+      V = V * decay + (m - 1 - b) * c;
+      mean[j] = V / (m - b);
+    }
+  }
+  if (shift) /* the outermost layer: no load above it */
+    roll->dsr[k_old + m] = 0.0;
+  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
+   * the start node lo of the integration, and below it from the reference's shape */
+  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
+  const int j0 = roll->start;
+  const int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
+  roll_decays(L, dsr, lo, bottom);
+  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block) */
+    memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
+    if (!shift)
+      for (int j = 0; j < bottom; ++j) roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
+    roll->shape_top = bottom - 1;
+  }
+  roll->deep_lo = lo;
+  roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  if (mean) {
+    for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
+    const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
+    for (int j = 0; j < lo; ++j) mean[j] = cm * roll->shape_e[j];
+  }
+  for (int j = lo; j < bottom; ++j) dsr[j] *= -S;
+  if (!shift)
+    for (int j = lo; j < bottom; ++j) dsh[j] = dsr[j] * (1.0 + w[j]);
+}
+
+/* With the load beneath each layer, a layer's hoop stress is its mean over the turn, i.e.
+ * its tension per unit width over t, and the turn's equilibrium gives it exactly from the
+ * radial stresses on its two faces:
+ *     sigma_theta_j = (s_j sigma_r(s_j) - s_{j-1} sigma_r(s_{j-1})) / t,
+ * because every increment satisfies sigma_theta = d(r sigma_r)/dr (the integral of its hoop
+ * stress over the turn is [r ds]) and the layer joined at T0_j/t while pressing T0_j on
+ * the face beneath it (docs/roll-model.md). The outermost layer, whose outer face is free,
+ * gets T0/t. A point value at s_j would differ from the mean by a first-order-in-t amount
+ * that, for g ~ 60, is of the size of the hoop stress itself deep in the roll. Layers
+ * 1..k (arrays 0..k-1); node 0 is the core. */
+static void roll_hoop_from_equilibrium(rs_roll *roll, int k)
+{
+  const double rc = roll->p.core_radius, t = roll->p.caliper, inv_t = 1.0 / t;
+  const double *restrict sr = roll->sigma_r;
+  double *restrict sth = roll->sigma_theta;
+  double below = rc * roll->core_sigma; /* r sigma_r on the inner face of layer j */
+  for (int j = 1; j <= k; ++j) {
+    const double above = (rc + j * t) * sr[j - 1];
+    sth[j - 1] = (above - below) * inv_t;
+    below = above;
+  }
+}
+
+/* RS_OK when ds[0..k] and dh[0..k] (an increment's radial and hoop stress at the nodes)
+ * are all finite; else the error naming the lowest node that is not. */
+static rs_status roll_check_increment(const rs_roll *roll, const double *ds, const double *dh, int k)
+{
+  /* the nodes below deep_lo are c_deep times the reference's shape, which is finite (its
+   * own increment passed this check): c_deep says for them. Above, x - x is 0 for a finite
+   * x and NaN for an infinite or NaN one: one sum says whether all are finite (four sums,
+   * independent, so that the compiler can vectorise them: a floating-point sum's order is
+   * otherwise fixed) */
+  const double rc = roll->p.core_radius, t = roll->p.caliper;
+  if (!isfinite(roll->c_deep))
+    return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
+                    rc + k * t);
+  double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
+  int j = roll->deep_lo;
+  for (; j + 3 <= k; j += 4) {
+    z0 += (ds[j] - ds[j]) + (dh[j] - dh[j]);
+    z1 += (ds[j + 1] - ds[j + 1]) + (dh[j + 1] - dh[j + 1]);
+    z2 += (ds[j + 2] - ds[j + 2]) + (dh[j + 2] - dh[j + 2]);
+    z3 += (ds[j + 3] - ds[j + 3]) + (dh[j + 3] - dh[j + 3]);
+  }
+  for (; j <= k; ++j) z0 += (ds[j] - ds[j]) + (dh[j] - dh[j]);
+  const int bad = (z0 + z1) + (z2 + z3) != 0.0;
+  for (j = roll->deep_lo; bad && j <= k; ++j)
+    if (!isfinite(ds[j]) || !isfinite(dh[j]))
+      return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
+                               "non-finite stress increment at the core (outer radius %.9g m)",
+                               rc + k * t)
+                    : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
+                               rc + j * t, j);
+  return RS_OK;
+}
+
+/* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
+ * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
+ * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
+rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
+{
+  const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
+  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + top * t;
+  double above = 0.0;
+  for (int i = m - 1; i >= 0; --i) {
+    above += T0[i];
+    roll->block_share[i] = total > 0.0 ? above / total : 0.0;
+  }
+  const double scale = -total / s;
+  /* First every node's increment (ds, and ds + r ds'), then the state: an increment that
+   * fails leaves the roll exactly as it was, every finished layer intact. From the top
+   * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
+   * (roll_block_increment). */
+  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
+  roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
+  dsr[top] = 1.0;
+  for (int j = 0; j <= top; ++j) {
+    const double ds = scale * dsr[j];
+    dsr[j] = ds;
+    dsh[j] = ds * (1.0 + roll->w[j]);
+  }
+  if (shift) { /* the outermost layer's outer face: traction free */
+    dsr[k] = 0.0;
+    dsh[k] = 0.0;
+  }
+  roll->deep_lo = 0;
+  roll->c_deep = 0.0;
+  rs_status st = roll_check_increment(roll, dsr, dsh, k);
+  if (st) return st;
+  roll->core_sigma += dsr[0];
+  for (int j = 1; j <= k; ++j) {
+    double ds = dsr[j], hoop = dsh[j];
+    if (j <= k_old) {
+      roll->sigma_r[j - 1] += ds;
+      roll->sigma_theta[j - 1] += hoop;
+    } else {
+      int b = j - k_old - 1; /* position in the block, 0 = innermost */
+      /* the tension wound at or above the node's radius: with the load beneath a layer,
+       * a block layer's own tension is not on its outer face */
+      double share_above = b + 1 < m ? roll->block_share[b + 1] : 0.0;
+      double share_at = shift ? share_above : roll->block_share[b];
+      roll->sigma_r[j - 1] = share_at * ds;
+      roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
+    }
+  }
+  if (shift) roll_hoop_from_equilibrium(roll, k);
+  return RS_OK;
+}
+
+/* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
+ * from their own share. */
+rs_status roll_commit(rs_roll *roll, int m, const double *T0)
+{
+  const int k_old = roll->n, k = roll->n + m;
+  const double t = roll->p.caliper;
+  rs_status st = roll_check_increment(roll, roll->dsr, roll->shift ? roll->dsr : roll->dsh, k);
+  if (st) return st;
+  if (roll->shift) { /* the radial stresses; the hoop stresses follow from them */
+    const int lo = roll->deep_lo;
+    const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict ds = roll->dsr;
+    double *restrict sr = roll->sigma_r;
+    roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
+    for (int j = 1; j < lo; ++j) sr[j - 1] += c * se[j];
+    for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) sr[j - 1] += ds[j];
+    for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
+    roll_hoop_from_equilibrium(roll, k);
+    return RS_OK;
+  }
+  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment) */
+  const int lo = roll->deep_lo;
+  const double c = roll->c_deep;
+  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  double *restrict sr = roll->sigma_r, *restrict st_ = roll->sigma_theta;
+  roll->core_sigma += lo > 0 ? c * se[0] : roll->dsr[0];
+  for (int j = 1; j < lo; ++j) {
+    sr[j - 1] += c * se[j];
+    st_[j - 1] += c * sh[j];
+  }
+  for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) {
+    sr[j - 1] += roll->dsr[j];
+    st_[j - 1] += roll->dsh[j];
+  }
+  for (int j = k_old + 1; j <= k; ++j) {
+    roll->sigma_r[j - 1] = roll->dsr[j];
+    roll->sigma_theta[j - 1] = T0[j - k_old - 1] / t + roll->dsh[j];
+  }
+  return RS_OK;
+}

@@ -1,0 +1,226 @@
+/* One integration of (w, ln y) across the roll with CVODE, one step at a time, the layer
+ * nodes inside each step filled by quintic Hermite interpolation, and the reuse of the deep
+ * solution of an earlier integration from the core (docs/roll-model.md). */
+#include <math.h>
+#include <string.h>
+
+#include "roll/roll_internal.h"
+#include "roll/vector2.h"
+
+/* The state (w, L) at x with its first two x-derivatives, from the equations:
+ *   w' = g^2 - 1 - 2w - w^2,   w'' = (g^2)' - 2 (1 + w) w',   L' = w,   L'' = w'. */
+typedef struct roll_jet {
+  double x, w, dw, d2w, L;
+} roll_jet;
+
+static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
+{
+  double dg2 = 0.0, g2 = roll_g2_at(roll, x, &dg2);
+  double dw = g2 - 1.0 - 2.0 * w - w * w;
+  return (roll_jet){x, w, dw, dg2 - 2.0 * (1.0 + w) * dw, L};
+}
+
+/* (w, L) inside the step [a, b] by the quintic Hermite interpolant of the values and first
+ * two derivatives at its ends (error h^6 y^(6) / 46080 at most: far below the step's own
+ * local error, of order h^6 y^(6) / 6 for BDF5), instead of asking CVODE for its
+ * interpolant node by node (CVodeGetDky was a tenth of the engine's time). The quintic is
+ * kept as its monomial coefficients in s = (x - a)/h, so a node costs two Horner sums. */
+typedef struct roll_quintic {
+  double a, inv_h, cw[6], cL[6];
+} roll_quintic;
+
+/* coefficients of p(s) from p, h p', h^2 p'' at s = 0 (p0, d0, c0) and s = 1 (p1, d1, c1) */
+static void roll_quintic_coef(double p0, double d0, double c0, double p1, double d1, double c1,
+                              double c[6])
+{
+  c[0] = p0;
+  c[1] = d0;
+  c[2] = 0.5 * c0;
+  c[3] = 10.0 * (p1 - p0) - 6.0 * d0 - 4.0 * d1 - 1.5 * c0 + 0.5 * c1;
+  c[4] = 15.0 * (p0 - p1) + 8.0 * d0 + 7.0 * d1 + 1.5 * c0 - c1;
+  c[5] = 6.0 * (p1 - p0) - 3.0 * (d0 + d1) - 0.5 * (c0 - c1);
+}
+
+static void roll_quintic_make(const roll_jet *a, const roll_jet *b, roll_quintic *q)
+{
+  const double h = b->x - a->x, hh = h * h;
+  q->a = a->x;
+  q->inv_h = 1.0 / h;
+  roll_quintic_coef(a->w, h * a->dw, hh * a->d2w, b->w, h * b->dw, hh * b->d2w, q->cw);
+  roll_quintic_coef(a->L, h * a->w, hh * a->dw, b->L, h * b->w, hh * b->dw, q->cL);
+}
+
+/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises) */
+static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
+                              double *restrict L, int n)
+{
+  const double a = q->a, inv_h = q->inv_h;
+  const double w0 = q->cw[0], w1 = q->cw[1], w2 = q->cw[2], w3 = q->cw[3], w4 = q->cw[4], w5 = q->cw[5];
+  const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
+  for (int i = 0; i < n; ++i) {
+    const double s = (x[i] - a) * inv_h;
+    w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+    L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+  }
+}
+
+/* The first step: BDF starts at order 1 (backward Euler), local error h^2 |w''| / 2, so
+ * h0 = sqrt(2 (rtol |w0| + atol) / |w''(x0)|) passes the first error test instead of
+ * failing it and shrinking; capped by the relaxation scales (w relaxes from w0 (kc at the
+ * core) towards g - 1 over dx ~ 1/(2g), and from a large kc (a core much softer than the
+ * web) like 1/(x - x_c + 1/kc): start inside the shorter one, or the first Newton
+ * iterations diverge). g2 is g^2 at x0. */
+static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2)
+{
+  const double cap = 0.05 / fmax(sqrt(g2 + 1.0), fabs(j0->w) + 1.0);
+  const double tol = roll->p.rtol * fabs(j0->w) + roll->p.atol, d2 = fabs(j0->d2w);
+  if (!(d2 > 0.0)) return cap;
+  const double h = 0.5 * sqrt(2.0 * tol / d2); /* half: a margin for the error estimate */
+  return h < cap ? h : cap;
+}
+
+/* Integrations from the core between two references: a reference serves 32 increments.
+ * Accuracy does not need a refresh (roll_reuse_start bounds the error whatever the
+ * reference's age); cost does: the start node sinks as the modulus drifts, and an
+ * integration from the core costs ~150 steps against ~90 from the interior. Refreshing
+ * every 16, 32 or 64 increments gives the same steps within 0.5 % (docs/performance.md). */
+enum { RS_REUSE_REFRESH = 32 };
+
+/* The node to start the integration of an increment onto k from, keeping the reference's
+ * (w, L) below it, or -1: from the core, as a new reference.
+ *
+ * Node j's reference (w, L) solves the Riccati equation with E_ref instead of E_r. The
+ * equation relaxes to w = g - 1 at rate 2g, so a relative change eps of g^2 = E_theta/E_r
+ * moves w by ~ (w + 1) eps / 2: the increment below a start node s0 is off by a relative
+ * ~ (eps / 2) (L(s0) - L_j), and above it by ~ eps / 4 (the start value's error, relaxing).
+ * The increment itself is (T0/s) exp(L_j - L_s) there. So the error in units of T0/s is
+ * at most ~ E(s0) = max_{j <= s0} eps_j x exp(max_{j <= s0} L_j - L_s) x (at most e^-1 / 2
+ * from the factor u e^-u of the nodes below): the start node is the highest with E(s0) <=
+ * rtol, the tolerance CVODE's own local errors are held to. E grows with s0 (both maxima
+ * do), so it is found by bisection. L_s is the top of the last increment (L[n - shift]),
+ * one increment below the new one: the bound is on the safe side.
+ *
+ * The error has one sign (pressures only grow, so E_r drifts one way); measured on the
+ * 6054-layer newsprint reel at rtol 1e-6, the stresses move by 7e-7 of the core pressure
+ * against integrating every increment from the core, a thirtieth of CVODE's own global
+ * error there (2.3e-5; docs/roll-model.md). */
+static int roll_reuse_start(rs_roll *roll)
+{
+  const int n = roll->n;
+  if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1 ||
+      roll->ref_age >= RS_REUSE_REFRESH)
+    return -1;
+  /* below the top of the last integration, so the new one (one node higher) has length */
+  const int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
+  const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
+  double *restrict pe = roll->scan_eps, *restrict pl = roll->scan_L;
+  double me = 0.0, ml = -INFINITY;
+  for (int j = 0; j <= top; ++j) {
+    const double e = fabs(Er[j] - Eref[j]) / Eref[j];
+    me = e > me ? e : me;
+    ml = L[j] > ml ? L[j] : ml;
+    pe[j] = me;
+    pl[j] = ml;
+  }
+  const double Ls = L[n - roll->shift], tol = roll->p.rtol;
+  int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    if (pe[mid] * exp(pl[mid] - Ls) <= tol)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo >= 1 ? lo : -1; /* node 0 alone saves nothing: start a new reference */
+}
+
+/* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
+ * roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
+ * keeping the reference's values below it.
+ * One CVODE step at a time; the nodes inside each step are interpolated between its ends
+ * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
+rs_status roll_integrate(rs_roll *roll, int k)
+{
+  if (k == 0) { /* the first layer's load on the core: nothing to integrate */
+    roll->w[0] = roll->kc;
+    roll->L[0] = 0.0;
+    roll->start = 0;
+    roll->stats.full_integrations++;
+    return RS_OK;
+  }
+  const double *xn = roll->xnode, xs = xn[k];
+  const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
+  const double x0 = xn[first];
+  sunrealtype *y = N_VGetArrayPointer(roll->y);
+  if (from_core) {
+    roll->w[0] = roll->kc;
+    roll->L[0] = 0.0;
+  }
+  /* from the core (0, kc); else the reference's values, whose L carries the reference's
+   * origin: every L difference the increment is built from stays consistent */
+  y[0] = roll->w[first];
+  y[1] = roll->L[first];
+  roll->cvode_msg[0] = '\0';
+  /* every integration anchors r = e^x afresh at its start: its radii do not depend on
+   * where the last integration ended */
+  roll->x_anchor = x0;
+  roll->r_anchor = exp(x0);
+  roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
+  const double g2_start = roll_g2_at(roll, x0, NULL);
+  if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
+      CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
+      CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
+    return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
+  roll->start = first;
+  if (from_core) { /* a new reference: nodes 0..k, with the modulus it is integrated with */
+    memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
+    roll->ref_top = k;
+    roll->ref_age = 0;
+    roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
+    roll->stats.full_integrations++;
+  } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
+    roll->ref_top = j0;
+    roll->ref_age++;
+  }
+
+  int next = first + 1; /* next node to fill */
+  long steps = 0;
+  sunrealtype tret = x0;
+  while (next <= k) {
+    if (++steps > roll->p.max_steps)
+      return RS_ERROR(RS_ERR_SOLVER,
+                      "CVODE needed more than %ld steps to cross the roll (reached r = %.6g m of "
+                      "%.6g m); raise numerics.max_steps or loosen numerics.rtol",
+                      roll->p.max_steps, exp(tret), exp(xs));
+    int flag = CVode(roll->cvode, xs, roll->y, &tret, CV_ONE_STEP);
+    if (flag < 0)
+      return RS_ERROR(RS_ERR_SOLVER, "CVODE failed at r = %.9g m (roll outer radius %.9g m): %s",
+                      exp(tret), exp(xs),
+                      roll->cvode_msg[0] ? roll->cvode_msg : CVodeGetReturnFlagName(flag));
+    const roll_jet cur = roll_jet_at(roll, tret, y[0], y[1]);
+    if (xn[next] <= tret) {
+      roll_quintic q;
+      roll_quintic_make(&prev, &cur, &q);
+      /* the last node inside the step: r_j = r_c + j t, so j = (e^x - r_c)/t up to rounding,
+       * settled against the stored ln r_j */
+      int last = (int)((exp(tret) - roll->p.core_radius) / roll->p.caliper);
+      if (last < next) last = next;
+      if (last > k) last = k;
+      while (last > next && xn[last] > tret) --last;
+      while (last < k && xn[last + 1] <= tret) ++last;
+      roll_quintic_fill(&q, xn + next, roll->w + next, roll->L + next, last - next + 1);
+      next = last + 1;
+      if (next > k) { /* the outer node is the step's end: exact, not interpolated */
+        roll->w[k] = cur.w;
+        roll->L[k] = cur.L;
+      }
+    }
+    prev = cur;
+  }
+  long nfe = 0;
+  CVodeGetNumRhsEvals(roll->cvode, &nfe); /* counters restart at every CVodeReInit */
+  roll->stats.cvode_steps += steps;
+  roll->stats.rhs_evals += nfe;
+  roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS); /* counts across increments */
+  return RS_OK;
+}

@@ -1,0 +1,102 @@
+/* The roll engine's private state and the interface between its parts (src/roll):
+ *   roll.c            the roll: parameters, create/destroy, rs_roll_add_layers, queries
+ *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
+ *                     Jacobian, error weights, the modulus an increment sees
+ *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
+ *                     interpolation inside each step; the reuse of the deep solution)
+ *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
+ *   roll_state.c      saving and restoring a roll's stresses
+ *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
+ * docs/roll-model.md has the model and the derivations. */
+#ifndef REELSIM_ROLL_INTERNAL_H
+#define REELSIM_ROLL_INTERNAL_H
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+
+#include "reelsim/roll.h"
+
+enum { RS_CVODE_MSG_LEN = 512 };
+
+struct rs_roll {
+  rs_roll_params p;
+  double kc;            /* core condition r y'/y at r_c */
+  int shift;            /* 1: a layer's load on the node beneath it (RS_LOAD_BENEATH), 0:
+                           at its own outer radius (Hakiel): layer k loads node k - shift */
+  int n;                /* layers wound */
+  double core_sigma;    /* sigma_r at r_c, Pa (compression negative) */
+  double *sigma_r;      /* [cap] per layer at s_j */
+  double *sigma_theta;  /* [cap] */
+  /* work arrays over nodes 0..n (node 0 = core) */
+  double *Er;           /* E_r at the nodes for the current increment; g^2 = E_theta/E_r */
+  double *lg2;          /* ln g^2, computed when the interpolation first needs it */
+  unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch */
+  /* the Hermite cubic of the interval last evaluated (CVODE's calls cluster): its index,
+   * the epoch it belongs to, and ln g^2 and its slopes at the two ends */
+  int hj;
+  unsigned long long hepoch;
+  double hy0, hy1, hm0, hm1;
+  /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
+   * its end all look at the same x */
+  double gx, g2x, dg2x;
+  unsigned long long gepoch;
+  double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
+  double *w, *L;        /* (w, ln y) at the nodes */
+  double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
+  double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
+  double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
+  double *P_mean;       /* [cap + 1] corrected lumping: mean pressure increment seen, Pa */
+  double *dsr, *dsh;    /* [cap + 1] the increment's ds and ds + r ds' at the nodes */
+  /* CVODE */
+  SUNContext sunctx;
+  void *cvode;
+  N_Vector y;
+  SUNNonlinearSolver NLS;
+  char cvode_msg[RS_CVODE_MSG_LEN];
+  rs_roll_stats stats;
+  int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
+  /* Reuse of the deep solution (roll_reuse_start): the last integration from the core is
+   * the reference; below the node an integration starts from, (w, L) stay the reference's */
+  double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
+  double *scan_eps;     /* [cap + 1] max over nodes 0..j of |E_r / Er_ref - 1| */
+  double *scan_L;       /* [cap + 1] max over nodes 0..j of L */
+  int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
+  int ref_age;          /* integrations since the reference */
+  int start;            /* node the last integration started from (0: the core) */
+  /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
+   * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
+   * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is
+   *   ds_j = c e_j,  ds_j + r ds_j' = c e_j (1 + w_j),   c = ds_{j0} / e_{j0}    (j < j0),
+   * two multiplications a node (roll_block_increment, roll_commit). */
+  double *shape_e, *shape_h;
+  int shape_top;
+  /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h) */
+  int deep_lo;
+  double c_deep;
+};
+
+/* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
+static inline double roll_exp_small(double d)
+{
+  return 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
+         d * (1.0 / 720 + d * (1.0 / 5040)))))));
+}
+
+/* roll_ode.c */
+double roll_g2_at(rs_roll *roll, double x, double *dg2);
+int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
+int roll_jac(double x, const double y[2], double J[2][2], void *user);
+int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
+void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
+void roll_gather_pressure(rs_roll *roll, int k, const double *add);
+rs_status roll_set_modulus(rs_roll *roll, int k);
+
+/* roll_integrate.c */
+rs_status roll_integrate(rs_roll *roll, int k);
+
+/* roll_increment.c */
+void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
+rs_status roll_commit(rs_roll *roll, int m, const double *T0);
+rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+#endif

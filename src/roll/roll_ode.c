@@ -1,0 +1,158 @@
+/* The increment ODE of the roll engine (docs/roll-model.md): in x = ln r,
+ *     w' = g^2 - 1 - 2 w - w^2,   L' = w,     g^2(x) = E_theta / E_r(P(x)),
+ * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
+ * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
+#include <math.h>
+#include <stdio.h>
+
+#include "roll/roll_internal.h"
+
+static inline double roll_lg2(rs_roll *roll, int j)
+{
+  if (roll->lg2_epoch[j] != roll->epoch) {
+    roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
+    roll->lg2_epoch[j] = roll->epoch;
+  }
+  return roll->lg2[j];
+}
+
+/* r = e^x near the anchor as r_anchor e^(x - x_anchor) by a Taylor sum (relative error
+ * below 1e-16 for |x - x_anchor| < 0.02); the anchor itself is always an exact exp(), so
+ * nothing accumulates. CVODE evaluates within a step or two of where it was. */
+static inline double roll_radius_at(rs_roll *roll, double x)
+{
+  const double d = x - roll->x_anchor;
+  if (!(fabs(d) < 0.02)) {
+    roll->x_anchor = x;
+    roll->r_anchor = exp(x);
+    return roll->r_anchor;
+  }
+  return roll->r_anchor * roll_exp_small(d);
+}
+
+/* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
+ * the layer coordinate xi = (r - r_c)/t, and d(g^2)/dx = g^2 v'(xi) r/t (continuous: the
+ * interpolant is C^1), which the node interpolation needs. */
+static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
+{
+  const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
+  const int last = roll->nodes_in_use - 1;
+  int j = xi <= 0.0 ? -1 : (int)xi;
+  if (j < 0 || j >= last) {
+    *dg2 = 0.0;
+    return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
+  }
+  double f = xi - j;
+  if (j != roll->hj || roll->hepoch != roll->epoch) {
+    double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
+    roll->hm0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
+    roll->hm1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
+    roll->hy0 = y0;
+    roll->hy1 = y1;
+    roll->hj = j;
+    roll->hepoch = roll->epoch;
+  }
+  const double y0 = roll->hy0, y1 = roll->hy1, m0 = roll->hm0, m1 = roll->hm1;
+  double f2 = f * f, f3 = f2 * f;
+  double v = (2 * f3 - 3 * f2 + 1) * y0 + (f3 - 2 * f2 + f) * m0 + (-2 * f3 + 3 * f2) * y1 + (f3 - f2) * m1;
+  double g2 = exp(v);
+  double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
+  *dg2 = g2 * dv * r / roll->p.caliper;
+  return g2;
+}
+
+/* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
+double roll_g2_at(rs_roll *roll, double x, double *dg2)
+{
+  if (x != roll->gx || roll->gepoch != roll->epoch) {
+    roll->g2x = roll_g2_eval(roll, x, &roll->dg2x);
+    roll->gx = x;
+    roll->gepoch = roll->epoch;
+  }
+  if (dg2) *dg2 = roll->dg2x;
+  return roll->g2x;
+}
+
+/* f(x, [w, L]) = [g^2 - 1 - 2w - w^2, w],  x = ln r */
+int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
+{
+  rs_roll *roll = user;
+  const sunrealtype *y = NV_DATA_S(yv); /* the macro: the library's getter is a call */
+  sunrealtype *f = NV_DATA_S(ydot);
+  double g2 = roll_g2_at(roll, x, NULL), w = y[0];
+  f[0] = g2 - 1.0 - 2.0 * w - w * w;
+  f[1] = w;
+  return isfinite(f[0]) ? 0 : 1; /* recoverable: CVODE retries with a smaller step */
+}
+
+/* J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
+int roll_jac(double x, const double y[2], double J[2][2], void *user)
+{
+  (void)x;
+  (void)user;
+  J[0][0] = -(2.0 + 2.0 * y[0]);
+  J[0][1] = 0.0;
+  J[1][0] = 1.0;
+  J[1][1] = 0.0;
+  return 0;
+}
+
+/* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in
+ * one function instead of five vector operations */
+int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
+{
+  const rs_roll *roll = user;
+  const sunrealtype *y = NV_DATA_S(yv);
+  sunrealtype *e = NV_DATA_S(ewt);
+  const double rtol = roll->p.rtol, atol = roll->p.atol;
+  const double d0 = rtol * fabs(y[0]) + atol, d1 = rtol * fabs(y[1]) + atol;
+  if (!(d0 > 0.0 && d1 > 0.0)) return -1;
+  e[0] = 1.0 / d0;
+  e[1] = 1.0 / d1;
+  return 0;
+}
+
+void roll_cvode_err(int code, const char *module, const char *function, char *msg,
+                           void *user)
+{
+  rs_roll *roll = user;
+  snprintf(roll->cvode_msg, sizeof roll->cvode_msg, "%s %s (code %d): %s", module, function, code,
+           msg);
+}
+
+/* P_node = the pressures (Pa, compression positive) at the nodes 0..k before the
+ * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Plain
+ * loops: they vectorise. */
+void roll_gather_pressure(rs_roll *roll, int k, const double *add)
+{
+  double *restrict P = roll->P_node;
+  const int n = roll->n < k ? roll->n : k;
+  P[0] = -roll->core_sigma;
+  for (int j = 1; j <= n; ++j) P[j] = -roll->sigma_r[j - 1];
+  for (int j = n + 1; j <= k; ++j) P[j] = 0.0;
+  if (add)
+    for (int j = 0; j <= k; ++j) P[j] += add[j];
+}
+
+/* E_r(P) at the nodes 0..k, P from roll->P_node: the modulus an integration sees
+ * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
+rs_status roll_set_modulus(rs_roll *roll, int k)
+{
+  rs_radial_modulus_n(&roll->p.radial, roll->P_node, roll->Er, k + 1);
+  /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
+   * E_r > 0 checked at load; the pressures are finite: roll_commit); a polynomial or a
+   * table can leave its range */
+  const rs_radial_kind law = roll->p.radial.law;
+  if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER)
+    for (int j = 0; j <= k; ++j)
+      if (!(roll->Er[j] > 0.0 && roll->Er[j] < INFINITY))
+        return RS_ERROR(RS_ERR_SOLVER,
+                        "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
+                        "positive: the radial law is outside its range",
+                        roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+  /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
+   * long roll): a log at every node at every increment was 7 % of the engine's time */
+  roll->epoch++;
+  roll->nodes_in_use = k + 1;
+  return RS_OK;
+}
