@@ -1,6 +1,6 @@
 /* A scene: everything one simulated reel needs, resolved and checked.
  *
- * Loaded from YAML (libcyaml) by rs_scene_load; see docs/scenes.md for every key.
+ * Loaded from YAML (libyaml) by rs_scene_load; see docs/scenes.md for every key.
  * The scene is the file's view of a reel: the rs_problem it resolves to (what the reel
  * winds, rs_scene_problem) plus what belongs to the file (path, title, where the material
  * came from, the output file, the resolved text). */

@@ -1,53 +1,10 @@
 /* rs_scene_load: the loader's steps in order (see scene_internal.h). */
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "reelsim/version.h"
 #include "scene/scene_internal.h"
-
-typedef struct logbuf {
-  char text[2048];
-  size_t len;
-} logbuf;
-
-/* libcyaml's log, kept for the error record instead of going to stderr */
-static void cy_log(cyaml_log_t level, void *ctx, const char *fmt, va_list args)
-{
-  logbuf *b = ctx;
-  (void)level;
-  if (b->len + 1 >= sizeof b->text) return;
-  int n = vsnprintf(b->text + b->len, sizeof b->text - b->len, fmt, args);
-  if (n < 0) return;
-  b->len += (size_t)n;
-  if (b->len >= sizeof b->text) b->len = sizeof b->text - 1;
-  /* one line: its messages end in newlines */
-  for (char *p = b->text; *p; ++p)
-    if (*p == '\n') *p = ' ';
-}
-
-static rs_status cyaml_load(const char *text, const char *path, ys_scene **out)
-{
-  logbuf log = {.len = 0};
-  cyaml_config_t cfg = {.log_fn = cy_log, .log_ctx = &log, .mem_fn = cyaml_mem,
-                        .log_level = CYAML_LOG_ERROR, .flags = CYAML_CFG_NO_ALIAS};
-  log.text[0] = '\0';
-  cyaml_err_t err = cyaml_load_data((const uint8_t *)text, strlen(text), &cfg, &ys_scene_schema,
-                                    (cyaml_data_t **)out, NULL);
-  if (err == CYAML_OK) return RS_OK;
-  *out = NULL;
-  if (err == CYAML_ERR_OOM) return RS_ERROR(RS_ERR_MEMORY, "out of memory loading %s", path);
-  /* the tree checks walk this same schema, so this means they are out of step with it */
-  return RS_ERROR(RS_ERR_INTERNAL, "%s: libcyaml rejected the checked scene: %s (%s)", path,
-                  cyaml_strerror(err), log.text);
-}
-
-static void cyaml_release(ys_scene *y)
-{
-  cyaml_config_t cfg = {.mem_fn = cyaml_mem, .log_level = CYAML_LOG_ERROR};
-  if (y) cyaml_free(&cfg, &ys_scene_schema, y, 0);
-}
 
 /* The resolved scene: a header of comments (what it came from, derived values), then the
  * scene with the material inlined, shorthands expanded, defaults and overrides applied.
@@ -103,7 +60,6 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   snprintf(s->path, sizeof s->path, "%s", path);
 
   yn *root = NULL;
-  ys_scene *y = NULL;
   char *body = NULL;
   rs_status st = text ? yn_parse_text(text, len, s->path, &root) : yn_parse_file(s->path, &root);
   for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 0);
@@ -111,13 +67,11 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 1);
   if (st == RS_OK) st = ys_normalize(root);
   if (st == RS_OK) st = ys_typecheck(root, &ys_scene_schema);
-  if (st == RS_OK) st = ys_fill_defaults(root, s);
+  if (st == RS_OK) st = ys_fill_defaults(root, s->path);
+  if (st == RS_OK) st = ys_resolve(root, s);
   if (st == RS_OK) st = yn_emit(root, &body);
-  if (st == RS_OK) st = cyaml_load(body, s->path, &y);
-  if (st == RS_OK) st = ys_resolve(root, y, s);
   if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);
 
-  cyaml_release(y);
   free(body);
   yn_free(root);
   if (st != RS_OK) {

@@ -20,11 +20,7 @@ static void join3(char *dst, size_t size, const char *a, const char *sep, const 
   dst[len] = '\0';
 }
 
-static int is_scalar_schema(const cyaml_schema_value_t *s)
-{
-  return s->type != CYAML_MAPPING && s->type != CYAML_SEQUENCE &&
-         s->type != CYAML_SEQUENCE_FIXED;
-}
+static int is_scalar_schema(const ys_value *s) { return s->type != YS_MAP && s->type != YS_LIST; }
 
 rs_status ys_apply_set(yn *root, const char *set, int pass)
 {
@@ -68,9 +64,9 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
     yn *kid = yn_map_get(cur, seg[i]);
     if (!kid) {
       /* absent: create it when the schema knows the key */
-      const cyaml_schema_value_t *s = ys_schema_at(next);
+      const ys_value *s = ys_schema_at(next);
       if (!s) {
-        const cyaml_schema_value_t *ps = walked[0] ? ys_schema_at(walked) : &ys_scene_schema;
+        const ys_value *ps = walked[0] ? ys_schema_at(walked) : &ys_scene_schema;
         ys_schema_keys(ps ? ps : &ys_scene_schema, keys, sizeof keys);
         return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
                         seg[i], walked[0] ? " in " : "", walked, keys);
@@ -78,8 +74,8 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
       int last = i == n - 1;
       if (last && !is_scalar_schema(s) && !ys_is_shorthand(next))
         return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, next,
-                        s->type == CYAML_MAPPING ? "mapping" : "list");
-      if (!last && s->type != CYAML_MAPPING)
+                        s->type == YS_MAP ? "mapping" : "list");
+      if (!last && s->type != YS_MAP)
         return RS_ERROR(RS_ERR_INPUT, "%s: cannot create entries of the list %s with --set",
                         origin, next);
       kid = last ? yn_new_scalar(value, root->file, 0, next) : yn_new_map(root->file, 0, next);

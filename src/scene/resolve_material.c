@@ -1,4 +1,4 @@
-/* The material from its typed form: sheet constants and the radial modulus law. Errors
+/* The material from the checked tree: sheet constants and the radial modulus law. Errors
  * point into the model file the material came from (or the scene, when inline). */
 
 #include <ctype.h>
@@ -30,11 +30,11 @@ static const char *radial_name(rs_radial_kind law)
   return "?";
 }
 
-static rs_status resolve_radial(const yn *root, const ys_radial *y, rs_radial_law *law)
+static rs_status resolve_radial(const yn *root, rs_radial_law *law)
 {
   char key[256], want[64];
   const yn *node = yn_get(root, "material.radial");
-  rs_radial_kind kind = (rs_radial_kind)y->law;
+  rs_radial_kind kind = (rs_radial_kind)ys_enum(root, "material.radial.law");
   snprintf(want, sizeof want, "%s", radial_keys(kind));
 
   for (int i = 0; i < node->n; ++i) {
@@ -62,16 +62,11 @@ static rs_status resolve_radial(const yn *root, const ys_radial *y, rs_radial_la
 
   memset(law, 0, sizeof *law);
   law->law = kind;
-  law->E_r = y->E_r;
-  law->K1 = y->K1;
-  law->K2 = y->K2;
-  law->n_coef = (int)y->C_count;
-  for (unsigned i = 0; i < y->C_count; ++i) law->C[i] = y->C[i];
-  law->n_points = (int)y->points_count;
-  for (unsigned i = 0; i < y->points_count; ++i) {
-    law->P[i] = y->points[i].v[0];
-    law->E[i] = y->points[i].v[1];
-  }
+  law->E_r = ys_num(root, "material.radial.E_r");
+  law->K1 = ys_num(root, "material.radial.K1");
+  law->K2 = ys_num(root, "material.radial.K2");
+  law->n_coef = ys_nums(root, "material.radial.C", law->C, RS_HAKIEL_MAX_COEF);
+  law->n_points = ys_pairs(root, "material.radial.points", law->P, law->E, RS_TABLE_MAX);
   if (rs_radial_law_prepare(law) != RS_OK) {
     /* its messages open with the key they are about ("radial.K1 must be > 0 ..."):
      * find that key in the tree for the file and line */
@@ -98,43 +93,51 @@ static rs_status resolve_radial(const yn *root, const ys_radial *y, rs_radial_la
   return RS_OK;
 }
 
-rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material *m)
+rs_status ys_resolve_material(const yn *root, rs_material *m)
 {
+  const double caliper = ys_num(root, "material.caliper"), E_theta = ys_num(root, "material.E_theta"),
+               nu_rtheta = ys_num(root, "material.nu_rtheta"),
+               G_rtheta = ys_num(root, "material.G_rtheta"),
+               density = ys_num(root, "material.density"),
+               pressure_limit = ys_num(root, "material.pressure_limit"),
+               friction_layer = ys_num(root, "material.friction_layer"),
+               E_z = ys_num(root, "material.E_z"), E_cd = ys_num(root, "material.E_cd"),
+               nu_md_cd = ys_num(root, "material.nu_md_cd");
   memset(m, 0, sizeof *m);
-  snprintf(m->name, sizeof m->name, "%s", y->name ? y->name : "inline");
-  if (!(y->caliper > 0.0))
-    return ys_fail(root, "material.caliper", "must be > 0 m (got %g)", y->caliper);
-  if (!(y->E_theta > 0.0))
-    return ys_fail(root, "material.E_theta", "must be > 0 Pa (got %g)", y->E_theta);
-  if (!(y->nu_rtheta > -1.0 && y->nu_rtheta < 1.0))
-    return ys_fail(root, "material.nu_rtheta", "must lie in (-1, 1) (got %g)", y->nu_rtheta);
-  if (ys_has(root, "material.G_rtheta") && !(y->G_rtheta > 0.0))
-    return ys_fail(root, "material.G_rtheta", "must be > 0 Pa (got %g)", y->G_rtheta);
-  if (ys_has(root, "material.density") && !(y->density > 0.0))
-    return ys_fail(root, "material.density", "must be > 0 kg/m^3 (got %g)", y->density);
-  if (ys_has(root, "material.pressure_limit") && !(y->pressure_limit > 0.0))
+  snprintf(m->name, sizeof m->name, "%s", ys_str(root, "material.name"));
+  if (!(caliper > 0.0))
+    return ys_fail(root, "material.caliper", "must be > 0 m (got %g)", caliper);
+  if (!(E_theta > 0.0))
+    return ys_fail(root, "material.E_theta", "must be > 0 Pa (got %g)", E_theta);
+  if (!(nu_rtheta > -1.0 && nu_rtheta < 1.0))
+    return ys_fail(root, "material.nu_rtheta", "must lie in (-1, 1) (got %g)", nu_rtheta);
+  if (ys_has(root, "material.G_rtheta") && !(G_rtheta > 0.0))
+    return ys_fail(root, "material.G_rtheta", "must be > 0 Pa (got %g)", G_rtheta);
+  if (ys_has(root, "material.density") && !(density > 0.0))
+    return ys_fail(root, "material.density", "must be > 0 kg/m^3 (got %g)", density);
+  if (ys_has(root, "material.pressure_limit") && !(pressure_limit > 0.0))
     return ys_fail(root, "material.pressure_limit",
-                   "must be > 0 Pa (got %g; omit the key to skip the check)", y->pressure_limit);
-  if (ys_has(root, "material.friction_layer") && !(y->friction_layer > 0.0))
+                   "must be > 0 Pa (got %g; omit the key to skip the check)", pressure_limit);
+  if (ys_has(root, "material.friction_layer") && !(friction_layer > 0.0))
     return ys_fail(root, "material.friction_layer",
-                   "must be > 0 (got %g; omit the key to skip the check)", y->friction_layer);
-  m->pressure_limit = y->pressure_limit;
-  m->friction_layer = y->friction_layer;
+                   "must be > 0 (got %g; omit the key to skip the check)", friction_layer);
+  m->pressure_limit = pressure_limit;
+  m->friction_layer = friction_layer;
   /* the sheet in the contact nip (docs/nip.md): 0 = derived (E_z: the roll's nip E_r,
    * E_cd: E_theta); nu_md_cd defaults to 0.3, a typical in-plane Poisson ratio of paper */
-  if (ys_has(root, "material.E_z") && !(y->E_z > 0.0))
-    return ys_fail(root, "material.E_z", "must be > 0 Pa (got %g)", y->E_z);
-  if (ys_has(root, "material.E_cd") && !(y->E_cd > 0.0))
-    return ys_fail(root, "material.E_cd", "must be > 0 Pa (got %g)", y->E_cd);
-  if (ys_has(root, "material.nu_md_cd") && !(y->nu_md_cd > -1.0 && y->nu_md_cd < 1.0))
-    return ys_fail(root, "material.nu_md_cd", "must lie in (-1, 1) (got %g)", y->nu_md_cd);
-  m->E_z = y->E_z;
-  m->E_cd = y->E_cd;
-  m->nu_md_cd = ys_has(root, "material.nu_md_cd") ? y->nu_md_cd : 0.3;
-  m->caliper = y->caliper;
-  m->E_theta = y->E_theta;
-  m->nu_rtheta = y->nu_rtheta;
-  m->G_rtheta = y->G_rtheta;
-  m->density = y->density;
-  return resolve_radial(root, &y->radial, &m->radial);
+  if (ys_has(root, "material.E_z") && !(E_z > 0.0))
+    return ys_fail(root, "material.E_z", "must be > 0 Pa (got %g)", E_z);
+  if (ys_has(root, "material.E_cd") && !(E_cd > 0.0))
+    return ys_fail(root, "material.E_cd", "must be > 0 Pa (got %g)", E_cd);
+  if (ys_has(root, "material.nu_md_cd") && !(nu_md_cd > -1.0 && nu_md_cd < 1.0))
+    return ys_fail(root, "material.nu_md_cd", "must lie in (-1, 1) (got %g)", nu_md_cd);
+  m->E_z = E_z;
+  m->E_cd = E_cd;
+  m->nu_md_cd = ys_has(root, "material.nu_md_cd") ? nu_md_cd : 0.3;
+  m->caliper = caliper;
+  m->E_theta = E_theta;
+  m->nu_rtheta = nu_rtheta;
+  m->G_rtheta = G_rtheta;
+  m->density = density;
+  return resolve_radial(root, &m->radial);
 }

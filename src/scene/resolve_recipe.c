@@ -1,4 +1,4 @@
-/* Recipes (web tension, nip load) from their typed form, with the checks a user needs:
+/* Recipes (web tension, nip load) from the checked tree, with the checks a user needs:
  * the keys each law takes, a sorted table, and no taper that goes negative on the roll. */
 #include <math.h>
 #include <stdio.h>
@@ -34,12 +34,21 @@ static int law_uses(rs_recipe_kind law, const char *key)
   return 0;
 }
 
-rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
-                            const ys_recipe *y, double r0, double r1, rs_recipe *out)
+/* the number `key` of the recipe at `path` */
+static double num(const yn *root, const char *path, const char *key)
+{
+  char full[256];
+  snprintf(full, sizeof full, "%s.%s", path, key);
+  return ys_num(root, full);
+}
+
+rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
+                            double r1, rs_recipe *out)
 {
   char key[256];
   const yn *node = yn_get(root, path);
-  rs_recipe_kind law = (rs_recipe_kind)y->law;
+  snprintf(key, sizeof key, "%s.law", path);
+  rs_recipe_kind law = (rs_recipe_kind)ys_enum(root, key);
   const char *law_name = rs_recipe_law_name(law);
 
   for (int i = 0; i < node->n; ++i) {
@@ -67,13 +76,13 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
   switch (law) {
   case RS_RECIPE_CONSTANT:
     NEED("value");
-    out->start = out->end = y->value;
+    out->start = out->end = num(root, path, "value");
     break;
   case RS_RECIPE_LINEAR:
     NEED("start");
     NEED("end");
-    out->start = y->start;
-    out->end = y->end;
+    out->start = num(root, path, "start");
+    out->end = num(root, path, "end");
     break;
   case RS_RECIPE_HYPERBOLIC: {
     NEED("start");
@@ -84,14 +93,14 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
                      "law hyperbolic takes either 'end' or 'k', %s",
                      has_k ? "not both" : "and neither is given");
     }
-    out->start = y->start;
-    if (has_end) out->end = y->end;
-    else out->k = y->k;
+    out->start = num(root, path, "start");
+    if (has_end) out->end = num(root, path, "end");
+    else out->k = num(root, path, "k");
     break;
   }
   case RS_RECIPE_TORQUE:
     NEED("start");
-    out->start = y->start;
+    out->start = num(root, path, "start");
     break;
   case RS_RECIPE_TABLE: {
     int has_t = yn_map_get(node, "table") != NULL, has_p = yn_map_get(node, "points") != NULL;
@@ -100,13 +109,8 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
       return ys_fail(root, key, "give the table as 'table' or as 'points', not both");
     }
     NEED(has_p ? "points" : "table");
-    const ys_pair *pts = has_p ? y->points : y->table;
-    unsigned n = has_p ? y->points_count : y->table_count;
-    out->n_points = (int)n;
-    for (unsigned i = 0; i < n; ++i) {
-      out->r[i] = pts[i].v[0];
-      out->value[i] = pts[i].v[1];
-    }
+    snprintf(key, sizeof key, "%s.%s", path, has_p ? "points" : "table");
+    out->n_points = ys_pairs(root, key, out->r, out->value, RS_TABLE_MAX);
     break;
   }
   }

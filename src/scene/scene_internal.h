@@ -1,8 +1,9 @@
 /* Internal interface between the scene loader's steps:
- *   parse (ytree.c) -> --set material (overrides.c) -> model lookup (models.c)
+ *   parse (yparse.c) -> --set material (overrides.c) -> model lookup (models.c)
  *   -> other --set (overrides.c) -> shorthands (normalize.c) -> schema checks on the tree
- *   (typecheck.c) -> defaults (defaults.c) -> libcyaml typed load (load.c)
- *   -> range checks and derived values (resolve_*.c) -> resolved text (load.c). */
+ *   (typecheck.c) -> defaults (defaults.c) -> typed reads (read.c), range checks and
+ *   derived values (resolve_*.c) -> resolved text (load.c, emitted from the tree).
+ * The schema (schema.c) is the one description of the keys the steps share. */
 #ifndef RS_SCENE_INTERNAL_H
 #define RS_SCENE_INTERNAL_H
 
@@ -14,9 +15,17 @@
 #include "scene/ytree.h"
 
 /* typecheck.c */
-rs_status ys_typecheck(const yn *node, const cyaml_schema_value_t *schema);
-void ys_schema_keys(const cyaml_schema_value_t *mapping, char *buf, size_t size);
+rs_status ys_typecheck(const yn *node, const ys_value *schema);
 int ys_parse_double(const char *text, double *out);
+
+/* read.c: typed values of the checked tree at a dotted path (see read.c). */
+double ys_num(const yn *root, const char *path);
+long long ys_int(const yn *root, const char *path);
+int ys_enum(const yn *root, const char *path); /* the rs_ enum value of its name */
+const char *ys_str(const yn *root, const char *path);
+/* a list of numbers, and a list of pairs [a, b]: how many (at most max) */
+int ys_nums(const yn *root, const char *path, double *out, int max);
+int ys_pairs(const yn *root, const char *path, double *a, double *b, int max);
 
 /* overrides.c: applies one "key.path=value". pass 0 applies only a set of `material`
  * itself (before the model is looked up), pass 1 everything else. */
@@ -32,14 +41,15 @@ int ys_model_candidates(const char *scene_path, const char *name, char cand[][RS
 /* normalize.c: `tension: 350` -> {law: constant, value: 350}; a table without `law`. */
 rs_status ys_normalize(yn *root);
 
-/* defaults.c: fills absent optional keys (marked origin "default"). */
-rs_status ys_fill_defaults(yn *root, const rs_scene *scene);
+/* defaults.c: fills absent optional keys (marked origin "default"); the title and the
+ * output file are named after the scene's path. */
+rs_status ys_fill_defaults(yn *root, const char *scene_path);
 
-/* resolve_*.c: typed values -> rs_scene, with range checks located through the tree. */
-rs_status ys_resolve_material(const yn *root, const ys_material *y, rs_material *m);
-rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what,
-                            const ys_recipe *y, double r0, double r1, rs_recipe *out);
-rs_status ys_resolve(const yn *root, const ys_scene *y, rs_scene *scene);
+/* resolve_*.c: the checked tree -> rs_scene, with range checks located through the tree. */
+rs_status ys_resolve_material(const yn *root, rs_material *m);
+rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
+                            double r1, rs_recipe *out);
+rs_status ys_resolve(const yn *root, rs_scene *scene);
 
 /* Reports an error at a dotted scene path; when the key is absent, at its nearest
  * present parent ("file:line: nip.load: required by ..."). */

@@ -1,114 +1,69 @@
-/* The scene schema: libcyaml descriptions of every key, and the plain structs libcyaml
- * loads them into. The same schema drives the positioned checks on the YAML tree
- * (typecheck.c), so unknown keys, types and required keys are reported against the
- * line a user wrote, and libcyaml then only does the typed load.
+/* The scene schema: every key of a scene and model file, its type, whether it is required,
+ * its default, and what is nested below it. This one table drives the positioned checks on
+ * the YAML tree (typecheck.c), the defaults written into it (defaults.c), the creation of
+ * keys by --set (overrides.c) and the typed reads the resolution makes (read.c).
  * docs/scenes.md documents every key listed here. */
 #ifndef RS_SCENE_SCHEMA_H
 #define RS_SCENE_SCHEMA_H
 
-#include <cyaml/cyaml.h>
+#include <stddef.h>
 
-#include "reelsim/material.h"
-#include "reelsim/scene.h"
+#include "scene/ytree.h"
 
-typedef struct ys_pair {
-  double v[2];
-} ys_pair;
+typedef enum ys_type {
+  YS_FLOAT,  /* a finite number */
+  YS_INT,    /* a whole number that fits an int */
+  YS_LONG,   /* a whole number that fits a long long */
+  YS_ENUM,   /* one of `names` */
+  YS_STRING, /* min..max bytes */
+  YS_MAP,    /* the keys `fields` */
+  YS_LIST    /* min..max entries, each an `entry` (min == max && exact: exactly that many) */
+} ys_type;
 
-typedef struct ys_recipe {
-  int law; /* rs_recipe_kind */
-  double value, start, end, k;
-  ys_pair *table;
-  unsigned table_count;
-  ys_pair *points; /* alias of table */
-  unsigned points_count;
-} ys_recipe;
+typedef struct ys_name {
+  const char *name;
+  int value; /* the rs_ enum value it stands for */
+} ys_name;
 
-typedef struct ys_radial {
-  int law; /* rs_radial_kind */
-  double E_r, K1, K2;
-  double C[RS_HAKIEL_MAX_COEF];
-  unsigned C_count;
-  ys_pair *points;
-  unsigned points_count;
-} ys_radial;
+typedef struct ys_field ys_field;
 
-typedef struct ys_material {
-  char *name, *source, *notes;
-  double caliper, E_theta, nu_rtheta, G_rtheta, density;
-  double pressure_limit, friction_layer; /* defect checks */
-  double E_z, E_cd, nu_md_cd; /* the sheet in the contact nip (docs/nip.md) */
-  ys_radial radial;
-} ys_material;
+typedef struct ys_value {
+  ys_type type;
+  const ys_field *fields; /* YS_MAP: ends with a field whose key is NULL */
+  const struct ys_value *entry; /* YS_LIST */
+  unsigned min, max;      /* YS_LIST: entries; YS_STRING: bytes */
+  int exact;              /* YS_LIST: exactly min entries ("a pair") */
+  const ys_name *names;   /* YS_ENUM: ends with a NULL name */
+} ys_value;
 
-typedef struct ys_core {
-  double radius, stiffness, bore, modulus, poisson;
-  double rating; /* defect check */
-} ys_core;
+/* A default that depends on the scene rather than on the schema: the file's stem. */
+typedef enum ys_derived { YS_PLAIN, YS_FROM_STEM, YS_FROM_STEM_H5 } ys_derived;
 
-typedef struct ys_winding {
-  double final_radius, web_length;
-  ys_recipe tension;
-  double accel_torque; /* slip check */
-} ys_winding;
+struct ys_field {
+  const char *key;
+  int required;
+  const ys_value *value;
+  /* Default, written into the tree when the key is absent (origin "default") and, for a
+   * mapping, an empty one to fill: the text, or "{}" for a mapping. */
+  const char *def;
+  ys_derived derived;
+  /* The default applies only when the sibling key `when` has (or with a leading '!',
+   * has not) the text `when_is`; NULL: always. */
+  const char *when, *when_is;
+};
 
-typedef struct ys_friction {
-  double roll, drum;
-} ys_friction;
-
-typedef struct ys_drum {
-  double radius, core_radius, E, nu, E_r, E_theta, nu_rtheta, G_rtheta;
-} ys_drum;
-
-typedef struct ys_nip {
-  int model; /* rs_nip_model_kind */
-  ys_recipe load;
-  ys_friction friction;
-  int winder; /* rs_winder_kind */
-  double torque_share;
-  ys_drum drum;
-  int nodes, terms;
-  int update; /* rs_nip_update_kind */
-  int update_every;
-  double T0_rtol;
-} ys_nip;
-
-typedef struct ys_numerics {
-  int layers_per_step;
-  double rtol, atol;
-  long max_steps;
-  int reuse;
-  int load_placement;
-} ys_numerics;
-
-typedef struct ys_output {
-  char *file;
-  int history_every;
-  double *nip_profiles_at;
-  unsigned nip_profiles_at_count;
-} ys_output;
-
-typedef struct ys_scene {
-  char *title;
-  ys_material material;
-  ys_core core;
-  ys_winding winding;
-  ys_nip nip;
-  ys_numerics numerics;
-  ys_output output;
-} ys_scene;
-
-/* Top-level schema of a scene file (a pointer to ys_scene). */
-extern const cyaml_schema_value_t ys_scene_schema;
-/* A material mapping (a model file, or the inline `material:` value). */
-extern const cyaml_schema_value_t ys_material_value;
+/* The top-level mapping of a scene file. */
+extern const ys_value ys_scene_schema;
 
 /* Keys whose value may also be written as a plain number (a constant recipe) or a name
- * (a model file): the loader rewrites them into mappings before the schema applies. */
+ * (a model file): the loader rewrites them into mappings before the checks apply. */
 int ys_is_shorthand(const char *scene_path);
 
-/* The schema of a mapping field by dotted path from the top level; NULL if the
- * schema has no such key. *parent_out (optional) receives the enclosing mapping. */
-const cyaml_schema_value_t *ys_schema_at(const char *scene_path);
+/* The schema of the value at a dotted path from the top level ("nip.load.table[2]");
+ * NULL if the schema has no such key. */
+const ys_value *ys_schema_at(const char *scene_path);
+
+/* The keys of a mapping, ", "-separated, for messages. */
+void ys_schema_keys(const ys_value *mapping, char *buf, size_t size);
 
 #endif

@@ -1,7 +1,7 @@
-/* Walks the libcyaml schema over the positioned YAML tree: unknown keys, missing
+/* Walks the schema (schema.c) over the positioned YAML tree: unknown keys, missing
  * required keys, scalar types, enum values and list lengths, each reported at the line
- * the user wrote it. libcyaml would find the same faults, but only in the text the loader
- * hands it (after overrides and shorthands), where its line numbers mean nothing. */
+ * the user wrote it (or the --set that wrote it). After this the typed reads (read.c)
+ * cannot fail. */
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -10,17 +10,6 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
-
-static void key_list(const cyaml_schema_field_t *f, char *buf, size_t size)
-{
-  size_t len = 0;
-  buf[0] = '\0';
-  for (; f->key; ++f) {
-    int n = snprintf(buf + len, size - len, "%s%s", len ? ", " : "", f->key);
-    if (n < 0 || (size_t)n >= size - len) break;
-    len += (size_t)n;
-  }
-}
 
 static const char *kind_name(const yn *node)
 {
@@ -53,7 +42,7 @@ static rs_status check_float(const yn *node)
   return RS_OK;
 }
 
-static rs_status check_int(const yn *node, unsigned size)
+static rs_status check_int(const yn *node, int is_long)
 {
   char *end;
   if (yn_is_empty(node)) return yn_error(node, "missing value (expected a whole number)");
@@ -62,30 +51,29 @@ static rs_status check_int(const yn *node, unsigned size)
   errno = 0;
   long long v = strtoll(node->text, &end, 10);
   if (*end || end == node->text) return yn_error(node, "not a whole number (got '%s')", node->text);
-  long long lo = size >= 8 ? LLONG_MIN : INT_MIN, hi = size >= 8 ? LLONG_MAX : INT_MAX;
+  long long lo = is_long ? LLONG_MIN : INT_MIN, hi = is_long ? LLONG_MAX : INT_MAX;
   if (errno == ERANGE || v < lo || v > hi)
     return yn_error(node, "number out of range (got '%s')", node->text);
   return RS_OK;
 }
 
-static rs_status check_enum(const yn *node, const cyaml_schema_value_t *s)
+static rs_status check_enum(const yn *node, const ys_value *s)
 {
   char list[512];
   size_t len = 0;
   list[0] = '\0';
-  for (uint32_t i = 0; i < s->enumeration.count; ++i) {
-    if (strcmp(node->text, s->enumeration.strings[i].str) == 0) return RS_OK;
-    int n = snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "",
-                     s->enumeration.strings[i].str);
+  for (const ys_name *e = s->names; e->name; ++e) {
+    if (strcmp(node->text, e->name) == 0) return RS_OK;
+    int n = snprintf(list + len, sizeof list - len, "%s%s", e != s->names ? ", " : "", e->name);
     if (n > 0 && (size_t)n < sizeof list - len) len += (size_t)n;
   }
   if (yn_is_empty(node)) return yn_error(node, "missing value (one of: %s)", list);
   return yn_error(node, "unknown value '%s' (expected one of: %s)", node->text, list);
 }
 
-static rs_status check_value(const yn *node, const cyaml_schema_value_t *s);
+static rs_status check_value(const yn *node, const ys_value *s);
 
-static rs_status check_mapping(const yn *node, const cyaml_schema_value_t *s)
+static rs_status check_mapping(const yn *node, const ys_value *s)
 {
   char keys[512];
   if (node->kind != YN_MAP) {
@@ -95,24 +83,23 @@ static rs_status check_mapping(const yn *node, const cyaml_schema_value_t *s)
     return yn_error(node, "expected a mapping of keys, got %s", kind_name(node));
   }
   for (int i = 0; i < node->n; ++i) {
-    const cyaml_schema_field_t *f = s->mapping.fields;
+    const ys_field *f = s->fields;
     while (f->key && strcmp(f->key, node->keys[i]) != 0) ++f;
     if (!f->key) {
-      key_list(s->mapping.fields, keys, sizeof keys);
+      ys_schema_keys(s, keys, sizeof keys);
       return yn_error(node->kids[i], "unknown key '%s' (expected one of: %s)", node->keys[i],
                       keys);
     }
-    if (f->value.type == CYAML_IGNORE) continue;
-    rs_status st = check_value(node->kids[i], &f->value);
+    rs_status st = check_value(node->kids[i], f->value);
     if (st != RS_OK) return st;
   }
-  for (const cyaml_schema_field_t *f = s->mapping.fields; f->key; ++f)
-    if (!(f->value.flags & CYAML_FLAG_OPTIONAL) && yn_map_index(node, f->key) < 0)
+  for (const ys_field *f = s->fields; f->key; ++f)
+    if (f->required && yn_map_index(node, f->key) < 0)
       return yn_error_key(node, f->key, "required key is missing");
   return RS_OK;
 }
 
-static rs_status check_sequence(const yn *node, const cyaml_schema_value_t *s)
+static rs_status check_sequence(const yn *node, const ys_value *s)
 {
   if (node->kind != YN_SEQ) {
     if (yn_is_empty(node)) return yn_error(node, "missing value (expected a list)");
@@ -120,57 +107,44 @@ static rs_status check_sequence(const yn *node, const cyaml_schema_value_t *s)
     return yn_error(node, "expected a list, got %s", kind_name(node));
   }
   unsigned n = (unsigned)node->n;
-  if (s->type == CYAML_SEQUENCE_FIXED && n != s->sequence.min)
-    return yn_error(node, "must have exactly %u values (got %u)", s->sequence.min, n);
-  if (n < s->sequence.min)
-    return yn_error(node, "needs at least %u entr%s (got %u)", s->sequence.min,
-                    s->sequence.min == 1 ? "y" : "ies", n);
-  if (n > s->sequence.max)
-    return yn_error(node, "takes at most %u entries (got %u)", s->sequence.max, n);
+  if (s->exact && n != s->min)
+    return yn_error(node, "must have exactly %u values (got %u)", s->min, n);
+  if (n < s->min)
+    return yn_error(node, "needs at least %u entr%s (got %u)", s->min, s->min == 1 ? "y" : "ies",
+                    n);
+  if (n > s->max) return yn_error(node, "takes at most %u entries (got %u)", s->max, n);
   for (int i = 0; i < node->n; ++i) {
-    rs_status st = check_value(node->kids[i], s->sequence.entry);
+    rs_status st = check_value(node->kids[i], s->entry);
     if (st != RS_OK) return st;
   }
   return RS_OK;
 }
 
-static rs_status check_value(const yn *node, const cyaml_schema_value_t *s)
+static rs_status check_value(const yn *node, const ys_value *s)
 {
-  switch (s->type) {
-  case CYAML_MAPPING: return check_mapping(node, s);
-  case CYAML_SEQUENCE:
-  case CYAML_SEQUENCE_FIXED: return check_sequence(node, s);
-  default: break;
-  }
+  if (s->type == YS_MAP) return check_mapping(node, s);
+  if (s->type == YS_LIST) return check_sequence(node, s);
   if (node->kind != YN_SCALAR)
     return yn_error(node, "expected a single value, got %s", kind_name(node));
   switch (s->type) {
-  case CYAML_FLOAT: return check_float(node);
-  case CYAML_INT: return check_int(node, s->data_size);
-  case CYAML_ENUM: return check_enum(node, s);
-  case CYAML_STRING: {
+  case YS_FLOAT: return check_float(node);
+  case YS_INT: return check_int(node, 0);
+  case YS_LONG: return check_int(node, 1);
+  case YS_ENUM: return check_enum(node, s);
+  case YS_STRING: {
     size_t len = strlen(node->text);
-    if (node->text[0] == '\0' && s->string.min > 0) return yn_error(node, "must not be empty");
-    if (yn_is_empty(node) && s->string.min > 0) return yn_error(node, "missing value");
-    if (len > s->string.max)
-      return yn_error(node, "too long (at most %u characters)", s->string.max);
+    if (node->text[0] == '\0' && s->min > 0) return yn_error(node, "must not be empty");
+    if (yn_is_empty(node) && s->min > 0) return yn_error(node, "missing value");
+    if (len > s->max) return yn_error(node, "too long (at most %u characters)", s->max);
     return RS_OK;
   }
-  default: break;
+  case YS_MAP:
+  case YS_LIST: break;
   }
   return RS_ERROR(RS_ERR_INTERNAL, "schema type %d not handled by the scene checks", (int)s->type);
 }
 
-rs_status ys_typecheck(const yn *node, const cyaml_schema_value_t *schema)
+rs_status ys_typecheck(const yn *node, const ys_value *schema)
 {
   return check_value(node, schema);
-}
-
-void ys_schema_keys(const cyaml_schema_value_t *mapping, char *buf, size_t size)
-{
-  if (mapping->type != CYAML_MAPPING) {
-    snprintf(buf, size, "(none)");
-    return;
-  }
-  key_list(mapping->mapping.fields, buf, size);
 }

@@ -1,14 +1,11 @@
-/* The positioned YAML tree (see ytree.h): parse with libyaml, look up, edit, emit. */
+/* The positioned YAML tree (see ytree.h): build, look up, edit, emit (yparse.c reads it). */
 #include "scene/ytree.h"
 
-#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
-
-enum { YN_MAX_DEPTH = 64 };
 
 static char *dup_str(const char *s)
 {
@@ -48,6 +45,11 @@ yn *yn_new_scalar(const char *text, const char *file, int line, const char *path
 yn *yn_new_map(const char *file, int line, const char *path)
 {
   return yn_alloc(YN_MAP, file, line, path);
+}
+
+yn *yn_new_seq(const char *file, int line, const char *path)
+{
+  return yn_alloc(YN_SEQ, file, line, path);
 }
 
 void yn_free(yn *node)
@@ -127,7 +129,7 @@ void yn_map_remove(yn *map, const char *key)
   --map->n;
 }
 
-static rs_status seq_push(yn *seq, yn *child)
+rs_status yn_seq_push(yn *seq, yn *child)
 {
   if (!grow(seq)) {
     yn_free(child);
@@ -137,166 +139,12 @@ static rs_status seq_push(yn *seq, yn *child)
   return RS_OK;
 }
 
-/* ---- parsing ------------------------------------------------------------------ */
-
 static void child_path(char *buf, size_t size, const char *parent, const char *key, int index)
 {
   if (key)
     snprintf(buf, size, "%s%s%s", parent, parent[0] ? "." : "", key);
   else
     snprintf(buf, size, "%s[%d]", parent, index);
-}
-
-static rs_status convert(yaml_document_t *doc, yaml_node_t *src, const char *file, int line,
-                         const char *path, int depth, yn **out)
-{
-  *out = NULL;
-  if (depth > YN_MAX_DEPTH)
-    return RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: nested too deeply", file, line, path);
-  char sub[512];
-  switch (src->type) {
-  case YAML_SCALAR_NODE: {
-    yn *n = yn_alloc(YN_SCALAR, file, line, path);
-    if (!n || !(n->text = malloc(src->data.scalar.length + 1))) {
-      yn_free(n);
-      return RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", file);
-    }
-    memcpy(n->text, src->data.scalar.value, src->data.scalar.length);
-    n->text[src->data.scalar.length] = '\0';
-    if (strlen(n->text) != src->data.scalar.length) {
-      yn_free(n);
-      return RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: value contains a NUL character", file, line,
-                      path);
-    }
-    n->quoted = src->data.scalar.style != YAML_PLAIN_SCALAR_STYLE;
-    *out = n;
-    return RS_OK;
-  }
-  case YAML_SEQUENCE_NODE: {
-    yn *n = yn_alloc(YN_SEQ, file, line, path);
-    if (!n) return RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", file);
-    int i = 0;
-    for (yaml_node_item_t *it = src->data.sequence.items.start; it < src->data.sequence.items.top;
-         ++it, ++i) {
-      yaml_node_t *item = yaml_document_get_node(doc, *it);
-      yn *kid;
-      child_path(sub, sizeof sub, path, NULL, i);
-      rs_status st = convert(doc, item, file, (int)item->start_mark.line + 1, sub, depth + 1, &kid);
-      if (st == RS_OK) st = seq_push(n, kid);
-      if (st != RS_OK) {
-        yn_free(n);
-        return st;
-      }
-    }
-    *out = n;
-    return RS_OK;
-  }
-  case YAML_MAPPING_NODE: {
-    yn *n = yn_alloc(YN_MAP, file, line, path);
-    if (!n) return RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", file);
-    for (yaml_node_pair_t *p = src->data.mapping.pairs.start; p < src->data.mapping.pairs.top;
-         ++p) {
-      yaml_node_t *k = yaml_document_get_node(doc, p->key);
-      yaml_node_t *v = yaml_document_get_node(doc, p->value);
-      int kline = (int)k->start_mark.line + 1;
-      if (k->type != YAML_SCALAR_NODE) {
-        yn_free(n);
-        return RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: keys must be plain names", file, kline,
-                        path[0] ? path : "(top level)");
-      }
-      const char *key = (const char *)k->data.scalar.value;
-      child_path(sub, sizeof sub, path, key, 0);
-      if (yn_map_index(n, key) >= 0) {
-        yn_free(n);
-        return RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: duplicate key '%s'", file, kline, sub, key);
-      }
-      yn *kid;
-      rs_status st = convert(doc, v, file, kline, sub, depth + 1, &kid);
-      if (st == RS_OK) st = yn_map_put(n, key, kid);
-      if (st != RS_OK) {
-        yn_free(n);
-        return st;
-      }
-    }
-    *out = n;
-    return RS_OK;
-  }
-  case YAML_NO_NODE: break;
-  }
-  return RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: empty node", file, line, path);
-}
-
-static rs_status parse(yaml_parser_t *parser, const char *file, yn **out)
-{
-  yaml_document_t doc;
-  *out = NULL;
-  if (!yaml_parser_load(parser, &doc)) {
-    const char *ctx = parser->context ? parser->context : "";
-    return RS_ERROR(RS_ERR_INPUT, "%s:%d: YAML syntax error: %s%s%s", file,
-                    (int)parser->problem_mark.line + 1, parser->problem ? parser->problem : "?",
-                    ctx[0] ? " " : "", ctx);
-  }
-  yaml_node_t *root = yaml_document_get_root_node(&doc);
-  rs_status st;
-  if (!root)
-    st = RS_ERROR(RS_ERR_INPUT, "%s: the file is empty", file);
-  else
-    st = convert(&doc, root, file, 1, "", 0, out);
-  yaml_document_delete(&doc);
-  if (st == RS_OK && (*out)->kind != YN_MAP) {
-    yn_free(*out);
-    *out = NULL;
-    return RS_ERROR(RS_ERR_INPUT, "%s:1: the file must be a mapping of keys to values", file);
-  }
-  if (st == RS_OK) {
-    /* a second document would be silently ignored: refuse it instead */
-    yaml_document_t extra;
-    if (yaml_parser_load(parser, &extra)) {
-      int more = yaml_document_get_root_node(&extra) != NULL;
-      int l = more ? (int)yaml_document_get_root_node(&extra)->start_mark.line + 1 : 0;
-      yaml_document_delete(&extra);
-      if (more) {
-        yn_free(*out);
-        *out = NULL;
-        return RS_ERROR(RS_ERR_INPUT, "%s:%d: only one YAML document per file", file, l);
-      }
-    }
-  }
-  return st;
-}
-
-rs_status yn_parse_text(const char *text, size_t len, const char *file, yn **out)
-{
-  yaml_parser_t parser;
-  *out = NULL;
-  if (!yaml_parser_initialize(&parser))
-    return RS_ERROR(RS_ERR_MEMORY, "cannot initialise the YAML parser");
-  yaml_parser_set_input_string(&parser, (const unsigned char *)text, len);
-  rs_status st = parse(&parser, file, out);
-  yaml_parser_delete(&parser);
-  return st;
-}
-
-rs_status yn_parse_file(const char *file, yn **out)
-{
-  *out = NULL;
-  FILE *f = fopen(file, "rb");
-  if (!f) return RS_ERROR(RS_ERR_INPUT, "%s: cannot open (%s)", file, strerror(errno));
-  yaml_parser_t parser;
-  if (!yaml_parser_initialize(&parser)) {
-    fclose(f);
-    return RS_ERROR(RS_ERR_MEMORY, "cannot initialise the YAML parser");
-  }
-  yaml_parser_set_input_file(&parser, f);
-  rs_status st = parse(&parser, file, out);
-  yaml_parser_delete(&parser);
-  if (st == RS_OK && ferror(f)) {
-    yn_free(*out);
-    *out = NULL;
-    st = RS_ERROR(RS_ERR_INPUT, "%s: read error", file);
-  }
-  fclose(f);
-  return st;
 }
 
 /* ---- lookup and edits ------------------------------------------------------------ */
@@ -370,7 +218,7 @@ yn *yn_copy(const yn *node)
       yn_free(c);
       return NULL;
     }
-    if ((node->kind == YN_MAP ? yn_map_put(c, node->keys[i], kid) : seq_push(c, kid)) != RS_OK) {
+    if ((node->kind == YN_MAP ? yn_map_put(c, node->keys[i], kid) : yn_seq_push(c, kid)) != RS_OK) {
       yn_free(c);
       return NULL;
     }

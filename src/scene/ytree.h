@@ -1,11 +1,9 @@
 /* A small YAML node tree that remembers where every value came from.
  *
- * libcyaml loads typed structs but forgets positions once it is done, and it cannot
- * load a key that is a number in one file and a mapping in the next. The loader
- * therefore parses with libyaml into this tree first: it keeps the file and line of
- * every key, the --set override that replaced a value, and a display path
- * ("winding.tension.end", "radial.points[3]"), so every later check can say where the
- * offending value was written. The tree is then emitted as YAML text for libcyaml. */
+ * The loader parses with libyaml into this tree (yparse.c) and every later step works on
+ * it: it keeps the file and line of every key, the --set override that replaced a value,
+ * and a display path ("winding.tension.end", "radial.points[3]"), so every check can say
+ * where the offending value was written. */
 #ifndef RS_SCENE_YTREE_H
 #define RS_SCENE_YTREE_H
 
@@ -30,9 +28,21 @@ struct yn {
   yn **kids;
 };
 
-/* Parses a YAML file into a tree. `file` must outlive the tree (the nodes point at it).
- * Syntax errors and duplicate keys: RS_ERR_INPUT "file:line: ...". A missing file:
- * RS_ERR_INPUT "file: cannot open (reason)". */
+/* Limits on what one file may hold (docs/scenes.md, "Limits"), each refused while the
+ * file is read with RS_ERR_INPUT naming the limit: nesting levels below the top-level
+ * mapping, keys in one mapping (looked up by a linear search), values (scalars, lists
+ * and mappings, alias copies included), values copied from anchors by aliases, and bytes. */
+enum {
+  YN_MAX_DEPTH = 64,
+  YN_MAX_KEYS = 256,
+  YN_MAX_VALUES = 20000,
+  YN_MAX_ALIAS_VALUES = 10000,
+  YN_MAX_BYTES = 1 << 20
+};
+
+/* Parses a YAML file into a tree (yparse.c). `file` must outlive the tree (the nodes
+ * point at it). Syntax errors, duplicate keys and the limits above: RS_ERR_INPUT
+ * "file:line: ...". A missing file: RS_ERR_INPUT "file: cannot open (reason)". */
 rs_status yn_parse_file(const char *file, yn **out);
 
 /* Same for text in memory (`file` names it in messages). */
@@ -42,6 +52,9 @@ void yn_free(yn *node);
 
 yn *yn_new_scalar(const char *text, const char *file, int line, const char *path);
 yn *yn_new_map(const char *file, int line, const char *path);
+yn *yn_new_seq(const char *file, int line, const char *path);
+/* Appends to a sequence (frees child on failure). */
+rs_status yn_seq_push(yn *seq, yn *child);
 
 /* Map access. yn_map_get returns NULL when the key is absent (or node is not a map). */
 yn *yn_map_get(const yn *map, const char *key);

@@ -1,7 +1,8 @@
 /* Runs the scene-loader fuzz target (fuzz_scene.c) over every file of a directory under
  * tests/fuzz/ in the ordinary build, so inputs the fuzzer once crashed on stay fixed:
  *   replay crashes   (reproducers of fixed bugs)     replay corpus   (the seed inputs)
- * A failing input aborts inside the target, naming itself first on stdout. */
+ * A failing input aborts inside the target, naming itself first on stdout; a folder with
+ * no inputs fails too. */
 #include <dirent.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -71,6 +72,11 @@ int main(int argc, char **argv)
     free(names[i]);
   }
   free(names);
+  /* an empty folder would check nothing: a lost corpus must not pass unnoticed */
+  if (count == 0) {
+    printf("no inputs in %s: FAILED (a replay of nothing checks nothing)\n", dir);
+    return 1;
+  }
   printf("%zu inputs from %s: %s\n", count, dir, bad ? "FAILED" : "ok");
   return bad;
 }
