@@ -246,7 +246,15 @@ double rs_roll_outer_radius(const rs_roll *roll)
   return roll->p.core_radius + roll->n * roll->p.caliper;
 }
 const double *rs_roll_sigma_r(const rs_roll *roll) { return roll->sigma_r; }
-const double *rs_roll_sigma_theta(const rs_roll *roll) { return roll->sigma_theta; }
+const double *rs_roll_sigma_theta(const rs_roll *roll)
+{
+  if (roll->hoop_stale) { /* a cache of sigma_r's equilibrium: logically const */
+    rs_roll *r = (rs_roll *)roll;
+    roll_hoop_from_equilibrium(r, r->n);
+    r->hoop_stale = 0;
+  }
+  return roll->sigma_theta;
+}
 double rs_roll_core_pressure(const rs_roll *roll) { return -roll->core_sigma; }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {

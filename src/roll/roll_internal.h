@@ -73,6 +73,7 @@ struct rs_roll {
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h) */
   int deep_lo;
   double c_deep;
+  int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
 };
 
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
@@ -95,6 +96,7 @@ rs_status roll_set_modulus(rs_roll *roll, int k);
 rs_status roll_integrate(rs_roll *roll, int k);
 
 /* roll_increment.c */
+void roll_hoop_from_equilibrium(rs_roll *roll, int k);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);

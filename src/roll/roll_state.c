@@ -42,7 +42,7 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
   st->core_sigma = roll->core_sigma;
   if (roll->n > 0) { /* an empty roll has no arrays yet: memcpy of NULL is undefined */
     memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
-    memcpy(st->sigma_theta, roll->sigma_theta, (size_t)roll->n * sizeof(double));
+    memcpy(st->sigma_theta, rs_roll_sigma_theta(roll), (size_t)roll->n * sizeof(double));
   }
   return RS_OK;
 }
@@ -57,6 +57,7 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
   if (st->n > 0) { /* the state of an empty roll has no arrays */
     memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));
     memcpy(roll->sigma_theta, st->sigma_theta, (size_t)st->n * sizeof(double));
+    roll->hoop_stale = 0;
   }
   return RS_OK;
 }
