@@ -107,18 +107,22 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
   scale(f.up, f.n_up, 1e-3);
   scale(f.lo, f.n_lo, 1e-3);
 
-  char *out = plot_path(c, file_what), head[600], sub[256];
-  if (!out) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  if (st == RS_OK) st = rs_gp_figure(&c->gp, out);
-  free(out);
+  char head[600], sub[256];
   double r;
+  /* the radius is optional: a miss records an error that is not one, cleared here, before
+   * anything whose failure must be reported */
   if (rs_reader_attr_double(c->rd, group, "roll_radius", &r) == RS_OK ||
       rs_reader_attr_double(c->rd, group, "radius", &r) == RS_OK)
     snprintf(sub, sizeof sub, "nip profile %s at roll radius %.1f mm", label, r * 1e3);
-  else
+  else {
+    rs_error_clear();
     snprintf(sub, sizeof sub, "nip profile %s", label);
-  rs_error_clear();
+  }
   snprintf(head, sizeof head, "%s\n%s", d->title, sub);
+  char *out = plot_path(c, file_what);
+  if (!out) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (st == RS_OK) st = rs_gp_figure(&c->gp, out);
+  free(out);
   if (st == RS_OK) {
     rs_gp_printf(&c->gp, "set multiplot layout %d,1 title ", sx ? 2 : 1);
     rs_gp_string(&c->gp, head);
