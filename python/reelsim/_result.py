@@ -5,7 +5,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 
-@dataclass
+@dataclass(eq=False)  # == of numpy arrays is not a truth value: compare fields with numpy
 class Result:
     """One wound reel. Per-layer arrays (index 0 = the layer on the core), SI units,
     stresses compression negative, pressures compression positive (docs/output.md):

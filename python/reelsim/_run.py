@@ -42,8 +42,8 @@ def _set_strings(sets):
                 v = "null"
             elif isinstance(v, bool):
                 v = "true" if v else "false"
-            elif isinstance(v, float):
-                v = repr(v)           # shortest round-trip form: the same double back
+            elif isinstance(v, float):  # numpy floats too
+                v = float.__repr__(float(v))  # shortest round-trip form: the same double
             out.append(f"{k}={v}")
         return out
     return [s.decode() if isinstance(s, bytes) else str(s) for s in sets]

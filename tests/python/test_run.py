@@ -85,3 +85,16 @@ def test_version_is_the_librarys(reelsim):
     assert reelsim.__version__.count(".") == 2
     from reelsim import _lib
     assert _lib.rs_version().decode() == reelsim.__version__
+
+
+def test_set_values_arrive_exactly(reelsim):
+    """A float override reaches the scene as the same double (numpy floats too), ints and
+    strings as written."""
+    import numpy as np
+    path = scene("tests/cli/scenes/small.yaml")
+    t = 0.1 + 0.2                                    # 0.30000000000000004, not 0.3
+    a = reelsim.run(path, sets={"winding.final_radius": 0.06 + t / 1000})
+    b = reelsim.run(path, sets={"winding.final_radius": np.float64(0.06 + t / 1000)})
+    c = reelsim.run(path, sets=[f"winding.final_radius={0.06 + t / 1000!r}"])
+    assert_same(a, b, rtol=0)
+    assert_same(a, c, rtol=0)
