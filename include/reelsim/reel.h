@@ -108,5 +108,20 @@ typedef struct rs_reel_job {
  * NULL) how many threads ran. */
 rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
 
+/* The result read through functions instead of the struct's layout, for programs that
+ * call the library through a foreign-function interface (the Python package): they stay
+ * right when fields are added. rs_reel_result_layers: n_layers (0 for NULL).
+ * rs_reel_result_array: the per-layer array called `name` ("radius", "wound_on_tension",
+ * "web_tension", "nip_load", "sigma_r", "sigma_theta"; owned by the result) with its
+ * length in *n (may be NULL); NULL and *n = 0 for an unknown name or a NULL result.
+ * rs_reel_result_scalar: "core_pressure", "core_radius", "wall_seconds"; NaN for an
+ * unknown name or a NULL result. rs_reel_result_finite: rs_reel_summary_finite of the
+ * result's summary (1 when every figure a user reads is a number; else 0, *what naming
+ * the first that is not). */
+int rs_reel_result_layers(const rs_reel_result *res);
+const double *rs_reel_result_array(const rs_reel_result *res, const char *name, int *n);
+double rs_reel_result_scalar(const rs_reel_result *res, const char *name);
+int rs_reel_result_finite(const rs_reel_result *res, const char **what);
+
 RS_END_DECLS
 #endif

@@ -1,0 +1,71 @@
+"""The shared library libreelsim, loaded once with ctypes.
+
+Where it is: $REELSIM_LIBRARY when set, else what the build wrote into _libpath.py (the
+built library in a build tree; for an installed package, the library relative to the
+package, then at the configured install prefix). Only functions are declared here: no C
+struct is mirrored (results are read through rs_reel_result_array/_scalar/_layers), so
+the package does not depend on the layout of the library's structs.
+"""
+
+import ctypes
+import os
+
+from . import _libpath
+
+
+def _candidates():
+    env = os.environ.get("REELSIM_LIBRARY")
+    if env:
+        return [env]
+    here = os.path.dirname(os.path.abspath(__file__))
+    return [p if os.path.isabs(p) else os.path.normpath(os.path.join(here, p))
+            for p in _libpath.LIBRARIES]
+
+
+def _load():
+    tried = []
+    for path in _candidates():
+        if os.path.exists(path):
+            return ctypes.CDLL(path)
+        tried.append(path)
+    raise ImportError("reelsim: cannot find libreelsim (looked for " + ", ".join(tried) +
+                      "; set REELSIM_LIBRARY to the library's path)")
+
+
+lib = _load()
+
+_c = ctypes
+_VP = _c.c_void_p
+_CP = _c.c_char_p
+
+
+def _fn(name, restype, *argtypes):
+    f = getattr(lib, name)
+    f.restype = restype
+    f.argtypes = list(argtypes)
+    return f
+
+
+# rs_status is a C enum: an int
+rs_version = _fn("rs_version", _CP)
+rs_error_message = _fn("rs_error_message", _CP)
+rs_error_status = _fn("rs_error_status", _c.c_int)
+rs_error_clear = _fn("rs_error_clear", None)
+rs_status_name = _fn("rs_status_name", _CP, _c.c_int)
+rs_scene_load = _fn("rs_scene_load", _c.c_int, _CP, _c.c_int, _c.POINTER(_CP),
+                    _c.POINTER(_VP))
+rs_scene_load_text = _fn("rs_scene_load_text", _c.c_int, _CP, _CP, _c.c_size_t, _c.c_int,
+                         _c.POINTER(_CP), _c.POINTER(_VP))
+rs_scene_destroy = _fn("rs_scene_destroy", None, _c.POINTER(_VP))
+rs_scene_wind = _fn("rs_scene_wind", _c.c_int, _VP, _VP, _c.POINTER(_VP))
+rs_scene_path = _fn("rs_scene_path", _CP, _VP)
+rs_scene_title = _fn("rs_scene_title", _CP, _VP)
+rs_reel_result_destroy = _fn("rs_reel_result_destroy", None, _c.POINTER(_VP))
+rs_reel_result_layers = _fn("rs_reel_result_layers", _c.c_int, _VP)
+rs_reel_result_array = _fn("rs_reel_result_array", _c.POINTER(_c.c_double), _VP, _CP,
+                           _c.POINTER(_c.c_int))
+rs_reel_result_scalar = _fn("rs_reel_result_scalar", _c.c_double, _VP, _CP)
+rs_reel_result_finite = _fn("rs_reel_result_finite", _c.c_int, _VP, _c.POINTER(_CP))
+
+# the values of enum rs_status (include/reelsim/status.h)
+RS_OK, RS_ERR_INPUT, RS_ERR_SOLVER = 0, 1, 2

@@ -1,0 +1,44 @@
+"""Result: one wound reel as numpy arrays (from reelsim.run or reelsim.read)."""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass(eq=False)  # == of numpy arrays is not a truth value: compare fields with numpy
+class Result:
+    """One wound reel. Per-layer arrays (index 0 = the layer on the core), SI units,
+    stresses compression negative, pressures compression positive (docs/output.md):
+
+    radius            m, outer radius of each layer
+    sigma_r           Pa, final radial stress at each layer's outer radius
+    sigma_theta       Pa, final hoop stress of each layer
+    pressure          Pa, interlayer pressure, 0 - sigma_r
+    wound_on_tension  N/m, wound-on tension T0 as the layer joined the roll
+    web_tension       N/m, web tension from the tension recipe
+    nip_load          N/m, nip load when the layer was wound on (0 without a nip)
+    core_pressure     Pa, pressure on the core
+    wall_seconds      s, wall-clock time of the winding
+    title             the scene's title
+    """
+
+    radius: np.ndarray
+    sigma_r: np.ndarray
+    sigma_theta: np.ndarray
+    pressure: np.ndarray
+    wound_on_tension: np.ndarray
+    core_pressure: float
+    wall_seconds: float
+    web_tension: np.ndarray = field(default_factory=lambda: np.empty(0))
+    nip_load: np.ndarray = field(default_factory=lambda: np.empty(0))
+    title: str = ""
+
+    @property
+    def layers(self):
+        """Number of layers wound."""
+        return int(self.radius.shape[0])
+
+    def __repr__(self):
+        outer = self.radius[-1] if self.layers else float("nan")
+        return (f"<reelsim.Result {self.title!r}: {self.layers} layers to r = {outer:.6g} m, "
+                f"core pressure {self.core_pressure:.6g} Pa>")
