@@ -7,6 +7,7 @@ target_compile_definitions(fuzz_replay PRIVATE RS_FUZZ_DIR="${CMAKE_CURRENT_SOUR
 # -DREELSIM_FUZZ=ON (clang): the libFuzzer binary; scripts/fuzz.sh runs it.
 if(REELSIM_FUZZ)
   add_executable(fuzz_scene fuzz/fuzz_scene.c)
+  target_include_directories(fuzz_scene PRIVATE ${PROJECT_SOURCE_DIR}/src) # scene/scene_type.h
   target_link_libraries(fuzz_scene PRIVATE reelsim_lib)
   target_link_options(fuzz_scene PRIVATE -fsanitize=fuzzer)
 endif()
