@@ -17,3 +17,4 @@ rs_cli_test(storage_prony_lengths 2
             check ${SC}/bad-prony-lengths.yaml)
 rs_cli_test(storage_humidity_range 2 [=[winding\.humidity=120: must lie in \[0, 100\]]=]
             check ${SC}/storage-small.yaml --set winding.humidity=120)
+rs_cli_script(storage_plot storage_plot.sh ${SC}/storage-small.yaml)
