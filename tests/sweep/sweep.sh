@@ -11,6 +11,8 @@
 #   failed_run    a run the solver cannot wind: status 3 and empty figures in its row, the
 #                 other runs whole, exit 0, "1 failed"
 #   profiles      --profiles adds /sweep/profiles/<i> with the runs' layers
+#   plot          reelsim plot of a sweep: one PNG per figure (7), for one parameter (lines)
+#                 and for two (a heat map); real PNGs, nothing else in the directory
 #   mpi_same      mpirun -n 3 writes the same figures (all but wall_seconds) as one process
 set -u
 case_=$1 bin=$2 scene=$3 mpirun=${4:-}
@@ -124,6 +126,21 @@ mpi_same)
   cmp <(h5dump -g /sweep/profiles one.h5 | sed 1d) <(h5dump -g /sweep/profiles three.h5 | sed 1d) ||
     fail "the profiles differ"
   echo "3 ranks: the same figures and profiles as 1 process" ;;
+plot)
+  figs="core_pressure peak_pressure min_sigma_theta final_radius layers buckling_layers wall_seconds"
+  "$bin" sweep "$scene" --vary winding.tension=100:400:4 -o one.h5 -q || fail "sweep 1"
+  "$bin" sweep "$scene" --vary winding.tension=100:400:3 --vary numerics.load_placement=beneath,hakiel \
+    -o two.h5 -q || fail "sweep 2"
+  for f in one two; do
+    mkdir png-$f
+    run "$bin" plot $f.h5 -o png-$f
+    [ "$got" -eq 0 ] || fail "plot $f.h5"
+    for g in $figs; do
+      has "^png-$f/$f-$g\.png$"
+      is_png "png-$f/$f-$g.png"
+    done
+    [ "$(ls -A png-$f | wc -l)" -eq 7 ] || { ls -la png-$f; fail "not 7 files"; }
+  done ;;
 *) fail "unknown case $case_" ;;
 esac
 echo PASS
