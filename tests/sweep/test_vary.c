@@ -138,7 +138,14 @@ static void figures_of_a_run(void)
   double crit = sqrt(4.0e9 * 20.0e6 / 3.0);
   int risk = 0;
   for (int i = 0; i < res->n_layers; ++i) risk += -res->sigma_theta[i] > crit;
-  CHECK(fig[SWEEP_FIG_BUCKLING_LAYERS] == risk);
+  CHECK(fig[SWEEP_FIG_BUCKLING_LAYERS] == risk && risk == 0);
+  /* Five layers pressed beyond sigma_cr = sqrt(E_theta E_r / 3) = 163.3 MPa (a linear law:
+   * E_r = 20 MPa at any pressure) and three in compression below it: five at risk. */
+  for (int i = 10; i < 15; ++i) res->sigma_theta[i] = -1.2 * crit;
+  for (int i = 20; i < 23; ++i) res->sigma_theta[i] = -0.8 * crit;
+  CHECK(sweep_figures_compute(rs_scene_problem(scene), res, RS_OK, 0.5, fig) == RS_OK);
+  CHECK(fig[SWEEP_FIG_BUCKLING_LAYERS] == 5);
+  CHECK_CLOSE(fig[SWEEP_FIG_MIN_SIGMA_THETA], -1.2 * crit, 1e-15);
   CHECK(sweep_figures_compute(NULL, NULL, RS_ERR_SOLVER, 0.25, fig) == RS_OK);
   CHECK(isnan(fig[SWEEP_FIG_CORE_PRESSURE]) && isnan(fig[SWEEP_FIG_LAYERS]));
   CHECK(fig[SWEEP_FIG_STATUS] == 3 && fig[SWEEP_FIG_WALL_SECONDS] == 0.25);
