@@ -24,7 +24,7 @@ rs_sweep_test(test_sweep_vary unit SOURCES sweep/test_vary.c
 
 # --- reelsim sweep from the command line ------------------------------------------------
 set(SWEEP_SCENE ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/small.yaml)
-foreach(c matches_runs grid_counts lhs_strata failed_run profiles plot)
+foreach(c matches_runs grid_counts lhs_strata failed_run profiles plot interrupted)
   add_test(NAME cli.sweep.${c}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh ${c} $<TARGET_FILE:reelsim_cli>
                    ${SWEEP_SCENE})

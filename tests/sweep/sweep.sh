@@ -13,6 +13,7 @@
 #   profiles      --profiles adds /sweep/profiles/<i> with the runs' layers
 #   plot          reelsim plot of a sweep: one PNG per figure (7), for one parameter (lines)
 #                 and for two (a heat map); real PNGs, nothing else in the directory
+#   interrupted   SIGTERM during a long sweep: exit 143, the message, no file and no temporary
 #   mpi_same      mpirun -n 3 writes the same figures (all but wall_seconds) as one process
 set -u
 case_=$1 bin=$2 scene=$3 mpirun=${4:-}
@@ -141,6 +142,19 @@ plot)
     done
     [ "$(ls -A png-$f | wc -l)" -eq 7 ] || { ls -la png-$f; fail "not 7 files"; }
   done ;;
+interrupted)
+  "$bin" sweep "$scene" --set winding.final_radius=0.5 --vary winding.tension=100:400:400 \
+    -o int.h5 >log.txt 2>&1 &
+  pid=$!
+  for _ in $(seq 100); do grep -q "^sweep: 400 runs" log.txt && break; sleep 0.1; done
+  sleep 0.5
+  kill -TERM "$pid"
+  wait "$pid"
+  got=$?
+  cat log.txt
+  [ "$got" -eq 143 ] || fail "exit $got, expected 143"
+  grep -q "reelsim: sweep: terminated (SIGTERM) (no output written)" log.txt || fail "message"
+  [ -z "$(ls -A | grep -v '^log.txt$')" ] || { ls -la; fail "files were left"; } ;;
 *) fail "unknown case $case_" ;;
 esac
 echo PASS
