@@ -69,3 +69,10 @@ rs_cli_test(sweep.bad_twice 2 [[--vary winding\.tension=1,2: winding\.tension is
             ${SW} --vary winding.tension=100:300:3 --vary winding.tension=1,2)
 rs_cli_test(sweep.bad_threads 2 [=[--threads needs a number of threads in \[1, 256\]]=]
             ${SW} --vary winding.tension=100:300:3 --threads 0)
+
+# reelsim plot of sweep and optimisation files, with the real gnuplot (label cli, as
+# test_plot): the PNGs decoded (tests/png_check.h, zlib).
+find_package(ZLIB REQUIRED)
+rs_test(test_plot_sweep cli SOURCES sweep/test_plot_sweep.c
+        CASES one_parameter two_parameters optimize_history)
+target_link_libraries(test_plot_sweep PRIVATE ZLIB::ZLIB)
