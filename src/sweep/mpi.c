@@ -4,6 +4,7 @@
  * profiles. Only rank 0 holds the results and writes the files. Without MPI (a build
  * without it, or a program not started by mpirun) there is one process of rank 0. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -96,13 +97,14 @@ static rs_status master(const sweep_spec *spec, sweep_result *out)
       int layers = (int)msg[MSG - 1];
       if (spec->profiles && layers > 0) {
         double *block = malloc(3 * (size_t)layers * sizeof *block);
-        double *sink = block ? block : malloc(3 * (size_t)layers * sizeof *block);
-        MPI_Recv(sink, 3 * layers, MPI_DOUBLE, from, TAG_PROFILE, MPI_COMM_WORLD,
+        if (!block) { /* the profile is on its way and has nowhere to go */
+          fprintf(stderr, "reelsim: sweep: out of memory for the profiles on rank 0\n");
+          MPI_Abort(MPI_COMM_WORLD, 1);
+        }
+        MPI_Recv(block, 3 * layers, MPI_DOUBLE, from, TAG_PROFILE, MPI_COMM_WORLD,
                  MPI_STATUS_IGNORE);
-        if (block)
-          out->profiles[(int)msg[0]] =
-              (rs_output_profile){layers, block, block + layers, block + 2 * layers};
-        else free(sink);
+        out->profiles[(int)msg[0]] =
+            (rs_output_profile){layers, block, block + layers, block + 2 * layers};
       }
     }
     int job = -1;

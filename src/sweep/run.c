@@ -152,9 +152,8 @@ static int stopped(const sweep_spec *spec)
   return spec->progress && spec->progress(NULL, 0, 0);
 }
 
-rs_status sweep_wind(const sweep_spec *spec, sweep_result *out)
+rs_status sweep_wind_threads(const sweep_spec *spec, sweep_result *out)
 {
-  if (sweep_mpi_size() > 1) return sweep_mpi_wind(spec, out);
   int n = spec->plan->n_runs;
   rs_status st = sweep_result_alloc(out, n, spec->profiles);
   if (st != RS_OK) return st;

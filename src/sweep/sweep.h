@@ -50,6 +50,10 @@ void sweep_result_free(sweep_result *r);
 void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
                    rs_output_profile *prof);
 
+/* The two ways sweep_wind goes (sweep/wind.c picks): threads in one process (run.c) and
+ * MPI ranks (mpi.c, below). */
+rs_status sweep_wind_threads(const sweep_spec *spec, sweep_result *out);
+
 /* MPI (sweep/mpi.c; without MPI these say: one process, rank 0). sweep_mpi_begin starts
  * MPI only when the program was launched by mpirun (its environment says so); a binary
  * built with MPI and run on its own is one process and never calls MPI_Init. */
