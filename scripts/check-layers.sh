@@ -16,7 +16,7 @@ root=${1:?usage: check-layers.sh ROOT [OBJECT.o ...]}
 shift
 cd "$root" || exit 2
 
-names=(base laws roll-nip reel scene io plot study cli)
+names=(base laws roll-nip reel scene io plot study sweep cli)
 
 # layer_of PATH -> the layer number of a file (relative to ROOT), or nothing.
 layer_of() {
@@ -36,7 +36,8 @@ layer_of() {
     include/reelsim/output.h | include/reelsim/reader.h | src/output/*) echo 5 ;;
     include/reelsim/plot.h | src/plot/*) echo 6 ;;
     include/reelsim/study.h | src/study/*) echo 7 ;;
-    include/reelsim/reelsim.h | src/cli/*) echo 8 ;; # the umbrella header: applications only
+    src/sweep/*) echo 8 ;;                          # recipe search: an application
+    include/reelsim/reelsim.h | src/cli/*) echo 9 ;; # the umbrella header: applications only
   esac
 }
 
@@ -80,13 +81,19 @@ for f in $files; do
     if [ "$lt" -gt "$lf" ]; then
       err "$f:$line: the ${names[$lf]} layer includes \"$name\" of the higher ${names[$lt]} layer"
     fi
-    # The CLI stands on the public API: reelsim/*.h (and the generated version header),
-    # and its own cli/*.h.
+    # The applications stand on the public API: reelsim/*.h (and the generated version
+    # header); the CLI also on its own cli/*.h and the recipe search's sweep/*.h, the
+    # recipe search on its own sweep/*.h.
     case "$f" in
       src/cli/*)
         case "$name" in
-          reelsim/*.h | cli/*.h) ;;
+          reelsim/*.h | cli/*.h | sweep/*.h) ;;
           *) err "$f:$line: the CLI includes \"$name\", not a public header (reelsim/*.h)" ;;
+        esac ;;
+      src/sweep/*)
+        case "$name" in
+          reelsim/*.h | sweep/*.h) ;;
+          *) err "$f:$line: the recipe search includes \"$name\", not a public header (reelsim/*.h)" ;;
         esac ;;
     esac
   done < <(sed -n -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]+"([^"]+)".*/\1/p;t;s/.*//p' "$f" |

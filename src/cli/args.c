@@ -77,9 +77,11 @@ static void takers(const cli_option *any, char *buf, size_t size)
 void cli_args_free(cli_args *a)
 {
   free(a->sets);
+  free(a->vary);
   free(a->scenes);
   free(a->owned);
   a->sets = NULL;
+  a->vary = NULL;
   a->scenes = NULL;
   a->owned = NULL;
 }
@@ -103,6 +105,18 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_QUICK: a->quick = 1; break;
   case CLI_OPT_JSON: a->json = 1; break;
   case CLI_OPT_RADIUS: a->radius = arg; break;
+  case CLI_OPT_VARY: a->vary[a->n_vary++] = arg; break;
+  case CLI_OPT_SAMPLE: a->sample = arg; break;
+  case CLI_OPT_PROFILES: a->profiles = 1; break;
+  case CLI_OPT_THREADS: {
+    char *end;
+    long j = strtol(arg, &end, 10);
+    if (*end || j < 1 || j > 256)
+      return cli_fail(CLI_EXIT_USAGE, "%s: --threads needs a number of threads in [1, 256] (got '%s')",
+                      cmd, arg);
+    a->threads = (int)j;
+    break;
+  }
   case CLI_OPT_JOBS: {
     char *end;
     long j = strtol(arg, &end, 10);
@@ -125,7 +139,8 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
   /* room for every argument as a --set or an operand, plus -o's output.file */
   a->sets = calloc((size_t)argc + 1, sizeof *a->sets);
   a->scenes = calloc((size_t)argc + 1, sizeof *a->scenes);
-  if (!a->sets || !a->scenes) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  a->vary = calloc((size_t)argc + 1, sizeof *a->vary);
+  if (!a->sets || !a->scenes || !a->vary) return cli_fail(CLI_EXIT_OTHER, "out of memory");
   tables t;
   build(&t);
   /* getopt sees the command's name as its argv[0] */

@@ -19,6 +19,11 @@ typedef struct cli_args {
   int jobs;             /* study --jobs N (default 1) */
   const char *radius;   /* nip --radius R, as given */
   int json;             /* nip --json */
+  int n_vary;           /* sweep --vary KEY=..., in order */
+  const char **vary;
+  const char *sample;   /* sweep --sample grid|lhs:R, or NULL */
+  int threads;          /* sweep --threads K (0: one per core) */
+  int profiles;         /* sweep --profiles */
   int n_sets;           /* --set key.path=value, in order; run/check/compare -o adds
                            output.file=FILE last */
   const char **sets;

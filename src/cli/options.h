@@ -11,7 +11,8 @@ enum {
   CLI_PLOT = 1u << 3,
   CLI_STUDY = 1u << 4,
   CLI_NIP = 1u << 5,
-  CLI_EVERY = (1u << 6) - 1
+  CLI_SWEEP = 1u << 6,
+  CLI_EVERY = (1u << 7) - 1
 };
 
 typedef enum cli_opt {
@@ -26,6 +27,10 @@ typedef enum cli_opt {
   CLI_OPT_JOBS,
   CLI_OPT_RADIUS,
   CLI_OPT_JSON,
+  CLI_OPT_VARY,
+  CLI_OPT_SAMPLE,
+  CLI_OPT_THREADS,
+  CLI_OPT_PROFILES,
   CLI_N_OPTS
 } cli_opt;
 

@@ -1,6 +1,6 @@
 # The command line of every command (tests/cli/help.sh): help both ways listing every flag,
 # unknown flags refused, --set KEY=VALUE and --set=KEY=VALUE alike.
-foreach(c general run check compare plot study nip)
+foreach(c general run check compare plot study nip sweep)
   add_test(NAME cli.usage_${c}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/help.sh $<TARGET_FILE:reelsim_cli>
                    ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes ${c})

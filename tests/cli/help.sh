@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # help.sh REELSIM SCENES CMD: the command line of one command, as docs/cli.md gives it.
-#   CMD (run, check, compare, plot, study, nip): `reelsim help CMD` and `reelsim CMD --help`
+#   CMD (run, check, compare, plot, study, nip, sweep): `reelsim help CMD` and `reelsim CMD --help`
 #     (and -h) exit 0 with the same text, which lists every flag of the command; an
 #     unknown flag exits 2 naming it; where the command takes --set, both --set KEY=VALUE
 #     and --set=KEY=VALUE reach the scene (a bad value is refused the same way, exit 2).
@@ -12,7 +12,7 @@ bin="$1"; sc="$2"; cmd="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 
-commands="run check compare plot study nip"
+commands="run check compare plot study nip sweep"
 if [ "$cmd" = general ]; then
   for how in --help -h help; do
     run "$bin" $how
@@ -21,7 +21,7 @@ if [ "$cmd" = general ]; then
   done
   run "$bin" help bogus
   [ "$got" -eq 2 ] || fail "help bogus: exit $got, expected 2"
-  has "help: unknown command 'bogus' \(commands: run, check, compare, plot, study, nip, help\)"
+  has "help: unknown command 'bogus' \(commands: run, check, compare, plot, study, nip, sweep, help\)"
   echo PASS; exit 0
 fi
 
@@ -33,6 +33,8 @@ compare) flags="-o --output -s --set -q --quiet -v --verbose -h --help"; scene="
 plot)    flags="-o --output -q --quiet -v --verbose -h --help"; scene="" ;;
 study)   flags="-o --output -s --set --quick -j --jobs -q --quiet -v --verbose -h --help"; scene="$sc/small.yaml" ;;
 nip)     flags="--radius --json -s --set -v --verbose -h --help"; scene="$sc/contact.yaml --radius 0.3" ;;
+sweep)   flags="--vary --sample -o --output --csv --threads -s --set --profiles -q --quiet -v --verbose -h --help"
+         scene="$sc/small.yaml --vary winding.tension=100:200:2" ;;
 *) fail "unknown command $cmd" ;;
 esac
 

@@ -2,7 +2,8 @@
 # for call cycles, and one case per kind of violation on a small made-up tree.
 add_test(NAME layers.tree
          COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/check-layers.sh ${PROJECT_SOURCE_DIR}
-                 $<TARGET_OBJECTS:reelsim_objects> $<TARGET_OBJECTS:reelsim_cli>
+                 $<TARGET_OBJECTS:reelsim_objects> $<TARGET_OBJECTS:reelsim_sweep>
+                 $<TARGET_OBJECTS:reelsim_cli>
          COMMAND_EXPAND_LISTS)
 set_tests_properties(layers.tree PROPERTIES LABELS unit TIMEOUT 300)
 foreach(c lower_includes_higher internal_includes_higher include_cycle cli_internal_header

@@ -57,9 +57,9 @@ case "$case_" in
     expect_fail 'src/cli/main.c:3: the CLI includes "nip/internal.h", not a public header' ;;
   unplaced) # a directory the map does not know
     expect_pass
-    mkdir -p "$t/src/sweep"
-    printf '#include "reelsim/status.h"\n' >"$t/src/sweep/sweep.c"
-    expect_fail 'src/sweep/sweep.c: not placed in a layer' ;;
+    mkdir -p "$t/src/gadget"
+    printf '#include "reelsim/status.h"\n' >"$t/src/gadget/gadget.c"
+    expect_fail 'src/gadget/gadget.c: not placed in a layer' ;;
   call_cycle) # a.c and b.c calling each other, one header declaring both
     "$cc" -c -o "$t/src/nip/a.c.o" -I"$t/include" "$t/src/nip/a.c"
     "$cc" -c -o "$t/src/nip/b.c.o" -I"$t/include" "$t/src/nip/b.c"

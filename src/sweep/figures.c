@@ -1,0 +1,76 @@
+/* The figures of one wound recipe (figures.h). */
+#include "sweep/figures.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "reelsim/defects.h"
+
+const sweep_figure_info sweep_figures[SWEEP_N_FIGURES] = {
+    [SWEEP_FIG_CORE_PRESSURE] = {"core_pressure", "Pa", "pressure on the core (compression positive)"},
+    [SWEEP_FIG_PEAK_PRESSURE] = {"peak_pressure", "Pa", "greatest interlayer pressure, max of -sigma_r"},
+    [SWEEP_FIG_MIN_SIGMA_THETA] = {"min_sigma_theta", "Pa", "least hoop stress (negative: compression)"},
+    [SWEEP_FIG_FINAL_RADIUS] = {"final_radius", "m", "outer radius of the wound reel"},
+    [SWEEP_FIG_LAYERS] = {"layers", "", "layers wound"},
+    [SWEEP_FIG_BUCKLING_LAYERS] = {"buckling_layers", "", "layers at hoop-buckling risk (docs/defects.md)"},
+    [SWEEP_FIG_WALL_SECONDS] = {"wall_seconds", "s", "wall-clock time of the run"},
+    [SWEEP_FIG_STATUS] = {"status", "", "0 ok, 2 refused, 3 solver failed, 1 other"},
+};
+
+int sweep_figure_find(const char *name)
+{
+  for (int i = 0; name && i < SWEEP_N_FIGURES; ++i)
+    if (strcmp(sweep_figures[i].name, name) == 0) return i;
+  return -1;
+}
+
+void sweep_figure_names(char *buf, size_t size)
+{
+  size_t used = 0;
+  if (size) buf[0] = '\0';
+  for (int i = 0; i < SWEEP_N_FIGURES && used < size; ++i)
+    used += (size_t)snprintf(buf + used, size - used, "%s%s", i ? ", " : "", sweep_figures[i].name);
+}
+
+int sweep_status_code(rs_status st)
+{
+  switch (st) {
+  case RS_OK: return 0;
+  case RS_ERR_INPUT: return 2;
+  case RS_ERR_SOLVER: return 3;
+  default: return 1;
+  }
+}
+
+rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
+                                rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES])
+{
+  for (int i = 0; i < SWEEP_N_FIGURES; ++i) fig[i] = NAN;
+  fig[SWEEP_FIG_WALL_SECONDS] = wall_seconds;
+  fig[SWEEP_FIG_STATUS] = sweep_status_code(st);
+  if (st != RS_OK || !res || !problem) return RS_OK;
+
+  rs_reel_summary sum;
+  const char *what = NULL;
+  rs_reel_summarize(res, &sum);
+  if (!rs_reel_summary_finite(&sum, &what)) { /* as compare: a figure must be a number */
+    fig[SWEEP_FIG_STATUS] = sweep_status_code(RS_ERR_SOLVER);
+    return RS_OK;
+  }
+  fig[SWEEP_FIG_CORE_PRESSURE] = sum.core_pressure;
+  fig[SWEEP_FIG_PEAK_PRESSURE] = sum.peak_pressure;
+  fig[SWEEP_FIG_MIN_SIGMA_THETA] = sum.min_hoop;
+  fig[SWEEP_FIG_FINAL_RADIUS] = sum.final_radius;
+  fig[SWEEP_FIG_LAYERS] = sum.layers;
+
+  rs_defect_limits lim;
+  rs_defect_limits_from_problem(problem, &lim);
+  rs_defect_report *rep = NULL;
+  rs_status ds = rs_defects_assess(res, &lim, &rep);
+  if (ds != RS_OK) return ds;
+  if (rep->buckling.verdict != RS_DEFECT_NOT_ASSESSED)
+    fig[SWEEP_FIG_BUCKLING_LAYERS] = rep->buckling.layers;
+  rs_defect_report_destroy(&rep);
+  return RS_OK;
+}

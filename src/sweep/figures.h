@@ -1,0 +1,52 @@
+/* The figures of one wound recipe: what a sweep records per run and what optimize
+ * minimises, maximises or constrains (docs/output.md, "Sweep files"; docs/cli.md).
+ * Part of the recipe-search application layer (src/sweep): only public headers. */
+#ifndef RS_SWEEP_FIGURES_H
+#define RS_SWEEP_FIGURES_H
+
+#include <stddef.h>
+
+#include "reelsim/problem.h"
+#include "reelsim/reel.h"
+#include "reelsim/status.h"
+
+/* In this order in the table below (and in a sweep file's CSV). */
+typedef enum sweep_figure {
+  SWEEP_FIG_CORE_PRESSURE,   /* Pa, compression positive */
+  SWEEP_FIG_PEAK_PRESSURE,   /* Pa, greatest interlayer pressure (max of -sigma_r) */
+  SWEEP_FIG_MIN_SIGMA_THETA, /* Pa, least hoop stress (negative: compression) */
+  SWEEP_FIG_FINAL_RADIUS,    /* m */
+  SWEEP_FIG_LAYERS,          /* layers wound */
+  SWEEP_FIG_BUCKLING_LAYERS, /* layers at hoop-buckling risk (rs_defects_assess) */
+  SWEEP_FIG_WALL_SECONDS,    /* s, wall-clock time of the run */
+  SWEEP_FIG_STATUS,          /* 0 ok, 2 refused, 3 solver failed, 1 other */
+  SWEEP_N_FIGURES
+} sweep_figure;
+
+typedef struct sweep_figure_info {
+  const char *name; /* "core_pressure": the HDF5 dataset, the CSV column, optimize's FIGURE */
+  const char *unit; /* "Pa", "m", "s", "" */
+  const char *help; /* one line */
+} sweep_figure_info;
+
+extern const sweep_figure_info sweep_figures[SWEEP_N_FIGURES];
+
+/* The index of the figure called `name`, or -1. */
+int sweep_figure_find(const char *name);
+/* "core_pressure, peak_pressure, ..." into buf (for "unknown figure" messages). */
+void sweep_figure_names(char *buf, size_t size);
+
+/* The figures of one run into fig[SWEEP_N_FIGURES]. `st` is the run's status, `res` its
+ * result (may be NULL when st != RS_OK), `problem` what was wound (for the buckling rule's
+ * moduli; may be NULL when st != RS_OK). A failed run (st != RS_OK, or a summary figure
+ * that is not a finite number: status 3) has NaN for every figure but status and
+ * wall_seconds. buckling_layers is NaN when the rule cannot be assessed (no
+ * E_theta or radial law: docs/defects.md). Returns RS_OK, or the defect assessment's
+ * failure (RS_ERR_MEMORY; buckling_layers is then NaN, the other figures are filled). */
+rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
+                                rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES]);
+
+/* The status figure of a run's rs_status: 0 ok, 2 input refused, 3 solver failed, 1 other. */
+int sweep_status_code(rs_status st);
+
+#endif
