@@ -78,8 +78,12 @@ void cli_args_free(cli_args *a)
 {
   free(a->sets);
   free(a->scenes);
+  free(a->vary);
+  free(a->subject_to);
   free(a->owned);
   a->sets = NULL;
+  a->vary = NULL;
+  a->subject_to = NULL;
   a->scenes = NULL;
   a->owned = NULL;
 }
@@ -103,6 +107,18 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_QUICK: a->quick = 1; break;
   case CLI_OPT_JSON: a->json = 1; break;
   case CLI_OPT_RADIUS: a->radius = arg; break;
+  case CLI_OPT_VARY: a->vary[a->n_vary++] = arg; break;
+  case CLI_OPT_MINIMIZE:
+  case CLI_OPT_MAXIMIZE: {
+    const char **slot = o->id == CLI_OPT_MINIMIZE ? &a->minimize : &a->maximize;
+    if (*slot)
+      return cli_fail(CLI_EXIT_USAGE, "%s: %s given twice ('%s' and '%s')", cmd, typed, *slot, arg);
+    *slot = arg;
+    break;
+  }
+  case CLI_OPT_SUBJECT_TO: a->subject_to[a->n_subject_to++] = arg; break;
+  case CLI_OPT_TARGET_PROFILE: a->target_profile = arg; break;
+  case CLI_OPT_HISTORY: a->history = arg; break;
   case CLI_OPT_JOBS: {
     char *end;
     long j = strtol(arg, &end, 10);
@@ -125,7 +141,9 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
   /* room for every argument as a --set or an operand, plus -o's output.file */
   a->sets = calloc((size_t)argc + 1, sizeof *a->sets);
   a->scenes = calloc((size_t)argc + 1, sizeof *a->scenes);
-  if (!a->sets || !a->scenes) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  a->vary = calloc((size_t)argc + 1, sizeof *a->vary);
+  a->subject_to = calloc((size_t)argc + 1, sizeof *a->subject_to);
+  if (!a->sets || !a->scenes || !a->vary || !a->subject_to) return cli_fail(CLI_EXIT_OTHER, "out of memory");
   tables t;
   build(&t);
   /* getopt sees the command's name as its argv[0] */

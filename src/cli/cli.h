@@ -18,6 +18,9 @@ int cli_plot(const cli_args *a);
 int cli_study(const cli_args *a);
 /* reelsim nip SCENE --radius R [--json] [--set k=v]...: one contact nip (cmd_nip.c). */
 int cli_nip(const cli_args *a);
+/* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...
+ * (cmd_optimize.c). */
+int cli_optimize(const cli_args *a);
 
 /* summary_defects.c: Pa as "12.34 kPa" below 1 MPa, else "1.234 MPa"; the defect-risk
  * lines of the run summary. */

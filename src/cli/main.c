@@ -12,7 +12,8 @@ static const struct {
   const char *name;
   command_fn fn;
 } commands[] = {{"run", cli_run},     {"check", cli_check}, {"compare", cli_compare},
-                {"plot", cli_plot},   {"study", cli_study}, {"nip", cli_nip}};
+                {"plot", cli_plot},   {"study", cli_study}, {"nip", cli_nip},
+                {"optimize", cli_optimize}};
 
 static int unknown_command(const char *what, const char *cmd)
 {

@@ -11,7 +11,8 @@ enum {
   CLI_PLOT = 1u << 3,
   CLI_STUDY = 1u << 4,
   CLI_NIP = 1u << 5,
-  CLI_EVERY = (1u << 6) - 1
+  CLI_OPTIMIZE = 1u << 7,
+  CLI_EVERY = (1u << 8) - 1
 };
 
 typedef enum cli_opt {
@@ -26,6 +27,12 @@ typedef enum cli_opt {
   CLI_OPT_JOBS,
   CLI_OPT_RADIUS,
   CLI_OPT_JSON,
+  CLI_OPT_VARY,
+  CLI_OPT_MINIMIZE,
+  CLI_OPT_MAXIMIZE,
+  CLI_OPT_SUBJECT_TO,
+  CLI_OPT_TARGET_PROFILE,
+  CLI_OPT_HISTORY,
   CLI_N_OPTS
 } cli_opt;
 
