@@ -37,17 +37,26 @@ static const char *quantity_name(const opt_problem *p, int q)
   return q < OPT_N_FIGURES ? opt_figure_name(q) : p->vars[q - OPT_N_FIGURES].key;
 }
 
+/* A table column: as wide as its name, at least 12. */
+static int width(const char *name)
+{
+  int n = (int)strlen(name);
+  return n > 12 ? n : 12;
+}
+
 /* One line per evaluation: its number, phase, values, objective, feasible or why not. */
 static int after_each(void *user, const opt_history *h)
 {
   const opt_problem *p = user;
   int i = h->n - 1;
   printf("%4d %-6s", i + 1, h->phase[i] ? "cobyla" : "start");
-  for (int k = 0; k < p->n_vars; ++k) printf(" %14.6g", h->values[(size_t)i * (size_t)p->n_vars + (size_t)k]);
+  for (int k = 0; k < p->n_vars; ++k)
+    printf(" %*.6g", width(p->vars[k].key), h->values[(size_t)i * (size_t)p->n_vars + (size_t)k]);
   double st = h->figures[(size_t)i * OPT_N_FIGURES + OPT_STATUS];
-  if (st != 0) printf(" %14s  %s\n", "-", st == 2 ? "refused" : st == 3 ? "solver failed" : "failed");
+  int w = width(quantity_name(p, p->objective));
+  if (st != 0) printf(" %*s  %s\n", w, "-", st == 2 ? "refused" : st == 3 ? "solver failed" : "failed");
   else
-    printf(" %14.6g  %s\n", opt_quantity(p, h, i, p->objective),
+    printf(" %*.6g  %s\n", w, opt_quantity(p, h, i, p->objective),
            opt_feasible(p, h, i) ? "feasible" : "infeasible");
   fflush(stdout);
   return cli_signal_caught() != 0;
@@ -194,8 +203,8 @@ static void print_head(const opt_problem *p)
   printf("\n  %d Latin-hypercube points, then COBYLA from the best (at most %d runs, xtol_rel %g)\n",
          n0, maxeval, p->settings.xtol_rel);
   printf("\n%4s %-6s", "run", "phase");
-  for (int k = 0; k < K; ++k) printf(" %14.14s", p->vars[k].key);
-  printf(" %14.14s\n", quantity_name(p, p->objective));
+  for (int k = 0; k < K; ++k) printf(" %*s", width(p->vars[k].key), p->vars[k].key);
+  printf(" %*s\n", width(quantity_name(p, p->objective)), quantity_name(p, p->objective));
 }
 
 int cli_optimize(const cli_args *a)

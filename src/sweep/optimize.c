@@ -39,7 +39,9 @@ void opt_history_free(opt_history *h)
 
 const char *opt_result_text(const opt_history *h)
 {
-  return h->n > h->n_start ? nlopt_result_to_string((nlopt_result)h->nlopt_result) : "not run";
+  if (h->n <= h->n_start) return "not run";
+  const char *s = nlopt_result_to_string((nlopt_result)h->nlopt_result);
+  return s ? s : "unknown";
 }
 
 double opt_quantity(const opt_problem *p, const opt_history *h, int i, int q)
