@@ -49,5 +49,44 @@ rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *
  * that the groups sort in run order. */
 void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size);
 
+/* A parameter sweep (`reelsim sweep`; docs/output.md, "Sweep files"): R runs of one scene
+ * at K scene keys' values, and F figures of each run. */
+typedef struct rs_output_profile {
+  int n;                    /* layers (0: none, a failed run) */
+  const double *radius;     /* m, outer radius of each layer */
+  const double *sigma_r;    /* Pa */
+  const double *sigma_theta;/* Pa */
+} rs_output_profile;
+
+typedef struct rs_output_sweep {
+  const char *scene_path;         /* the scene swept (attribute scene_file) */
+  const char *scene_text;         /* its resolved text with the --set overrides, or NULL */
+  const char *sample;             /* "grid" or "lhs:R" (attribute sample) */
+  long long seed;                 /* the Latin hypercube's seed (attribute seed; 0 for grid) */
+  int n_keys;                     /* K >= 1 */
+  const char *const *keys;        /* /sweep/parameters */
+  const int *n_words;             /* per key: the words of a word-valued key, 0 for numbers */
+  const char *const *const *words;/* per key: its words (NULL for a numeric key) */
+  int n_runs;                     /* R >= 1 */
+  const double *values;           /* R x K, row-major: the value, or the index of a word */
+  int n_figures;                  /* F */
+  const char *const *figure_names;/* /sweep/figures/<name> */
+  const char *const *figure_units;
+  const char *const *figure_help;
+  const double *figures;          /* F x R, row-major (NaN where a run failed) */
+  const rs_output_profile *profiles; /* R profiles (/sweep/profiles/<i>), or NULL */
+} rs_output_sweep;
+
+/* Writes the sweep to one HDF5 file, staged like rs_output_write: /sweep/parameters (K
+ * strings), /sweep/values (R x K doubles; a word-valued key's column holds the index of the
+ * word, and the attribute "words:<key>" of /sweep/values lists the words, comma-separated),
+ * /sweep/figures/<name> (R doubles each, with units and description), and with profiles
+ * /sweep/profiles/<i>/{radius, sigma_r, sigma_theta} for run i (0-based). */
+rs_status rs_output_write_sweep(const char *path, const rs_output_sweep *sw);
+
+/* The same as CSV, staged likewise: a header line (the keys, then the figures), one row
+ * per run; numbers as %.17g, a word-valued key as its word, a NaN figure as an empty field. */
+rs_status rs_output_write_sweep_csv(const char *path, const rs_output_sweep *sw);
+
 RS_END_DECLS
 #endif

@@ -77,8 +77,8 @@ static void takers(const cli_option *any, char *buf, size_t size)
 void cli_args_free(cli_args *a)
 {
   free(a->sets);
-  free(a->scenes);
   free(a->vary);
+  free(a->scenes);
   free(a->subject_to);
   free(a->owned);
   a->sets = NULL;
@@ -119,6 +119,17 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_SUBJECT_TO: a->subject_to[a->n_subject_to++] = arg; break;
   case CLI_OPT_TARGET_PROFILE: a->target_profile = arg; break;
   case CLI_OPT_HISTORY: a->history = arg; break;
+  case CLI_OPT_SAMPLE: a->sample = arg; break;
+  case CLI_OPT_PROFILES: a->profiles = 1; break;
+  case CLI_OPT_THREADS: {
+    char *end;
+    long j = strtol(arg, &end, 10);
+    if (*end || j < 1 || j > 256)
+      return cli_fail(CLI_EXIT_USAGE, "%s: --threads needs a number of threads in [1, 256] (got '%s')",
+                      cmd, arg);
+    a->threads = (int)j;
+    break;
+  }
   case CLI_OPT_JOBS: {
     char *end;
     long j = strtol(arg, &end, 10);

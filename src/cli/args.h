@@ -19,8 +19,11 @@ typedef struct cli_args {
   int jobs;             /* study --jobs N (default 1) */
   const char *radius;   /* nip --radius R, as given */
   int json;             /* nip --json */
-  int n_vary;           /* --vary KEY=..., in order */
+  int n_vary;           /* sweep, optimize --vary KEY=..., in order */
   const char **vary;
+  const char *sample;   /* sweep --sample grid|lhs:R, or NULL */
+  int threads;          /* sweep --threads K (0: one per core) */
+  int profiles;         /* sweep --profiles */
   const char *minimize, *maximize; /* optimize --minimize / --maximize FIGURE */
   int n_subject_to;     /* optimize --subject-to, in order */
   const char **subject_to;

@@ -21,6 +21,8 @@ int cli_nip(const cli_args *a);
 /* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...
  * (cmd_optimize.c). */
 int cli_optimize(const cli_args *a);
+/* reelsim sweep SCENE --vary KEY=... [--sample ...] [-o FILE] ... (cmd_sweep.c). */
+int cli_sweep(const cli_args *a);
 
 /* summary_defects.c: Pa as "12.34 kPa" below 1 MPa, else "1.234 MPa"; the defect-risk
  * lines of the run summary. */

@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-#define SCENE_CMDS (CLI_RUN | CLI_CHECK | CLI_COMPARE | CLI_STUDY | CLI_NIP | CLI_OPTIMIZE)
+#define SCENE_CMDS (CLI_RUN | CLI_CHECK | CLI_COMPARE | CLI_STUDY | CLI_NIP | CLI_SWEEP | CLI_OPTIMIZE)
 
 const cli_option cli_options[] = {
     {CLI_OPT_OUTPUT, "output", 'o', "FILE", "a file name", CLI_RUN | CLI_CHECK,
@@ -17,6 +17,24 @@ const cli_option cli_options[] = {
     {CLI_OPT_OUTPUT, "output", 'o', "DIR", "a directory", CLI_STUDY,
      "where the files go (default study-<scene name>; made when\n"
      "the runs are done, as mkdir -p does)"},
+    {CLI_OPT_OUTPUT, "output", 'o', "FILE", "a file name", CLI_SWEEP,
+     "write the sweep here (default sweep.h5)"},
+    {CLI_OPT_VARY, "vary", 0, "KEY=LO:HI:N", "KEY=LO:HI:N or KEY=V1,V2,...", CLI_SWEEP,
+     "vary scene key KEY over N values evenly spaced from LO\n"
+     "to HI, or over a list KEY=V1,V2,... (numbers or words);\n"
+     "repeatable: one --vary per key (at least one)"},
+    {CLI_OPT_SAMPLE, "sample", 0, "grid|lhs:R", "grid or lhs:R", CLI_SWEEP,
+     "grid (default): every combination of the values;\n"
+     "lhs:R: R Latin-hypercube samples of the keys' ranges"},
+    {CLI_OPT_CSV, "csv", 0, "FILE", "a file name", CLI_SWEEP,
+     "also write one CSV row per run (the keys, then the\n"
+     "figures) to FILE"},
+    {CLI_OPT_THREADS, "threads", 0, "K", "a number of threads", CLI_SWEEP,
+     "wind K runs at once, 1 to 256 (default: one per core;\n"
+     "under mpirun each rank winds one run at a time)"},
+    {CLI_OPT_PROFILES, "profiles", 0, NULL, NULL, CLI_SWEEP,
+     "also write every run's final radius, sigma_r and\n"
+     "sigma_theta profiles (/sweep/profiles/<i>)"},
     {CLI_OPT_OUTPUT, "output", 'o', "FILE", "a file name", CLI_OPTIMIZE,
      "write the best scene here, as YAML runnable as is\n"
      "(default <scene>-best.yaml)"},
@@ -43,13 +61,16 @@ const cli_option cli_options[] = {
      "(DIR must exist)"},
     {CLI_OPT_RADIUS, "radius", 0, "R", "a roll radius in metres", CLI_NIP,
      "the roll radius (m) at which to solve the nip (required)"},
-    {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", SCENE_CMDS & ~CLI_COMPARE & ~CLI_STUDY,
+    {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", SCENE_CMDS & ~CLI_COMPARE & ~CLI_STUDY & ~CLI_SWEEP,
      "override one value of the scene before it is checked\n"
      "(repeatable; also --set=key.path=value), e.g.\n"
      "--set winding.tension=300 --set material=pet-film"},
     {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", CLI_COMPARE,
      "override one value in every scene (repeatable; also\n"
      "--set=key.path=value)"},
+    {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", CLI_SWEEP,
+     "override one value in every run, before the --vary\n"
+     "values (repeatable; also --set=key.path=value)"},
     {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", CLI_STUDY,
      "override one value in every run (repeatable; also\n"
      "--set=key.path=value), e.g. a smaller roll for a quicker\n"
@@ -67,7 +88,7 @@ const cli_option cli_options[] = {
      "complete = 0"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_RUN,
      "print nothing but errors (no summary, no progress bar)"},
-    {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY | CLI_OPTIMIZE,
+    {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY | CLI_SWEEP | CLI_OPTIMIZE,
      "print nothing but errors"},
     {CLI_OPT_VERBOSE, "verbose", 'v', NULL, NULL, CLI_EVERY,
      "with an error, also show where in reelsim's code it was\n"
@@ -148,6 +169,27 @@ const cli_command cli_commands[] = {
      "secant modulus, stick and slip zones on both sides (docs/nip.md).\n",
      "exit status: 0 ok, 2 bad input (or a scene without nip.model: contact),\n"
      "             3 the nip could not be solved\n"},
+    {"sweep", CLI_SWEEP, "scene file", 0,
+     "reelsim sweep SCENE --vary KEY=LO:HI:N [--vary KEY=V1,V2,... ...]\n"
+     "                         [--sample grid|lhs:R] [-o FILE] [--csv FILE] [--threads K]\n"
+     "                         [--set key.path=value ...] [--profiles] [--quiet]",
+     "wind a scene at many values of some of its keys (a grid\n"
+     "or a Latin hypercube), in parallel or over MPI ranks, and\n"
+     "write every run's figures to one HDF5 file (sweep.h5)",
+     "Winds SCENE at every combination of the --vary values (or R Latin-hypercube samples\n"
+     "of their ranges), in parallel, and writes one HDF5 file: /sweep/parameters (the\n"
+     "keys), /sweep/values (one row per run) and /sweep/figures/ (core_pressure,\n"
+     "peak_pressure, min_sigma_theta, final_radius, layers, buckling_layers,\n"
+     "wall_seconds, status: 0 ok, 2 refused, 3 solver failed) (docs/output.md). Every\n"
+     "run's scene is loaded and checked before any is wound. A run that fails is\n"
+     "recorded (status, NaN figures) and the others go on. Under mpirun -n P the runs\n"
+     "are handed out to the ranks one at a time and rank 0 writes the file\n"
+     "(docs/scale.md).\n",
+     "Ctrl-C or SIGTERM stops the sweep after the runs in progress: nothing is written\n"
+     "(130, 143).\n"
+     "exit status: 0 the sweep ran (failed runs are counted in its last line),\n"
+     "             2 bad input (nothing wound), 130 interrupted, 143 terminated,\n"
+     "             1 other\n"},
     {"optimize", CLI_OPTIMIZE, "scene file", 0,
      "reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE\n"
      "                         [--subject-to 'FIGURE<=X' | 'FIGURE>=X' ...]\n"

@@ -11,6 +11,7 @@ enum {
   CLI_PLOT = 1u << 3,
   CLI_STUDY = 1u << 4,
   CLI_NIP = 1u << 5,
+  CLI_SWEEP = 1u << 6,
   CLI_OPTIMIZE = 1u << 7,
   CLI_EVERY = (1u << 8) - 1
 };
@@ -28,6 +29,9 @@ typedef enum cli_opt {
   CLI_OPT_RADIUS,
   CLI_OPT_JSON,
   CLI_OPT_VARY,
+  CLI_OPT_SAMPLE,
+  CLI_OPT_THREADS,
+  CLI_OPT_PROFILES,
   CLI_OPT_MINIMIZE,
   CLI_OPT_MAXIMIZE,
   CLI_OPT_SUBJECT_TO,

@@ -52,7 +52,12 @@ rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result 
   if (st != RS_OK || !res || !problem) return RS_OK;
 
   rs_reel_summary sum;
+  const char *what = NULL;
   rs_reel_summarize(res, &sum);
+  if (!rs_reel_summary_finite(&sum, &what)) { /* as compare: a figure must be a number */
+    fig[SWEEP_FIG_STATUS] = sweep_status_code(RS_ERR_SOLVER);
+    return RS_OK;
+  }
   fig[SWEEP_FIG_CORE_PRESSURE] = sum.core_pressure;
   fig[SWEEP_FIG_PEAK_PRESSURE] = sum.peak_pressure;
   fig[SWEEP_FIG_MIN_SIGMA_THETA] = sum.min_hoop;

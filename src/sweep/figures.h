@@ -38,8 +38,9 @@ void sweep_figure_names(char *buf, size_t size);
 
 /* The figures of one run into fig[SWEEP_N_FIGURES]. `st` is the run's status, `res` its
  * result (may be NULL when st != RS_OK), `problem` what was wound (for the buckling rule's
- * moduli; may be NULL when st != RS_OK). A failed run (st != RS_OK) has NaN for every figure
- * but status and wall_seconds. buckling_layers is NaN when the rule cannot be assessed (no
+ * moduli; may be NULL when st != RS_OK). A failed run (st != RS_OK, or a summary figure
+ * that is not a finite number: status 3) has NaN for every figure but status and
+ * wall_seconds. buckling_layers is NaN when the rule cannot be assessed (no
  * E_theta or radial law: docs/defects.md). Returns RS_OK, or the defect assessment's
  * failure (RS_ERR_MEMORY; buckling_layers is then NaN, the other figures are filled). */
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,

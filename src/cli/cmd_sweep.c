@@ -1,0 +1,193 @@
+/* reelsim sweep: one scene wound at many values of some of its keys (docs/cli.md).
+ *
+ * Everything that can be refused is refused before anything is wound: the --sample and
+ * --vary arguments, each key against the scene, then every run's scene (loaded with its
+ * values). The runs go over threads, or over MPI ranks under mpirun (src/sweep); only rank
+ * 0 prints and writes. A failed run is recorded (status, NaN figures) and the sweep goes
+ * on: its exit status is 0 when it ran, and the last line counts the failures. */
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/signals.h"
+#include "reelsim/clock.h"
+#include "reelsim/output.h"
+#include "reelsim/scene.h"
+#include "sweep/sweep.h"
+
+static const char default_output[] = "sweep.h5";
+
+static int on_progress(void *user, int layers_done, int layers_total)
+{
+  (void)user;
+  (void)layers_done;
+  (void)layers_total;
+  return cli_signal_caught() != 0;
+}
+
+typedef struct sweep_state {
+  sweep_vary *vary;
+  int n_vary;
+  sweep_sample sample;
+  sweep_plan plan;
+  sweep_result result;
+  rs_scene *base;          /* the scene with --set alone: its resolved text for the file */
+  const char *output;
+} sweep_state;
+
+/* The arguments, the keys against the scene, every run: exit 2 naming what is wrong. */
+static int prepare(sweep_state *s, const cli_args *a)
+{
+  rs_status st = sweep_sample_parse(a->sample ? a->sample : "grid", &s->sample);
+  if (st != RS_OK) return cli_fail_status(st);
+  if (a->n_vary == 0)
+    return cli_fail(CLI_EXIT_USAGE, "sweep: nothing to vary (give --vary KEY=LO:HI:N or "
+                                    "--vary KEY=V1,V2,...)");
+  s->vary = calloc((size_t)a->n_vary, sizeof *s->vary);
+  if (!s->vary) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  for (int k = 0; k < a->n_vary; ++k) {
+    ++s->n_vary;
+    if ((st = sweep_vary_parse(a->vary[k], sweep_sample_vary_forms(&s->sample), &s->vary[k])) != RS_OK)
+      return cli_fail_status(st);
+    for (int j = 0; j < k; ++j)
+      if (strcmp(s->vary[j].key, s->vary[k].key) == 0)
+        return cli_fail(CLI_EXIT_USAGE, "--vary %s: %s is already varied by --vary %s",
+                        a->vary[k], s->vary[k].key, a->vary[j]);
+  }
+  if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
+    return cli_fail_status(st);
+  for (int k = 0; k < s->n_vary; ++k)
+    if ((st = sweep_vary_check(a->scene, a->n_sets, a->sets, &s->vary[k])) != RS_OK)
+      return cli_fail_status(st);
+  if ((st = sweep_plan_make(s->n_vary, s->vary, &s->sample, &s->plan)) != RS_OK)
+    return cli_fail_status(st);
+  return CLI_EXIT_OK;
+}
+
+static int write_files(const sweep_state *s, const cli_args *a)
+{
+  int n = s->plan.n_runs, nk = s->n_vary;
+  const char **keys = calloc((size_t)nk, sizeof *keys);
+  int *n_words = calloc((size_t)nk, sizeof *n_words);
+  const char *const **words = calloc((size_t)nk, sizeof *words);
+  const char *names[SWEEP_N_FIGURES], *units[SWEEP_N_FIGURES], *help[SWEEP_N_FIGURES];
+  if (!keys || !n_words || !words) {
+    free(keys);
+    free(n_words);
+    free(words);
+    return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  }
+  for (int k = 0; k < nk; ++k) {
+    keys[k] = s->vary[k].key;
+    if (s->vary[k].words) {
+      n_words[k] = s->vary[k].n;
+      words[k] = (const char *const *)s->vary[k].words;
+    }
+  }
+  for (int f = 0; f < SWEEP_N_FIGURES; ++f) {
+    names[f] = sweep_figures[f].name;
+    units[f] = sweep_figures[f].unit;
+    help[f] = sweep_figures[f].help;
+  }
+  char sample[64];
+  sweep_sample_name(&s->sample, sample, sizeof sample);
+  rs_output_sweep sw = {
+      .scene_path = a->scene,
+      .scene_text = rs_scene_resolved_text(s->base),
+      .sample = sample,
+      .seed = s->sample.kind == SWEEP_SAMPLE_LHS ? (long long)SWEEP_LHS_SEED : 0,
+      .n_keys = nk,
+      .keys = keys,
+      .n_words = n_words,
+      .words = words,
+      .n_runs = n,
+      .values = s->plan.points,
+      .n_figures = SWEEP_N_FIGURES,
+      .figure_names = names,
+      .figure_units = units,
+      .figure_help = help,
+      .figures = s->result.figures,
+      .profiles = s->result.profiles,
+  };
+  int code = CLI_EXIT_OK;
+  rs_status st = rs_output_write_sweep(s->output, &sw);
+  if (st == RS_OK && a->csv_dir) st = rs_output_write_sweep_csv(a->csv_dir, &sw);
+  if (st != RS_OK) code = cli_fail_status(st);
+  free(keys);
+  free(n_words);
+  free(words);
+  return code;
+}
+
+static void free_state(sweep_state *s)
+{
+  for (int k = 0; k < s->n_vary; ++k) sweep_vary_clear(&s->vary[k]);
+  free(s->vary);
+  sweep_plan_free(&s->plan);
+  sweep_result_free(&s->result);
+  rs_scene_destroy(&s->base);
+}
+
+int cli_sweep(const cli_args *a)
+{
+  double t0 = rs_clock_wall();
+  sweep_mpi_begin();
+  int root = sweep_mpi_rank() == 0;
+  /* every rank checks the same input and fails alike; only rank 0 says so */
+  if (!root && (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))) {
+    /* nothing to say it with: go on, the messages are rank 0's anyway */
+  }
+  sweep_state s = {.output = a->output ? a->output : default_output};
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
+  sweep_spec spec = {a->scene, a->n_sets, a->sets, &s.plan, a->threads, a->profiles, on_progress};
+
+  int code = prepare(&s, a);
+  rs_status st = RS_OK;
+  if (code == CLI_EXIT_OK && (st = sweep_check_runs(&spec)) != RS_OK) code = cli_fail_status(st);
+  if (code == CLI_EXIT_USAGE) {
+    fprintf(stderr, "reelsim: sweep: nothing was wound\n");
+    goto done;
+  }
+  if (code != CLI_EXIT_OK) goto done;
+  /* a missing output directory should not cost the sweep (rank 0's view decides) */
+  if (root && (st = rs_output_check_target(s.output)) == RS_OK && a->csv_dir)
+    st = rs_output_check_target(a->csv_dir);
+  if (root && st != RS_OK) code = cli_fail_status(st);
+  if ((code = sweep_mpi_agree(code)) != CLI_EXIT_OK) goto done;
+
+  if (!a->quiet && root)
+    printf("sweep: %d run%s of %s (%d key%s)\n", s.plan.n_runs, s.plan.n_runs == 1 ? "" : "s",
+           a->scene, s.n_vary, s.n_vary == 1 ? "" : "s");
+  fflush(stdout);
+  if ((st = sweep_wind(&spec, &s.result)) != RS_OK) {
+    code = cli_fail_status(st);
+    goto done;
+  }
+  if (!root) goto done;
+  if (s.result.stopped || cli_signal_caught()) {
+    int sig = cli_signal_caught();
+    code = cli_fail(cli_signal_exit_code(sig ? sig : SIGINT), "sweep: %s (no output written)",
+                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+    goto done;
+  }
+  if ((code = write_files(&s, a)) != CLI_EXIT_OK) goto done;
+  if (!a->quiet) {
+    char where[64];
+    if (s.result.ranks > 0)
+      snprintf(where, sizeof where, "%d MPI rank%s", s.result.ranks, s.result.ranks == 1 ? "" : "s");
+    else
+      snprintf(where, sizeof where, "%d thread%s", s.result.threads, s.result.threads == 1 ? "" : "s");
+    printf("output %s%s%s\n", s.output, a->csv_dir ? " and " : "", a->csv_dir ? a->csv_dir : "");
+    printf("sweep: %d run%s on %s in %.2f s, %d failed\n", s.plan.n_runs,
+           s.plan.n_runs == 1 ? "" : "s", where, rs_clock_wall() - t0, s.result.failed);
+  }
+
+done:
+  free_state(&s);
+  cli_signals_restore(&sig_saved);
+  sweep_mpi_end();
+  return code;
+}
