@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
@@ -144,6 +145,18 @@ static int name_outputs(const cli_args *a, opt_cli *c)
     size_t len = strlen(c->history);
     if (len + 4 > sizeof c->history) return cli_fail(CLI_EXIT_USAGE, "optimize: -o %s: name too long", c->output);
     strcat(c->history, ".h5");
+  }
+  const char *files[2] = {c->output, c->history}, *flags[2] = {"-o", "--history"};
+  for (int i = 0; i < 2; ++i) { /* the folder must be there: found now, not after the search */
+    char dir[RS_PATH_MAX];
+    snprintf(dir, sizeof dir, "%s", files[i]);
+    char *slash = strrchr(dir, '/');
+    if (!slash) continue;
+    if (slash == dir) slash[1] = '\0';
+    else *slash = '\0';
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+      return cli_fail(CLI_EXIT_USAGE, "optimize: %s %s: %s is not a directory", flags[i], files[i], dir);
   }
   if (strcmp(c->output, c->history) == 0)
     return cli_fail(CLI_EXIT_USAGE, "optimize: -o and --history name the same file (%s)", c->output);

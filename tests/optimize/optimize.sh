@@ -18,6 +18,10 @@
 #              of the peak pressure, and at exactly 300 (LO = HI) below 1e-6 of it (the
 #              CSV's digits).
 #   bad_input  each bad argument exits 2 naming it, and nothing is wound or written.
+#   infeasible no point meets the constraint: exit 1, the history written (best -1), no
+#              scene.
+#   failures   runs the solver cannot finish, or values the scene refuses, count as
+#              infeasible: the search goes on and answers with a run that finished.
 set -u
 bin="$1"; tests="$2"; case="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
@@ -141,6 +145,35 @@ bad_input)
   expect 2 "--vary material\.caliper=-1:1e-4: .*material\.caliper" \
     "$small" --vary material.caliper=-1:1e-4 --maximize core_pressure
   expect 2 "give at least one --vary" "$small" --maximize core_pressure
+  expect 2 "-o nodir/best\.yaml: nodir is not a directory" "$small" "${ok[@]}" -o nodir/best.yaml
+  expect 2 "--history bad\.csv/h\.h5: bad\.csv is not a directory" "$small" "${ok[@]}" --history bad.csv/h.h5
+  ;;
+infeasible)
+  # no tension in range meets the cap: exit 1, the history written, no scene
+  run "$bin" optimize "$small" --vary winding.tension=50:500 --maximize winding.tension \
+      --subject-to 'core_pressure<=1' -o best.yaml
+  [ "$got" -eq 1 ] || fail "exit $got, expected 1"
+  has "no run of the [0-9]+ met every constraint"
+  [ ! -e best.yaml ] || fail "best.yaml written"
+  [ "$(h5 best.h5 /optimize/best | head -1)" = -1 ] || fail "/optimize/best is not -1"
+  [ -z "$(ls -A | grep -v -e '^best.h5$')" ] || fail "other files: $(ls -A)"
+  ;;
+failures)
+  # with at most 80 CVODE steps an increment, the newsprint scene winds at rtol >= 1e-4
+  # and fails below about 1e-5: minimizing rtol walks into failed runs, which only count
+  # as infeasible; the search goes on and its answer is a run that finished
+  run "$bin" optimize "$news" --vary numerics.rtol=1e-8:1e-3 --minimize numerics.rtol \
+      --set numerics.max_steps=80 -o best.yaml
+  [ "$got" -eq 0 ] || fail "optimize failed"
+  has "solver failed"
+  b=$(h5 best.h5 /optimize/best | head -1)
+  [ "$(h5 best.h5 /optimize/figures/status | sed -n "$((b + 1))p")" = 0 ] || fail "the best run did not finish"
+  "$bin" run best.yaml -q -o rerun.h5 || fail "best.yaml does not run"
+  # a value the scene refuses (max_steps takes whole numbers) is refused, not a crash
+  run "$bin" optimize "$small" --vary numerics.max_steps=1:3000 --maximize numerics.max_steps -o r.yaml
+  [ "$got" -eq 1 ] || fail "exit $got, expected 1 (no run finished)"
+  has "refused"
+  has "no run of the [0-9]+ met every constraint"
   ;;
 *) fail "unknown case $case" ;;
 esac
