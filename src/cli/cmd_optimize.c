@@ -256,7 +256,8 @@ int cli_optimize(const cli_args *a)
   int caught = cli_signal_caught();
   cli_signals_restore(&sig);
   if (caught) {
-    code = cli_signal_exit_code(caught);
+    code = cli_fail(cli_signal_exit_code(caught), "optimize: %s after %d run%s (no output written)",
+                    caught == SIGTERM ? "terminated (SIGTERM)" : "interrupted", h.n, h.n == 1 ? "" : "s");
     goto done;
   }
   if (rc != 0) {

@@ -16,7 +16,7 @@ foreach(c constraints figures target_file target_refused misfit_closed_form hist
   endif()
 endforeach()
 
-foreach(c linear nonlinear target bad_input infeasible failures)
+foreach(c linear nonlinear target bad_input infeasible failures interrupted)
   add_test(NAME cli.optimize_${c}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/optimize/optimize.sh $<TARGET_FILE:reelsim_cli>
                    ${CMAKE_CURRENT_SOURCE_DIR} ${c})

@@ -20,6 +20,7 @@
 #   bad_input  each bad argument exits 2 naming it, and nothing is wound or written.
 #   infeasible no point meets the constraint: exit 1, the history written (best -1), no
 #              scene.
+#   interrupted  SIGINT or SIGTERM mid-run: 130 or 143, a message, nothing written.
 #   failures   runs the solver cannot finish, or values the scene refuses, count as
 #              infeasible: the search goes on and answers with a run that finished.
 set -u
@@ -174,6 +175,25 @@ failures)
   [ "$got" -eq 1 ] || fail "exit $got, expected 1 (no run finished)"
   has "refused"
   has "no run of the [0-9]+ met every constraint"
+  ;;
+interrupted)
+  # SIGINT (then SIGTERM) during a long run: exit 130 (143), the message, nothing written
+  set -m
+  for sig in INT TERM; do
+    "$bin" optimize "$news" --set winding.final_radius=1.5 --vary winding.tension.end=150:400 \
+        --minimize core_pressure -o best.yaml > log 2>&1 &
+    pid=$!
+    sleep 1
+    kill -"$sig" "$pid"
+    wait "$pid"; got=$?
+    cat log
+    want=130; word=interrupted
+    [ "$sig" = TERM ] && want=143 && word='terminated \(SIGTERM\)'
+    [ "$got" -eq "$want" ] || fail "exit $got, expected $want"
+    grep -Eq "reelsim: optimize: $word after [0-9]+ runs? \(no output written\)" log || fail "no message"
+    [ "$(ls -A)" = log ] || fail "files written: $(ls -A)"
+    rm -f log
+  done
   ;;
 *) fail "unknown case $case" ;;
 esac
