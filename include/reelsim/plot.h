@@ -7,8 +7,11 @@
  * nip load of the recipe) and <stem>-nip-<i>.png for each /nip/profiles/<i> (pressure and
  * shears across the nip, stick zones shaded). For a comparison file the runs are overlaid
  * in <stem>-pressure.png, <stem>-hoop.png and <stem>-tension.png, and each run's nip
- * profiles get <stem>-<run>-nip-<i>.png. <stem> is the file's name without directory and
- * extension. */
+ * profiles get <stem>-<run>-nip-<i>.png. For a sweep file (/sweep), <stem>-<figure>.png
+ * for each figure of the runs (core_pressure, ...): against the one parameter that varies,
+ * or a heat map over the first two that do; for an optimisation's file (/optimize),
+ * <stem>-optimize.png, the objective at each evaluation. <stem> is the file's name
+ * without directory and extension. */
 #ifndef REELSIM_PLOT_H
 #define REELSIM_PLOT_H
 

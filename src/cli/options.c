@@ -131,12 +131,14 @@ const cli_command cli_commands[] = {
      "exit status: 0 ok, 2 bad input in any scene, 3 a run's solver failed,\n"
      "             130 interrupted, 143 terminated, 1 other\n"},
     {"plot", CLI_PLOT, "file", 0, "reelsim plot FILE.h5 [-o DIR] [--quiet]",
-     "PNG plots of a run or compare file (needs gnuplot)",
+     "PNG plots of a run, compare or sweep file (needs gnuplot)",
      "Draws PNG plots of a reelsim file with gnuplot into DIR (default: the current\n"
      "directory), named <file name>-<plot>.png: interlayer pressure and hoop stress\n"
      "against radius (with history stages and defect ranges when the file has them),\n"
      "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
-     "file has /nip/profiles; for a compare file the runs overlaid, one plot each.\n",
+     "file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
+     "sweep file each figure against the parameter varied, or a heat map over the first\n"
+     "two varied, and an optimisation's history (/optimize).\n",
      "exit status: 0 ok, 2 FILE is not a reelsim file or DIR (or a parent of it) is\n"
      "             not a directory, 1 gnuplot missing or failed, other errors\n"},
     {"study", CLI_STUDY, "scene file", 0,

@@ -9,5 +9,9 @@
 rs_status plot_run_figures(plot_ctx *c, const run_data *d);      /* plot_run.c */
 rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n); /* plot_compare.c */
 rs_status plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run); /* plot_nip.c */
+/* A recipe-search file: /sweep (reelsim sweep) or /optimize (reelsim optimize); its
+ * figures (plot_sweep.c). */
+int plot_is_search_file(const plot_ctx *c);
+rs_status plot_search_figures(plot_ctx *c);
 
 #endif

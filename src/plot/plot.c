@@ -39,6 +39,7 @@ static rs_status check_dir(const char *dir)
 
 static rs_status draw(plot_ctx *c, run_data *runs, int n)
 {
+  if (plot_is_search_file(c)) return plot_search_figures(c);
   rs_status st = RS_OK;
   for (int i = 0; st == RS_OK && i < n; ++i) st = plot_run_read(c, i, &runs[i]);
   if (st != RS_OK) return st;

@@ -21,3 +21,51 @@ endfunction()
 
 rs_sweep_test(test_sweep_vary unit SOURCES sweep/test_vary.c
   CASES grid_values lists_and_ranges refusals checked_against_scene figures_of_a_run figure_names)
+
+# --- reelsim sweep from the command line ------------------------------------------------
+set(SWEEP_SCENE ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/small.yaml)
+foreach(c matches_runs grid_counts lhs_strata failed_run profiles plot)
+  add_test(NAME cli.sweep.${c}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh ${c} $<TARGET_FILE:reelsim_cli>
+                   ${SWEEP_SCENE})
+  set_tests_properties(cli.sweep.${c} PROPERTIES LABELS cli TIMEOUT 300)
+endforeach()
+# 3 ranks == 1 process. In a sanitizer build without LeakSanitizer: Open MPI leaves its own
+# start-up allocations (its plugins) at exit, which are not reelsim's; ASan's checks of
+# every access still run (docs/scale.md).
+find_program(RS_MPIEXEC NAMES mpirun mpiexec)
+if(RS_HAVE_MPI AND RS_MPIEXEC)
+  add_test(NAME cli.sweep.mpi_same
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh mpi_same
+                   $<TARGET_FILE:reelsim_cli> ${SWEEP_SCENE} ${RS_MPIEXEC})
+  set_tests_properties(cli.sweep.mpi_same PROPERTIES LABELS "mpi;cli" TIMEOUT 300)
+  if(REELSIM_SANITIZE)
+    set_tests_properties(cli.sweep.mpi_same PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+  endif()
+endif()
+
+# --- bad input: exit 2 naming the argument, nothing wound --------------------------------
+set(SW sweep ${SWEEP_SCENE} -o sweep-bad.h5)
+rs_cli_test(sweep.bad_unknown_key 2 [[--vary winding\.tensoin=1:2:3: --set winding\.tensoin=1: unknown key 'tensoin']]
+            ${SW} --vary winding.tensoin=1:2:3)
+rs_cli_test(sweep.bad_lo_above_hi 2 [[--vary winding\.tension=300:100:3: LO > HI]]
+            ${SW} --vary winding.tension=300:100:3)
+rs_cli_test(sweep.bad_n_zero 2 [[--vary winding\.tension=100:300:0: N must be >= 1]]
+            ${SW} --vary winding.tension=100:300:0)
+rs_cli_test(sweep.bad_malformed 2 [[--vary winding\.tension: expected KEY=LO:HI:N or KEY=V1,V2,\.\.\.]]
+            ${SW} --vary winding.tension)
+rs_cli_test(sweep.bad_range_without_n 2 [[--vary winding\.tension=100:300: expected LO:HI:N]]
+            ${SW} --vary winding.tension=100:300)
+rs_cli_test(sweep.bad_value 2 [[--vary winding\.tension=abc,200: .*winding\.tension.*not a number]]
+            ${SW} --vary winding.tension=abc,200)
+rs_cli_test(sweep.bad_refused_value 2 [[--vary core\.radius=0\.05,0\.08: .*final_radius: must be > the core radius]]
+            ${SW} --vary core.radius=0.05,0.08)
+rs_cli_test(sweep.bad_sample 2 [=[--sample lhs:0: R must lie in \[1, 10000000\]]=]
+            ${SW} --vary winding.tension=100:300:3 --sample lhs:0)
+rs_cli_test(sweep.bad_sample_word 2 [[--sample random: expected grid or lhs:R]]
+            ${SW} --vary winding.tension=100:300:3 --sample random)
+rs_cli_test(sweep.bad_no_vary 2 [[sweep: nothing to vary]] ${SW})
+rs_cli_test(sweep.bad_twice 2 [[--vary winding\.tension=1,2: winding\.tension is already varied]]
+            ${SW} --vary winding.tension=100:300:3 --vary winding.tension=1,2)
+rs_cli_test(sweep.bad_threads 2 [=[--threads needs a number of threads in \[1, 256\]]=]
+            ${SW} --vary winding.tension=100:300:3 --threads 0)
