@@ -1,19 +1,25 @@
 /* The optimisation's history file (docs/output.md, "/optimize"): every evaluation, the
  * best one and the settings. Written to a temporary file beside the target and renamed,
  * so it is whole or absent. */
+#define _POSIX_C_SOURCE 200809L /* gmtime_r */
 #include "sweep/optimize.h"
 
 #include <hdf5.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
+#include "reelsim/version.h"
+
+/* Strings as every reelsim file has them: variable-length UTF-8. */
 static int attr_string(hid_t obj, const char *name, const char *value)
 {
   hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR);
-  H5Tset_size(t, strlen(value) + 1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
   hid_t a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
-  int bad = a < 0 || H5Awrite(a, t, value) < 0;
+  int bad = a < 0 || H5Awrite(a, t, &value) < 0;
   if (a >= 0) H5Aclose(a);
   H5Sclose(sp);
   H5Tclose(t);
@@ -48,14 +54,31 @@ static const char *quantity_name(const opt_problem *p, int q)
   return q < OPT_N_FIGURES ? opt_figure_name(q) : p->vars[q - OPT_N_FIGURES].key;
 }
 
+/* The root attributes that make it a reelsim file (docs/output.md): program, version,
+ * created, scene_file. */
+static int write_root(hid_t file, const opt_problem *p)
+{
+  char created[32] = "";
+  time_t now = time(NULL);
+  struct tm utc;
+  if (gmtime_r(&now, &utc)) strftime(created, sizeof created, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  int bad = attr_string(file, "program", "reelsim");
+  bad = bad || attr_string(file, "version", RS_VERSION_STRING);
+  bad = bad || attr_string(file, "created", created);
+  bad = bad || attr_string(file, "scene_file", p->scene);
+  return bad ? -1 : 0;
+}
+
 static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
 {
   int bad = 0, K = p->n_vars, E = h->n;
+  if (write_root(file, p) != 0) return -1;
   hid_t g = H5Gcreate2(file, "/optimize", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (g < 0) return -1;
   /* the keys, as variable-length strings */
   hid_t vs = H5Tcopy(H5T_C_S1);
   H5Tset_size(vs, H5T_VARIABLE);
+  H5Tset_cset(vs, H5T_CSET_UTF8);
   const char **keys = malloc((size_t)(K ? K : 1) * sizeof *keys);
   double *lo = malloc((size_t)(K ? K : 1) * sizeof *lo), *hi = malloc((size_t)(K ? K : 1) * sizeof *hi);
   double *col = malloc((size_t)(E ? E : 1) * sizeof *col);

@@ -69,6 +69,7 @@ linear)
   done
   h5dump -a /optimize/objective best.h5 | grep -q '"winding.tension"' || fail "objective attribute"
   h5dump -a /optimize/constraints best.h5 | grep -q 'core_pressure <= 100000' || fail "constraints attribute"
+  h5dump -a program best.h5 | grep -q '"reelsim"' || fail "no root attribute program"
   ;;
 nonlinear)
   run "$bin" optimize "$news" --vary winding.tension.end=150:400 --vary nip.load=200:2000 \

@@ -204,6 +204,7 @@ static void history_file(void)
   d = H5Dopen2(file, "/optimize/parameters", H5P_DEFAULT);
   hid_t vs = H5Tcopy(H5T_C_S1);
   H5Tset_size(vs, H5T_VARIABLE);
+  H5Tset_cset(vs, H5T_CSET_UTF8);
   CHECK(H5Dread(d, vs, H5S_ALL, H5S_ALL, H5P_DEFAULT, keys) >= 0);
   CHECK(keys[0] && strcmp(keys[0], "winding.tension") == 0);
   CHECK(keys[1] && strcmp(keys[1], "nip.load") == 0);
@@ -213,16 +214,26 @@ static void history_file(void)
   H5Tclose(vs);
   H5Dclose(d);
   CHECK(H5Lexists(file, "/optimize/figures/misfit", H5P_DEFAULT) == 0); /* no target */
-  char sense[16] = "";
-  hid_t g = H5Gopen2(file, "/optimize", H5P_DEFAULT);
-  hid_t at = H5Aopen(g, "sense", H5P_DEFAULT);
-  hid_t ty = H5Aget_type(at);
-  CHECK(H5Tget_size(ty) <= sizeof sense);
-  CHECK(H5Aread(at, ty, sense) >= 0);
-  CHECK(strcmp(sense, "maximize") == 0);
-  H5Tclose(ty);
-  H5Aclose(at);
-  H5Gclose(g);
+  /* the settings and the root attributes: variable-length strings */
+  const char *attrs[][3] = {{"/optimize", "sense", "maximize"},
+                            {"/optimize", "objective", "peak_pressure"},
+                            {"/optimize", "constraints", "core_pressure <= 2000000"},
+                            {"/", "program", "reelsim"},
+                            {"/", "scene_file", "scene.yaml"}};
+  for (size_t i = 0; i < sizeof attrs / sizeof attrs[0]; ++i) {
+    hid_t at = H5Aopen_by_name(file, attrs[i][0], attrs[i][1], H5P_DEFAULT, H5P_DEFAULT);
+    CHECK(at >= 0);
+    hid_t ty = H5Tcopy(H5T_C_S1);
+    H5Tset_size(ty, H5T_VARIABLE);
+    H5Tset_cset(ty, H5T_CSET_UTF8);
+    char *text = NULL;
+    CHECK(H5Aread(at, ty, &text) >= 0);
+    fprintf(stderr, "  %s @%s = '%s'\n", attrs[i][0], attrs[i][1], text ? text : "(null)");
+    CHECK(text && strcmp(text, attrs[i][2]) == 0);
+    H5free_memory(text);
+    H5Tclose(ty);
+    H5Aclose(at);
+  }
   H5Fclose(file);
   /* a file that cannot be made: refused, nothing left */
   char *bad = scratch_join(dir, "no/such/dir/h.h5");
