@@ -79,9 +79,11 @@ void cli_args_free(cli_args *a)
   free(a->sets);
   free(a->vary);
   free(a->scenes);
+  free(a->subject_to);
   free(a->owned);
   a->sets = NULL;
   a->vary = NULL;
+  a->subject_to = NULL;
   a->scenes = NULL;
   a->owned = NULL;
 }
@@ -106,6 +108,17 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_JSON: a->json = 1; break;
   case CLI_OPT_RADIUS: a->radius = arg; break;
   case CLI_OPT_VARY: a->vary[a->n_vary++] = arg; break;
+  case CLI_OPT_MINIMIZE:
+  case CLI_OPT_MAXIMIZE: {
+    const char **slot = o->id == CLI_OPT_MINIMIZE ? &a->minimize : &a->maximize;
+    if (*slot)
+      return cli_fail(CLI_EXIT_USAGE, "%s: %s given twice ('%s' and '%s')", cmd, typed, *slot, arg);
+    *slot = arg;
+    break;
+  }
+  case CLI_OPT_SUBJECT_TO: a->subject_to[a->n_subject_to++] = arg; break;
+  case CLI_OPT_TARGET_PROFILE: a->target_profile = arg; break;
+  case CLI_OPT_HISTORY: a->history = arg; break;
   case CLI_OPT_SAMPLE: a->sample = arg; break;
   case CLI_OPT_PROFILES: a->profiles = 1; break;
   case CLI_OPT_THREADS: {
@@ -140,7 +153,8 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
   a->sets = calloc((size_t)argc + 1, sizeof *a->sets);
   a->scenes = calloc((size_t)argc + 1, sizeof *a->scenes);
   a->vary = calloc((size_t)argc + 1, sizeof *a->vary);
-  if (!a->sets || !a->scenes || !a->vary) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  a->subject_to = calloc((size_t)argc + 1, sizeof *a->subject_to);
+  if (!a->sets || !a->scenes || !a->vary || !a->subject_to) return cli_fail(CLI_EXIT_OTHER, "out of memory");
   tables t;
   build(&t);
   /* getopt sees the command's name as its argv[0] */

@@ -19,11 +19,16 @@ typedef struct cli_args {
   int jobs;             /* study --jobs N (default 1) */
   const char *radius;   /* nip --radius R, as given */
   int json;             /* nip --json */
-  int n_vary;           /* sweep --vary KEY=..., in order */
+  int n_vary;           /* sweep, optimize --vary KEY=..., in order */
   const char **vary;
   const char *sample;   /* sweep --sample grid|lhs:R, or NULL */
   int threads;          /* sweep --threads K (0: one per core) */
   int profiles;         /* sweep --profiles */
+  const char *minimize, *maximize; /* optimize --minimize / --maximize FIGURE */
+  int n_subject_to;     /* optimize --subject-to, in order */
+  const char **subject_to;
+  const char *target_profile; /* optimize --target-profile FILE.csv */
+  const char *history;  /* optimize --history FILE.h5 */
   int n_sets;           /* --set key.path=value, in order; run/check/compare -o adds
                            output.file=FILE last */
   const char **sets;

@@ -19,6 +19,9 @@ int cli_plot(const cli_args *a);
 int cli_study(const cli_args *a);
 /* reelsim nip SCENE --radius R [--json] [--set k=v]...: one contact nip (cmd_nip.c). */
 int cli_nip(const cli_args *a);
+/* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...
+ * (cmd_optimize.c). */
+int cli_optimize(const cli_args *a);
 /* reelsim sweep SCENE --vary KEY=... [--sample ...] [-o FILE] ... (cmd_sweep.c). */
 int cli_sweep(const cli_args *a);
 

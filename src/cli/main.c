@@ -13,7 +13,8 @@ static const struct {
   command_fn fn;
 } commands[] = {{"run", cli_run},     {"check", cli_check}, {"compare", cli_compare},
                 {"plot", cli_plot},   {"study", cli_study}, {"nip", cli_nip},
-                {"sweep", cli_sweep}};
+                {"sweep", cli_sweep},
+                {"optimize", cli_optimize}};
 
 static int unknown_command(const char *what, const char *cmd)
 {

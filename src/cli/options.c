@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-#define SCENE_CMDS (CLI_RUN | CLI_CHECK | CLI_COMPARE | CLI_STUDY | CLI_NIP | CLI_SWEEP)
+#define SCENE_CMDS (CLI_RUN | CLI_CHECK | CLI_COMPARE | CLI_STUDY | CLI_NIP | CLI_SWEEP | CLI_OPTIMIZE)
 
 const cli_option cli_options[] = {
     {CLI_OPT_OUTPUT, "output", 'o', "FILE", "a file name", CLI_RUN | CLI_CHECK,
@@ -35,6 +35,26 @@ const cli_option cli_options[] = {
     {CLI_OPT_PROFILES, "profiles", 0, NULL, NULL, CLI_SWEEP,
      "also write every run's final radius, sigma_r and\n"
      "sigma_theta profiles (/sweep/profiles/<i>)"},
+    {CLI_OPT_OUTPUT, "output", 'o', "FILE", "a file name", CLI_OPTIMIZE,
+     "write the best scene here, as YAML runnable as is\n"
+     "(default <scene>-best.yaml)"},
+    {CLI_OPT_VARY, "vary", 0, "KEY=LO:HI", "KEY=LO:HI", CLI_OPTIMIZE,
+     "search scene value KEY in [LO, HI] (repeatable), e.g.\n"
+     "--vary winding.tension=100:600"},
+    {CLI_OPT_MINIMIZE, "minimize", 0, "FIGURE", "a figure", CLI_OPTIMIZE,
+     "the figure to make least (docs/optimize.md: core_pressure,\n"
+     "peak_pressure, ..., misfit, or a varied key)"},
+    {CLI_OPT_MAXIMIZE, "maximize", 0, "FIGURE", "a figure", CLI_OPTIMIZE,
+     "the figure to make greatest (one of --minimize and\n"
+     "--maximize)"},
+    {CLI_OPT_SUBJECT_TO, "subject-to", 0, "FIGURE<=X", "FIGURE<=X or FIGURE>=X", CLI_OPTIMIZE,
+     "a constraint, FIGURE<=X or FIGURE>=X (repeatable), e.g.\n"
+     "--subject-to 'core_pressure<=2e6'"},
+    {CLI_OPT_TARGET_PROFILE, "target-profile", 0, "FILE.csv", "a CSV file", CLI_OPTIMIZE,
+     "radius (m), pressure (Pa) pairs: the figure misfit is the\n"
+     "RMS difference of the final pressure profile from them"},
+    {CLI_OPT_HISTORY, "history", 0, "FILE.h5", "a file name", CLI_OPTIMIZE,
+     "write every run here (default: the -o name with .h5)"},
     {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_RUN,
      "also write DIR/<scene>-profile.csv and\n"
      "DIR/<scene>-wot.csv "
@@ -68,7 +88,7 @@ const cli_option cli_options[] = {
      "complete = 0"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_RUN,
      "print nothing but errors (no summary, no progress bar)"},
-    {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY | CLI_SWEEP,
+    {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY | CLI_SWEEP | CLI_OPTIMIZE,
      "print nothing but errors"},
     {CLI_OPT_VERBOSE, "verbose", 'v', NULL, NULL, CLI_EVERY,
      "with an error, also show where in reelsim's code it was\n"
@@ -172,6 +192,27 @@ const cli_command cli_commands[] = {
      "exit status: 0 the sweep ran (failed runs are counted in its last line),\n"
      "             2 bad input (nothing wound), 130 interrupted, 143 terminated,\n"
      "             1 other\n"},
+    {"optimize", CLI_OPTIMIZE, "scene file", 0,
+     "reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE\n"
+     "                         [--subject-to 'FIGURE<=X' | 'FIGURE>=X' ...]\n"
+     "                         [--target-profile FILE.csv] [-o best.yaml] [--history FILE.h5]\n"
+     "                         [--set key.path=value ...] [--quiet]",
+     "the best recipe within ranges of scene values under\n"
+     "constraints on the figures (NLopt COBYLA); the best scene\n"
+     "as YAML, every run to HDF5",
+     "Searches the scene values given by --vary for the one that minimizes or maximizes a\n"
+     "figure of the wound reel (core_pressure, peak_pressure, min_sigma_theta,\n"
+     "final_radius, layers, buckling_layers, wall_seconds, status, misfit with\n"
+     "--target-profile, or a varied key itself) subject to --subject-to constraints: a\n"
+     "Latin hypercube of 4 K + 4 runs, then NLopt's COBYLA from the best feasible one (at\n"
+     "most 30 K + 30 more runs; docs/optimize.md). A run that fails or is refused counts as\n"
+     "infeasible. Prints every run and the best values and figures, writes the best scene\n"
+     "(resolved: --set and the values applied) to -o and every run to the history file\n"
+     "(/optimize, docs/output.md). Every argument is checked before anything is wound.\n",
+     "Ctrl-C or SIGTERM stops after the current run: nothing is written (130, 143).\n"
+     "exit status: 0 ok, 2 bad input (nothing wound), 1 no run met the constraints (the\n"
+     "             history file is written) or other errors, 130 interrupted,\n"
+     "             143 terminated\n"},
 };
 const int cli_n_commands = (int)(sizeof cli_commands / sizeof cli_commands[0]);
 

@@ -12,7 +12,8 @@ enum {
   CLI_STUDY = 1u << 4,
   CLI_NIP = 1u << 5,
   CLI_SWEEP = 1u << 6,
-  CLI_EVERY = (1u << 7) - 1
+  CLI_OPTIMIZE = 1u << 7,
+  CLI_EVERY = (1u << 8) - 1
 };
 
 typedef enum cli_opt {
@@ -31,6 +32,11 @@ typedef enum cli_opt {
   CLI_OPT_SAMPLE,
   CLI_OPT_THREADS,
   CLI_OPT_PROFILES,
+  CLI_OPT_MINIMIZE,
+  CLI_OPT_MAXIMIZE,
+  CLI_OPT_SUBJECT_TO,
+  CLI_OPT_TARGET_PROFILE,
+  CLI_OPT_HISTORY,
   CLI_N_OPTS
 } cli_opt;
 

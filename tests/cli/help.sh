@@ -21,7 +21,7 @@ if [ "$cmd" = general ]; then
   done
   run "$bin" help bogus
   [ "$got" -eq 2 ] || fail "help bogus: exit $got, expected 2"
-  has "help: unknown command 'bogus' \(commands: run, check, compare, plot, study, nip, sweep, help\)"
+  has "help: unknown command 'bogus' \(commands: run, check, compare, plot, study, nip, sweep, optimize, help\)"
   echo PASS; exit 0
 fi
 
