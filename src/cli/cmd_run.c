@@ -83,8 +83,14 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("active effects:\n");
   rs_scene_print_effects(scene, stdout);
   printf("result:\n");
+  rs_reel_sizes z;
+  rs_reel_sizes_of(res, rs_scene_problem(scene), &z);
   printf("  final radius       %.1f mm\n", s->final_radius * 1e3);
+  printf("  diameter           %.1f mm\n", z.diameter * 1e3);
   printf("  layers             %d\n", s->layers);
+  printf("  wound length       %.1f m (the layers' circumferences at mid-thickness)\n",
+         z.wound_length);
+  if (z.has_mass) printf("  roll mass          %.2f kg per metre of width\n", z.mass);
   cli_fmt_stress(a, sizeof a, s->core_pressure);
   printf("  core pressure      %s\n", a);
   cli_fmt_stress(a, sizeof a, s->peak_pressure);

@@ -9,16 +9,35 @@
 enum { RS_MAX_LAYERS = 10000000 };
 static const double pi = 3.14159265358979323846;
 
+/* The core's size is its radius or its diameter (engineers quote cores by diameter), one
+ * of the two. Returns the key given in *key. */
+static rs_status core_size(const yn *root, double *radius, const char **key)
+{
+  int has_r = ys_has(root, "core.radius"), has_d = ys_has(root, "core.diameter");
+  if (has_r && has_d)
+    return ys_fail(root, "core.diameter", "give either core.radius or core.diameter, not both");
+  if (!has_r && !has_d)
+    return ys_fail(root, "core.radius", "required: the core size as radius (m) or diameter (m)");
+  *key = has_r ? "core.radius" : "core.diameter";
+  double v = ys_num(root, *key);
+  if (!(v > 0.0)) return ys_fail(root, *key, "must be > 0 m (got %g)", v);
+  *radius = has_r ? v : 0.5 * v;
+  return RS_OK;
+}
+
 static rs_status resolve_core(const yn *root, rs_core *c)
 {
-  const double radius = ys_num(root, "core.radius"), rating = ys_num(root, "core.rating"),
+  const double rating = ys_num(root, "core.rating"),
                stiffness = ys_num(root, "core.stiffness"), bore = ys_num(root, "core.bore"),
                modulus = ys_num(root, "core.modulus"), poisson = ys_num(root, "core.poisson");
   int elastic = ys_has(root, "core.stiffness");
   int tube = ys_has(root, "core.bore") || ys_has(root, "core.modulus") ||
              ys_has(root, "core.poisson");
+  double radius = 0.0;
+  const char *size_key = NULL; /* which of radius and diameter */
   memset(c, 0, sizeof *c);
-  if (!(radius > 0.0)) return ys_fail(root, "core.radius", "must be > 0 m (got %g)", radius);
+  rs_status st = core_size(root, &radius, &size_key);
+  if (st != RS_OK) return st;
   c->radius = radius;
   if (ys_has(root, "core.rating")) {
     if (!(rating > 0.0))
@@ -60,29 +79,43 @@ static rs_status resolve_core(const yn *root, rs_core *c)
 }
 
 /* Final radius and layer count. Web length L on a core of radius r_c, caliper t:
- * the wound cross-section pi (r^2 - r_c^2) equals L t, so r = sqrt(r_c^2 + L t / pi). */
+ * the wound cross-section pi (r^2 - r_c^2) equals L t, so r = sqrt(r_c^2 + L t / pi).
+ * The size is one of final_radius, final_diameter (d = 2 r) and web_length. */
 static rs_status resolve_winding(const yn *root, rs_scene *s)
 {
-  const double final_radius = ys_num(root, "winding.final_radius"),
-               web_length = ys_num(root, "winding.web_length"),
+  const double web_length = ys_num(root, "winding.web_length"),
                accel_torque = ys_num(root, "winding.accel_torque");
-  int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length");
+  int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length"),
+      has_d = ys_has(root, "winding.final_diameter");
   double rc = s->problem.core.radius, t = s->problem.material.caliper;
+  if (has_r && has_d)
+    return ys_fail(root, "winding.final_diameter",
+                   "give either winding.final_radius or winding.final_diameter, not both");
   if (has_r && has_L)
     return ys_fail(root, "winding.web_length",
                    "give either final_radius or web_length, not both");
-  if (!has_r && !has_L)
+  if (has_d && has_L)
+    return ys_fail(root, "winding.web_length",
+                   "give either final_diameter or web_length, not both");
+  if (!has_r && !has_L && !has_d)
     return ys_fail(root, "winding.final_radius",
-                   "required: the roll size as final_radius (m) or web_length (m)");
-  const char *key = has_r ? "winding.final_radius" : "winding.web_length";
+                   "required: the roll size as final_radius (m), final_diameter (m) or "
+                   "web_length (m)");
+  const char *key = has_r ? "winding.final_radius"
+                          : has_d ? "winding.final_diameter" : "winding.web_length";
+  const double final_radius = has_d ? 0.5 * ys_num(root, key) : ys_num(root, "winding.final_radius");
   if (has_L) {
     if (!(web_length > 0.0))
       return ys_fail(root, key, "must be > 0 m (got %g)", web_length);
     s->web_length = web_length;
     s->problem.final_radius = sqrt(rc * rc + web_length * t / pi);
   } else {
-    if (!(final_radius > rc))
+    if (!(final_radius > rc)) {
+      if (has_d)
+        return ys_fail(root, key, "must be > the core diameter %g m (got %g)", 2.0 * rc,
+                       2.0 * final_radius);
       return ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, final_radius);
+    }
     s->web_length = 0.0;
     s->problem.final_radius = final_radius;
   }

@@ -19,7 +19,7 @@
 #include "util/atomic_file.h"
 #include "reelsim/output.h"
 #include "scene/scene_type.h" /* make_scene fills one by hand */
-#include "reelsim_version.h"
+#include "reelsim/version.h"
 
 static const char *yaml_text = "title: round trip\n"
                                "material: {model: linear, E_r: 1.0e6}\n"

@@ -1,0 +1,22 @@
+# A new user's habits (issue 19): sizes as diameters, the summary's sizes, a model with
+# changes, --set KEY=null.
+rs_cli_script(summary_sizes summary_lines.sh
+              [[^  final radius +318\.0 mm$]]
+              [[^  diameter +636\.0 mm$]]
+              [[^  wound length +3000\.2 m \(the layers' circumferences at mid-thickness\)$]]
+              [[^  roll mass +417\.03 kg per metre of width$]]
+              -- run ${CASES}/pet-topweb.yaml -o summary-sizes.h5)
+rs_cli_test(core_radius_and_diameter 2
+            [[--set core\.diameter=0\.2: give either core\.radius or core\.diameter, not both]]
+            check ${CASES}/newsprint-rider.yaml --set core.diameter=0.2)
+rs_cli_test(final_radius_and_diameter 2
+            [[--set winding\.final_diameter=1: give either winding\.final_radius or winding\.final_diameter, not both]]
+            check ${CASES}/newsprint-rider.yaml --set winding.final_diameter=1)
+rs_cli_test(set_null_switches_size 0 [[roll: 76\.2 -> 342\.367 mm, 3802 layers \(web length 5000 m\)]]
+            check ${CASES}/newsprint-rider.yaml --set winding.final_radius=null
+            --set winding.web_length=5000)
+rs_cli_test(model_with_changes 0
+            [[material: pet-film from .*models/pet-film\.yaml \(caliper 50 um, E_theta = 4\.5e9 Pa]]
+            check ${SC}/pet-50um.yaml)
+rs_cli_test(model_with_changes_diameter 0 [[roll: 76\.2 -> 100 mm, 476 layers]]
+            check ${SC}/pet-50um.yaml)
