@@ -20,6 +20,8 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/summary_json.h"
+#include "reelsim/version.h"
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "cli/outdir.h"
@@ -109,6 +111,34 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
+}
+
+/* run --json: the summary as one JSON object (docs/cli.md, "JSON"). */
+static void print_json(const rs_scene *scene, const rs_reel_result *res,
+                       const rs_defect_report *defects, const char *csv_dir, double wall)
+{
+  cli_json j;
+  cli_json_init(&j, stdout);
+  cli_json_object(&j, NULL);
+  cli_json_string(&j, "reelsim", RS_VERSION_STRING);
+  cli_json_string(&j, "command", "run");
+  cli_json_run_fields(&j, scene, res, defects);
+  cli_json_number(&j, "wall_seconds", wall);
+  cli_json_string(&j, "output", rs_scene_output_file(scene));
+  if (csv_dir) {
+    char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
+    static const char *const kinds[] = {"profile", "wot"};
+    rs_scene_name(scene, stem, sizeof stem);
+    cli_json_array(&j, "csv");
+    for (int k = 0; k < 2; ++k)
+      if (rs_output_csv_path(csv_dir, stem, kinds[k], path, sizeof path) == RS_OK)
+        cli_json_string(&j, NULL, path);
+    cli_json_end(&j);
+  } else {
+    cli_json_null(&j, "csv");
+  }
+  cli_json_end(&j);
+  fflush(stdout);
 }
 
 /* Writes the finished part of a run that stopped early (--keep-partial). Returns 1 when a
@@ -212,7 +242,8 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, rs_clock_wall() - t0);
+  if (a->json) print_json(scene, res, defects, a->csv_dir, rs_clock_wall() - t0);
+  else if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, rs_clock_wall() - t0);
 
 done:
   rs_defect_report_destroy(&defects);

@@ -41,6 +41,12 @@ const cli_option cli_options[] = {
      "measurement)"},
     {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_NIP,
      "print the solution as one JSON object (with the profiles)"},
+    {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_RUN,
+     "print the summary as one JSON object on stdout instead of\n"
+     "the text (fields: docs/cli.md, \"JSON\")"},
+    {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_COMPARE,
+     "print the runs' summaries as one JSON object on stdout\n"
+     "instead of the table (fields: docs/cli.md, \"JSON\")"},
     {CLI_OPT_KEEP_PARTIAL, "keep-partial", 0, NULL, NULL, CLI_RUN,
      "when the solver fails or the run is interrupted, still\n"
      "write the layers finished to the output file, marked\n"
@@ -59,7 +65,7 @@ const int cli_n_options = (int)(sizeof cli_options / sizeof cli_options[0]);
 const cli_command cli_commands[] = {
     {"run", CLI_RUN, "scene file", 0,
      "reelsim run SCENE [-o FILE] [--csv DIR] [--set key.path=value ...] [--quiet]\n"
-     "                         [--keep-partial]",
+     "                         [--json] [--keep-partial]",
      "wind the reel a scene file describes, write the result\n"
      "(HDF5) and print a summary",
      "Winds the reel SCENE describes layer by layer, writes the result to an HDF5 file\n"
@@ -78,7 +84,8 @@ const cli_command cli_commands[] = {
      "overrides applied), exactly what `run` would record in its output file.\n",
      "exit status: 0 the scene is good, 2 bad input\n"},
     {"compare", CLI_COMPARE, "scene file", 1,
-     "reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]",
+     "reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]\n"
+     "                         [--json]",
      "wind several scenes in parallel, print their key figures\n"
      "side by side and write them all to one HDF5 file (compare.h5)",
      "Loads and checks every scene first (bad input in any: exit 2, nothing wound), winds\n"

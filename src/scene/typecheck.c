@@ -71,6 +71,31 @@ static rs_status check_enum(const yn *node, const ys_value *s)
   return yn_error(node, "unknown value '%s' (expected one of: %s)", node->text, list);
 }
 
+/* 1 when s is well-formed UTF-8 (no overlong forms, surrogates or code points beyond
+ * U+10FFFF): a file's YAML is, but a --set value is whatever bytes the shell passed, and
+ * the resolved scene (YAML) and the summaries (JSON) must hold it. */
+static int is_utf8(const unsigned char *s)
+{
+  while (*s) {
+    int n;
+    unsigned lo = 0x80, hi = 0xBF;
+    if (s[0] < 0x80) n = 1;
+    else if (s[0] >= 0xC2 && s[0] <= 0xDF) n = 2;
+    else if (s[0] >= 0xE0 && s[0] <= 0xEF) n = 3;
+    else if (s[0] >= 0xF0 && s[0] <= 0xF4) n = 4;
+    else return 0;
+    if (s[0] == 0xE0) lo = 0xA0;
+    if (s[0] == 0xED) hi = 0x9F;
+    if (s[0] == 0xF0) lo = 0x90;
+    if (s[0] == 0xF4) hi = 0x8F;
+    if (n > 1 && (s[1] < lo || s[1] > hi)) return 0;
+    for (int i = 2; i < n; ++i)
+      if (s[i] < 0x80 || s[i] > 0xBF) return 0;
+    s += n;
+  }
+  return 1;
+}
+
 static rs_status check_value(const yn *node, const ys_value *s);
 
 static rs_status check_mapping(const yn *node, const ys_value *s)
@@ -136,6 +161,7 @@ static rs_status check_value(const yn *node, const ys_value *s)
     if (node->text[0] == '\0' && s->min > 0) return yn_error(node, "must not be empty");
     if (yn_is_empty(node) && s->min > 0) return yn_error(node, "missing value");
     if (len > s->max) return yn_error(node, "too long (at most %u characters)", s->max);
+    if (!is_utf8((const unsigned char *)node->text)) return yn_error(node, "not UTF-8 text");
     return RS_OK;
   }
   case YS_MAP:

@@ -20,3 +20,14 @@ rs_cli_test(model_with_changes 0
             check ${SC}/pet-50um.yaml)
 rs_cli_test(model_with_changes_diameter 0 [[roll: 76\.2 -> 100 mm, 476 layers]]
             check ${SC}/pet-50um.yaml)
+# run --json and compare --json, parsed by Python (docs/cli.md, "JSON").
+rs_cli_script(json_summary json_summary.sh ${SC}/small.yaml ${CASES}/pet-topweb.yaml)
+# A --set value that is not UTF-8 (the shell passes any bytes): bad input, not an
+# internal error of the YAML writer.
+rs_cli_script(set_not_utf8 not_utf8.sh ${SC}/small.yaml)
+# compare prints each run's defect verdicts under its table.
+rs_cli_script(compare_verdicts summary_lines.sh
+              [[^defect risk +hoop stress +hoop buckling +pressure +slip +core$]]
+              [[^1-small +ok +ok +not assessed +not assessed +not assessed$]]
+              [[^2-pet-topweb +present +ok +not assessed +not assessed +not assessed$]]
+              -- compare ${SC}/small.yaml ${CASES}/pet-topweb.yaml -o compare-verdicts.h5)
