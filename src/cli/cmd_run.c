@@ -9,9 +9,9 @@
  * --keep-partial: when the solver fails or the run is stopped, the layers finished are
  * still written (attribute complete = 0); by default nothing is.
  *
- * The same callback draws a progress bar on stderr once a run has taken a second, at
- * most ten times a second, and only when stderr is a terminal and --quiet is off: logs
- * and test output never see it. */
+ * The same callback draws a progress line on stderr (progress.c: layers, radius, time
+ * left) once a run has taken a second, at most ten times a second, and only when stderr
+ * is a terminal and --quiet is off: logs, pipes and test output never see it. */
 
 #include <math.h>
 #include <signal.h>
@@ -25,54 +25,15 @@
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "cli/outdir.h"
+#include "cli/progress.h"
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 
-typedef struct progress {
-  int done, total;
-  int bar;               /* draw a bar: stderr is a terminal and not --quiet */
-  int drawn;             /* a bar is on the screen */
-  double t_start, t_last;
-} progress;
-
-static void progress_draw(progress *p, double now)
-{
-  enum { WIDTH = 30 };
-  char cells[WIDTH + 1];
-  double frac = p->total > 0 ? (double)p->done / p->total : 1.0;
-  int full = (int)(frac * WIDTH);
-  for (int i = 0; i < WIDTH; ++i) cells[i] = i < full ? '#' : '.';
-  cells[WIDTH] = '\0';
-  double elapsed = now - p->t_start;
-  double left = p->done > 0 ? elapsed * (p->total - p->done) / p->done : 0.0;
-  fprintf(stderr, "\rreelsim: [%s] %3d%%  layer %d of %d  %.0f s, about %.0f s left ", cells,
-          (int)(100.0 * frac), p->done, p->total, elapsed, left);
-  fflush(stderr);
-  p->drawn = 1;
-}
-
-/* Wipes the bar so messages and the summary start on a clean line. */
-static void progress_clear(progress *p)
-{
-  if (!p->drawn) return;
-  fputs("\r\033[K", stderr);
-  fflush(stderr);
-  p->drawn = 0;
-}
-
 static int on_progress(void *user, int layers_done, int layers_total)
 {
-  progress *p = user;
-  p->done = layers_done;
-  p->total = layers_total;
-  if (p->bar) {
-    double now = rs_clock_wall();
-    if (now - p->t_start >= 1.0 && now - p->t_last >= 0.1) {
-      progress_draw(p, now);
-      p->t_last = now;
-    }
-  }
+  (void)layers_total;
+  cli_progress_update(user, layers_done, rs_clock_wall());
   return cli_signal_caught() != 0;
 }
 
@@ -180,12 +141,13 @@ int cli_run(const cli_args *a)
     goto done;
   }
 
-  progress prog = {.total = rs_scene_problem(scene)->n_layers,
-                   .bar = !a->quiet && isatty(STDERR_FILENO),
-                   .t_start = t0};
+  const rs_problem *pb = rs_scene_problem(scene);
+  cli_progress prog;
+  cli_progress_init(&prog, !a->quiet && isatty(STDERR_FILENO), pb->n_layers, pb->core.radius,
+                    pb->material.caliper, rs_clock_wall());
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
   st = rs_scene_wind(scene, &opts, &res);
-  progress_clear(&prog);
+  cli_progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
     const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";

@@ -52,7 +52,7 @@ const cli_option cli_options[] = {
      "write the layers finished to the output file, marked\n"
      "complete = 0"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_RUN,
-     "print nothing but errors (no summary, no progress bar)"},
+     "print nothing but errors (no summary, no progress line)"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY,
      "print nothing but errors"},
     {CLI_OPT_VERBOSE, "verbose", 'v', NULL, NULL, CLI_EVERY,
