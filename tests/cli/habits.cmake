@@ -31,3 +31,5 @@ rs_cli_script(compare_verdicts summary_lines.sh
               [[^1-small +ok +ok +not assessed +not assessed +not assessed$]]
               [[^2-pet-topweb +present +ok +not assessed +not assessed +not assessed$]]
               -- compare ${SC}/small.yaml ${CASES}/pet-topweb.yaml -o compare-verdicts.h5)
+# Every error of a scene at once, one line each (docs/scenes.md, "Errors").
+rs_cli_script(all_errors all_errors.sh ${SC}/many-errors.yaml)

@@ -167,7 +167,122 @@ static void set_null_removes(void)
   refused(radius_scene, 1, req, "winding.tension: required key is missing", NULL);
 }
 
+/* the message's lines */
+static int count_lines(const char *m)
+{
+  int n = *m ? 1 : 0;
+  for (; *m; ++m) n += *m == '\n';
+  return n;
+}
+
+/* Every error of a scene in one message, one a line, in the order of the file; range
+ * errors of independent parts together; the first 20 and a count of the rest. */
+static void every_error_at_once(void)
+{
+  const char *types = "material:\n  caliper: abc\n  E_theta: 1e9\n  radial: {law: linear, E_r: 1e7}\n"
+                      "core: {radius: 0.05, radus: 3}\n"
+                      "winding: {final_radius: 0.3, tension: 100}\n"
+                      "nip: {model: frictio}\n";
+  const char *sets[] = {"numerics.rtoll=1"};
+  rs_scene *s = NULL;
+  CHECK(rs_scene_load_text(NAME, types, strlen(types), 1, sets, &s) == RS_ERR_INPUT);
+  const char *m = rs_error_message();
+  printf("%s\n", m);
+  CHECK(count_lines(m) == 4);
+  const char *want[] = {"--set numerics.rtoll=1: unknown key 'rtoll' in numerics",
+                        "habits.yaml:2: material.caliper: not a number (got 'abc')",
+                        "habits.yaml:5: core.radus: unknown key 'radus'",
+                        "habits.yaml:7: nip.model: unknown value 'frictio'"};
+  const char *at = m;
+  for (int i = 0; i < 4; ++i) { /* each there, in this order */
+    const char *p = strstr(at, want[i]);
+    CHECK(p != NULL);
+    if (p) at = p;
+  }
+
+  /* range errors: material, core and numerics together; the roll size, which needs the
+   * core, is not checked (its error would only repeat the core's) */
+  const char *ranges = "material: {caliper: -1, E_theta: 1e9, radial: {law: linear, E_r: 1e7}}\n"
+                       "core: {radius: -0.05}\n"
+                       "winding: {final_radius: 0.01, tension: 100}\n"
+                       "numerics: {layers_per_step: 0}\n";
+  CHECK(rs_scene_load_text(NAME, ranges, strlen(ranges), 0, NULL, &s) == RS_ERR_INPUT);
+  m = rs_error_message();
+  printf("%s\n", m);
+  CHECK(count_lines(m) == 3);
+  CHECK(strstr(m, "habits.yaml:1: material.caliper: must be > 0 m (got -1)\n") == m + strlen(NAME) - strlen("habits.yaml"));
+  CHECK(strstr(m, "habits.yaml:2: core.radius: must be > 0 m (got -0.05)") != NULL);
+  CHECK(strstr(m, "habits.yaml:4: numerics.layers_per_step: must be >= 1 (got 0)") != NULL);
+  CHECK(strstr(m, "final_radius") == NULL);
+
+  /* 25 unknown keys: the first 20 and how many more */
+  char many[4096];
+  size_t len = (size_t)snprintf(many, sizeof many, "%s", radius_scene);
+  len += (size_t)snprintf(many + len, sizeof many - len, "numerics:\n");
+  for (int i = 0; i < 25; ++i)
+    len += (size_t)snprintf(many + len, sizeof many - len, "  bad%02d: 1\n", i);
+  CHECK(rs_scene_load_text(NAME, many, len, 0, NULL, &s) == RS_ERR_INPUT);
+  m = rs_error_message();
+  CHECK(count_lines(m) == 21);
+  CHECK(strstr(m, "bad19") != NULL && strstr(m, "bad20") == NULL);
+  CHECK(strstr(m, "\n(5 more errors not shown; 25 in all)") != NULL);
+  CHECK(s == NULL);
+
+  /* one error: the message is that error's alone, as before */
+  refused("material: newsprint\ncore: {radius: 0.0762}\nwinding: {final_radius: 0.3}\n", 0, NULL,
+          "habits.yaml:3: winding.tension: required key is missing", NULL);
+  CHECK(count_lines(rs_error_message()) == 1);
+}
+
+#define DRUM_SCENE(tension)                                                                   \
+  "material: newsprint\n"                                                                  \
+  "core: {radius: 0.0762}\n"                                                               \
+  "winding: {final_radius: 0.088, tension: " tension "}\n"                                 \
+  "nip: {model: contact, winder: surface, load: 1750,\n"                                   \
+  "      friction: {roll: 0.19, drum: 0.35},\n"                                            \
+  "      drum: {radius: 0.3, core_radius: 0.28, E: 2.1e11, nu: 0.3}}\n"
+static const char *drum_scene = DRUM_SCENE("350");
+
+/* A surface winder's drum carries Ti by friction alone: mu_drum P = 0.35 x 1750 = 612.5 N/m
+ * must exceed it all along the roll. A tension table rising 350 -> 800 N/m over
+ * [0.0762, 0.088] m reaches 612.5 N/m at r* = 0.0762 + 0.0118 x 262.5/450 = 0.08306 m: the
+ * layer going on at R = r_c + j t carries Ti(R + t), first too much for j + 1 =
+ * ceil((r* - r_c)/t) = ceil(98.33) = 99: layer 99 of 169, at R = r_c + 98 t = 0.08306 m. */
+static void drum_capacity_checked(void)
+{
+  rs_scene *s = load_text(drum_scene, 0, NULL);
+  rs_scene_destroy(&s);
+  refused(DRUM_SCENE("{table: [[0.0762, 350], [0.088, 800]]}"), 0, NULL,
+          "habits.yaml:5: nip.friction.drum: the drum cannot carry the web by friction from "
+          "roll radius r = 0.08306 m (layer 99 of 169) on: nip.friction.drum x nip.load = "
+          "0.35 x 1750 = 612.5 N/m is not above winding.tension = 614.28 N/m, all of which the "
+          "drum carries on a surface winder; raise nip.load or nip.friction.drum, or lower "
+          "winding.tension",
+          NULL);
+  /* a constant tension above the capacity: refused at the first layer */
+  const char *high[] = {"winding.tension=700"};
+  refused(drum_scene, 1, high, "from roll radius r = 0.0762 m (layer 1 of 169)", "surface winder");
+  /* the same reel on a center winder (the drum carries nothing), a center-surface winder
+   * whose drum carries half (400 < 612.5 N/m), or with the friction nip: accepted */
+  const char *ok[][2] = {{"nip.winder=center", "winding.tension=800"},
+                         {"nip.winder=center-surface", "winding.tension=800"},
+                         {"nip.model=friction", "winding.tension=800"}};
+  for (int i = 0; i < 3; ++i) {
+    s = load_text(drum_scene, 2, ok[i]);
+    rs_scene_destroy(&s);
+  }
+  /* center-surface with a share of 0.2 carries 0.8 x 800 = 640 > 612.5: refused */
+  const char *share[] = {"nip.winder=center-surface", "nip.torque_share=0.2", "winding.tension=800"};
+  refused(drum_scene, 3, share,
+          "(layer 1 of 169) on: nip.friction.drum x nip.load = 0.35 x 1750 = 612.5 N/m is not "
+          "above (1 - nip.torque_share) x winding.tension = (1 - 0.2) x 800 = 640 N/m, what the "
+          "drum carries on a center-surface winder",
+          NULL);
+}
+
 static const check_case cases[] = {
+    {"drum_capacity_checked", drum_capacity_checked},
+    {"every_error_at_once", every_error_at_once},
     {"diameter_keys", diameter_keys},
     {"sizes_closed_form", sizes_closed_form},
     {"model_with_changes", model_with_changes},
