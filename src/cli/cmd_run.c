@@ -68,7 +68,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
     rs_scene_name(scene, stem, sizeof stem);
-    if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
+    if (rs_output_csv_path(csv_dir, stem, res->n_stages > 0 ? "{profile,wot,history}" : "{profile,wot}", path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
@@ -88,10 +88,10 @@ static void print_json(const rs_scene *scene, const rs_reel_result *res,
   cli_json_string(&j, "output", rs_scene_output_file(scene));
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
-    static const char *const kinds[] = {"profile", "wot"};
+    static const char *const kinds[] = {"profile", "wot", "history"};
     rs_scene_name(scene, stem, sizeof stem);
     cli_json_array(&j, "csv");
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < (res->n_stages > 0 ? 3 : 2); ++k)
       if (rs_output_csv_path(csv_dir, stem, kinds[k], path, sizeof path) == RS_OK)
         cli_json_string(&j, NULL, path);
     cli_json_end(&j);

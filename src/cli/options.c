@@ -19,8 +19,9 @@ const cli_option cli_options[] = {
      "the runs are done, as mkdir -p does)"},
     {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_RUN,
      "also write DIR/<scene>-profile.csv and\n"
-     "DIR/<scene>-wot.csv "
-     "(DIR must exist)"},
+     "DIR/<scene>-wot.csv, and DIR/<scene>-history.csv when the\n"
+     "scene records a history (DIR made if missing, as mkdir -p\n"
+     "does)"},
     {CLI_OPT_RADIUS, "radius", 0, "R", "a roll radius in metres", CLI_NIP,
      "the roll radius (m) at which to solve the nip (required)"},
     {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", SCENE_CMDS & ~CLI_COMPARE & ~CLI_STUDY,
@@ -97,12 +98,13 @@ const cli_command cli_commands[] = {
      "exit status: 0 ok, 2 bad input in any scene, 3 a run's solver failed,\n"
      "             130 interrupted, 143 terminated, 1 other\n"},
     {"plot", CLI_PLOT, "file", 0, "reelsim plot FILE.h5 [-o DIR] [--quiet]",
-     "PNG plots of a run or compare file (needs gnuplot)",
+     "PNG plots of a run, compare or study file (needs gnuplot)",
      "Draws PNG plots of a reelsim file with gnuplot into DIR (default: the current\n"
      "directory), named <file name>-<plot>.png: interlayer pressure and hoop stress\n"
      "against radius (with history stages and defect ranges when the file has them),\n"
      "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
-     "file has /nip/profiles; for a compare file the runs overlaid, one plot each.\n",
+     "file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
+     "study file (study.h5) the study's picture, <file name>-study.png.\n",
      "exit status: 0 ok, 2 FILE is not a reelsim file or DIR (or a parent of it) is\n"
      "             not a directory, 1 gnuplot missing or failed, other errors\n"},
     {"study", CLI_STUDY, "scene file", 0,

@@ -33,3 +33,7 @@ rs_cli_script(compare_verdicts summary_lines.sh
               -- compare ${SC}/small.yaml ${CASES}/pet-topweb.yaml -o compare-verdicts.h5)
 # Every error of a scene at once, one line each (docs/scenes.md, "Errors").
 rs_cli_script(all_errors all_errors.sh ${SC}/many-errors.yaml)
+# run --csv exports the history stages; plot draws a study file.
+rs_cli_script(history_csv history_csv.sh ${SC}/small.yaml)
+rs_cli_script(plot_study plot_study.sh ${SC}/small.yaml)
+set_tests_properties(cli.plot_study PROPERTIES SKIP_RETURN_CODE 77)
