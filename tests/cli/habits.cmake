@@ -37,3 +37,5 @@ rs_cli_script(all_errors all_errors.sh ${SC}/many-errors.yaml)
 rs_cli_script(history_csv history_csv.sh ${SC}/small.yaml)
 rs_cli_script(plot_study plot_study.sh ${SC}/small.yaml)
 set_tests_properties(cli.plot_study PROPERTIES SKIP_RETURN_CODE 77)
+# bash completion, generated from the option table at build time and installed
+rs_cli_script(completion completion.sh ${PROJECT_BINARY_DIR}/reelsim.bash)
