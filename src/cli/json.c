@@ -76,7 +76,7 @@ static void lead(cli_json *j, const char *key)
   }
 }
 
-static void open(cli_json *j, const char *key, char c)
+static void open_value(cli_json *j, const char *key, char c)
 {
   lead(j, key);
   fputc(c, j->out);
@@ -87,8 +87,8 @@ static void open(cli_json *j, const char *key, char c)
   }
 }
 
-void cli_json_object(cli_json *j, const char *key) { open(j, key, '{'); }
-void cli_json_array(cli_json *j, const char *key) { open(j, key, '['); }
+void cli_json_object(cli_json *j, const char *key) { open_value(j, key, '{'); }
+void cli_json_array(cli_json *j, const char *key) { open_value(j, key, '['); }
 
 void cli_json_end(cli_json *j)
 {
