@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-enum { RS_MSG_LEN = 2048, RS_WHERE_LEN = 256 };
+enum { RS_MSG_LEN = 8192, RS_WHERE_LEN = 256 }; /* room for a scene's errors, one a line */
 
 static _Thread_local rs_status rs_err_status = RS_OK;
 static _Thread_local char rs_err_msg[RS_MSG_LEN];

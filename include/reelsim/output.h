@@ -23,8 +23,10 @@ rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
 /* CSV export (docs/output.md): writes DIR/<name>-profile.csv (layer, radius_m, sigma_r_Pa,
  * sigma_theta_Pa, pressure_Pa, wound_on_tension_N_per_m) and DIR/<name>-wot.csv (radius_m,
  * web_tension_N_per_m, nip_load_N_per_m, wound_on_tension_N_per_m): a header line, one row
- * per layer, %.17g. Each file goes to a temporary that is renamed into place only when
- * both are complete. DIR must be an existing, writable directory (RS_ERR_INPUT). */
+ * per layer, %.17g; and when the result has history stages, DIR/<name>-history.csv (stage,
+ * layers_wound, roll_radius_m, layer, radius_m, sigma_r_Pa, sigma_theta_Pa: one row per
+ * wound layer per stage). Each file goes to a temporary that is renamed into place only
+ * when all are complete. DIR must be an existing, writable directory (RS_ERR_INPUT). */
 rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_result *res);
 /* The check rs_output_write_csv starts with, for callers that want it before winding. */
 rs_status rs_output_check_csv_dir(const char *dir);

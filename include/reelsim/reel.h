@@ -85,6 +85,19 @@ void rs_reel_summarize(const rs_reel_result *res, rs_reel_summary *sum);
  * that is not ("peak pressure"): a figure a user reads must be a number. */
 int rs_reel_summary_finite(const rs_reel_summary *sum, const char **what);
 
+/* The roll's size as engineers quote it. The wound length is the web actually wound: the
+ * sum over the layers of the circumference at each layer's mid-thickness, 2 pi (r_in +
+ * r_out) / 2 (for layers one caliper thick it equals pi (r_1^2 - r_c^2) / t). The mass per
+ * metre of web width is rho t L, known only when the material's density is. */
+typedef struct rs_reel_sizes {
+  double diameter;     /* m, twice the outer radius of the last layer */
+  double wound_length; /* m */
+  int has_mass;        /* 1 when material.density is given */
+  double mass;         /* kg per metre of width (0 when has_mass is 0) */
+} rs_reel_sizes;
+
+void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_reel_sizes *out);
+
 /* Several reels wound at once (reelsim compare). A job is one rs_reel_wind: the problem
  * and options go in; the result (the caller's, as rs_reel_wind's *out), the status and a
  * copy of the job's error record come out. */

@@ -25,6 +25,9 @@ int cli_optimize(const cli_args *a);
 /* reelsim sweep SCENE --vary KEY=... [--sample ...] [-o FILE] ... (cmd_sweep.c). */
 int cli_sweep(const cli_args *a);
 
+/* complete.c: `reelsim --bash-completion`, the bash completion script from the tables. */
+int cli_bash_completion(FILE *out);
+
 /* summary_defects.c: Pa as "12.34 kPa" below 1 MPa, else "1.234 MPa"; the defect-risk
  * lines of the run summary. */
 void cli_fmt_stress(char *buf, size_t size, double pa);

@@ -15,6 +15,8 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/summary_json.h"
+#include "reelsim/version.h"
 #include "reelsim/clock.h"
 #include "cli/signals.h"
 #include "reelsim/output.h"
@@ -37,6 +39,7 @@ typedef struct compare_state {
   rs_scene **scenes;
   rs_reel_job *jobs;
   rs_reel_summary *sums;
+  rs_defect_report **defects; /* each successful run's verdicts */
   char (*names)[256];
   const char *output;
 } compare_state;
@@ -79,7 +82,68 @@ static void print_table(const compare_state *c, double wall, int threads)
            s->peak_pressure_radius * 1e3, s->min_hoop / 1e3, s->min_hoop_radius * 1e3, wot,
            job->wall_seconds);
   }
+  /* each run's defect verdicts (rules: docs/defects.md), the rules the run summary lists */
+  printf("\n%-24s %-13s %-13s %-13s %-13s %s\n", "defect risk", "hoop stress",
+         "hoop buckling", "pressure", "slip", "core");
+  for (int i = 0; i < c->n; ++i) {
+    const rs_defect_report *d = c->defects[i];
+    if (!d) {
+      printf("%-24s -\n", c->names[i]);
+      continue;
+    }
+    printf("%-24s %-13s %-13s %-13s %-13s %s\n", c->names[i],
+           rs_defect_verdict_name(d->hoop.verdict), rs_defect_verdict_name(d->buckling.verdict),
+           rs_defect_verdict_name(d->pressure.verdict), rs_defect_verdict_name(d->slip.verdict),
+           rs_defect_verdict_name(d->core.verdict));
+  }
   printf("\nwall time %.2f s in all\n", wall);
+}
+
+/* compare --json: one object with every run (docs/cli.md, "JSON"); output is NULL when
+ * no file was written. */
+static void print_json(const compare_state *c, double wall, int threads, const char *output)
+{
+  cli_json j;
+  cli_json_init(&j, stdout);
+  cli_json_object(&j, NULL);
+  cli_json_string(&j, "reelsim", RS_VERSION_STRING);
+  cli_json_string(&j, "command", "compare");
+  cli_json_int(&j, "threads", threads);
+  cli_json_number(&j, "wall_seconds", wall);
+  cli_json_string(&j, "output", output);
+  cli_json_array(&j, "runs");
+  for (int i = 0; i < c->n; ++i) {
+    const rs_reel_job *job = &c->jobs[i];
+    cli_json_object(&j, NULL);
+    cli_json_string(&j, "name", c->names[i]);
+    cli_json_string(&j, "status", job->status == RS_OK ? "ok" : rs_status_name(job->status));
+    if (job->status == RS_OK) {
+      cli_json_null(&j, "error");
+      cli_json_run_fields(&j, c->scenes[i], job->result, c->defects[i]);
+    } else {
+      cli_json_string(&j, "error", job->message);
+      cli_json_string(&j, "scene", rs_scene_path(c->scenes[i]));
+      cli_json_string(&j, "title", rs_scene_title(c->scenes[i]));
+    }
+    cli_json_number(&j, "wall_seconds", job->wall_seconds);
+    cli_json_end(&j);
+  }
+  cli_json_end(&j);
+  cli_json_end(&j);
+  fflush(stdout);
+}
+
+/* The defect verdicts of every run that succeeded. */
+static int assess_all(compare_state *c)
+{
+  for (int i = 0; i < c->n; ++i) {
+    if (c->jobs[i].status != RS_OK) continue;
+    rs_defect_limits limits;
+    rs_defect_limits_from_problem(rs_scene_problem(c->scenes[i]), &limits);
+    rs_status st = rs_defects_assess(c->jobs[i].result, &limits, &c->defects[i]);
+    if (st != RS_OK) return cli_fail_status(st);
+  }
+  return CLI_EXIT_OK;
 }
 
 /* Reports each failed run; returns the exit status (3 for a solver failure). */
@@ -116,6 +180,8 @@ static void free_state(compare_state *c)
 {
   for (int i = 0; c->jobs && i < c->n; ++i) rs_reel_result_destroy(&c->jobs[i].result);
   for (int i = 0; c->scenes && i < c->n; ++i) rs_scene_destroy(&c->scenes[i]);
+  for (int i = 0; c->defects && i < c->n; ++i) rs_defect_report_destroy(&c->defects[i]);
+  free(c->defects);
   free(c->scenes);
   free(c->jobs);
   free(c->sums);
@@ -130,6 +196,7 @@ int cli_compare(const cli_args *a)
   c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
   c.sums = calloc((size_t)c.n, sizeof *c.sums);
   c.names = calloc((size_t)c.n, sizeof *c.names);
+  c.defects = calloc((size_t)c.n, sizeof *c.defects);
   /* every stored scene names the file it went to, as with run -o */
   const char **sets = calloc((size_t)a->n_sets + 1, sizeof *sets);
   char *out_set = NULL;
@@ -137,7 +204,7 @@ int cli_compare(const cli_args *a)
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
 
-  if (!c.scenes || !c.jobs || !c.sums || !c.names || !sets) {
+  if (!c.scenes || !c.jobs || !c.sums || !c.names || !c.defects || !sets) {
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
     goto done;
   }
@@ -180,9 +247,12 @@ int cli_compare(const cli_args *a)
   }
 
   code = check_jobs(&c);
-  if (!a->quiet) print_table(&c, rs_clock_wall() - t0, threads);
+  int assessed = assess_all(&c);
+  if (code == CLI_EXIT_OK) code = assessed;
+  if (!a->quiet && !a->json) print_table(&c, rs_clock_wall() - t0, threads);
   if (code != CLI_EXIT_OK) {
     fprintf(stderr, "reelsim: compare: a run failed; no output written\n");
+    if (a->json) print_json(&c, rs_clock_wall() - t0, threads, NULL);
     goto done;
   }
 
@@ -195,6 +265,7 @@ int cli_compare(const cli_args *a)
   st = rs_output_write_compare(c.output, c.n, runs);
   free(runs);
   if (st != RS_OK) code = cli_fail_status(st);
+  else if (a->json) print_json(&c, rs_clock_wall() - t0, threads, c.output);
   else if (!a->quiet) printf("output %s\n", c.output);
 
 done:

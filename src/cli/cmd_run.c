@@ -9,9 +9,9 @@
  * --keep-partial: when the solver fails or the run is stopped, the layers finished are
  * still written (attribute complete = 0); by default nothing is.
  *
- * The same callback draws a progress bar on stderr once a run has taken a second, at
- * most ten times a second, and only when stderr is a terminal and --quiet is off: logs
- * and test output never see it. */
+ * The same callback draws a progress line on stderr (progress.c: layers, radius, time
+ * left) once a run has taken a second, at most ten times a second, and only when stderr
+ * is a terminal and --quiet is off: logs, pipes and test output never see it. */
 
 #include <math.h>
 #include <signal.h>
@@ -20,58 +20,21 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/summary_json.h"
+#include "reelsim/version.h"
 #include "reelsim/clock.h"
 #include "reelsim/output.h"
 #include "cli/outdir.h"
+#include "cli/progress.h"
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"
 
-typedef struct progress {
-  int done, total;
-  int bar;               /* draw a bar: stderr is a terminal and not --quiet */
-  int drawn;             /* a bar is on the screen */
-  double t_start, t_last;
-} progress;
-
-static void progress_draw(progress *p, double now)
-{
-  enum { WIDTH = 30 };
-  char cells[WIDTH + 1];
-  double frac = p->total > 0 ? (double)p->done / p->total : 1.0;
-  int full = (int)(frac * WIDTH);
-  for (int i = 0; i < WIDTH; ++i) cells[i] = i < full ? '#' : '.';
-  cells[WIDTH] = '\0';
-  double elapsed = now - p->t_start;
-  double left = p->done > 0 ? elapsed * (p->total - p->done) / p->done : 0.0;
-  fprintf(stderr, "\rreelsim: [%s] %3d%%  layer %d of %d  %.0f s, about %.0f s left ", cells,
-          (int)(100.0 * frac), p->done, p->total, elapsed, left);
-  fflush(stderr);
-  p->drawn = 1;
-}
-
-/* Wipes the bar so messages and the summary start on a clean line. */
-static void progress_clear(progress *p)
-{
-  if (!p->drawn) return;
-  fputs("\r\033[K", stderr);
-  fflush(stderr);
-  p->drawn = 0;
-}
-
 static int on_progress(void *user, int layers_done, int layers_total)
 {
-  progress *p = user;
-  p->done = layers_done;
-  p->total = layers_total;
-  if (p->bar) {
-    double now = rs_clock_wall();
-    if (now - p->t_start >= 1.0 && now - p->t_last >= 0.1) {
-      progress_draw(p, now);
-      p->t_last = now;
-    }
-  }
+  (void)layers_total;
+  cli_progress_update(user, layers_done, rs_clock_wall());
   return cli_signal_caught() != 0;
 }
 
@@ -84,8 +47,14 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("active effects:\n");
   rs_scene_print_effects(scene, stdout);
   printf("result:\n");
+  rs_reel_sizes z;
+  rs_reel_sizes_of(res, rs_scene_problem(scene), &z);
   printf("  final radius       %.1f mm\n", s->final_radius * 1e3);
+  printf("  diameter           %.1f mm\n", z.diameter * 1e3);
   printf("  layers             %d\n", s->layers);
+  printf("  wound length       %.1f m (the layers' circumferences at mid-thickness)\n",
+         z.wound_length);
+  if (z.has_mass) printf("  roll mass          %.2f kg per metre of width\n", z.mass);
   cli_fmt_stress(a, sizeof a, s->core_pressure);
   printf("  core pressure      %s\n", a);
   cli_fmt_stress(a, sizeof a, s->peak_pressure);
@@ -100,11 +69,39 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
     rs_scene_name(scene, stem, sizeof stem);
-    if (rs_output_csv_path(csv_dir, stem, "{profile,wot}", path, sizeof path) == RS_OK)
+    if (rs_output_csv_path(csv_dir, stem, res->n_stages > 0 ? "{profile,wot,history}" : "{profile,wot}", path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
   cli_print_storage(stdout, storage);
+}
+
+/* run --json: the summary as one JSON object (docs/cli.md, "JSON"). */
+static void print_json(const rs_scene *scene, const rs_reel_result *res,
+                       const rs_defect_report *defects, const char *csv_dir, double wall)
+{
+  cli_json j;
+  cli_json_init(&j, stdout);
+  cli_json_object(&j, NULL);
+  cli_json_string(&j, "reelsim", RS_VERSION_STRING);
+  cli_json_string(&j, "command", "run");
+  cli_json_run_fields(&j, scene, res, defects);
+  cli_json_number(&j, "wall_seconds", wall);
+  cli_json_string(&j, "output", rs_scene_output_file(scene));
+  if (csv_dir) {
+    char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
+    static const char *const kinds[] = {"profile", "wot", "history"};
+    rs_scene_name(scene, stem, sizeof stem);
+    cli_json_array(&j, "csv");
+    for (int k = 0; k < (res->n_stages > 0 ? 3 : 2); ++k)
+      if (rs_output_csv_path(csv_dir, stem, kinds[k], path, sizeof path) == RS_OK)
+        cli_json_string(&j, NULL, path);
+    cli_json_end(&j);
+  } else {
+    cli_json_null(&j, "csv");
+  }
+  cli_json_end(&j);
+  fflush(stdout);
 }
 
 /* Writes the finished part of a run that stopped early (--keep-partial). Returns 1 when a
@@ -147,12 +144,13 @@ int cli_run(const cli_args *a)
     goto done;
   }
 
-  progress prog = {.total = rs_scene_problem(scene)->n_layers,
-                   .bar = !a->quiet && isatty(STDERR_FILENO),
-                   .t_start = t0};
+  const rs_problem *pb = rs_scene_problem(scene);
+  cli_progress prog;
+  cli_progress_init(&prog, !a->quiet && isatty(STDERR_FILENO), pb->n_layers, pb->core.radius,
+                    pb->material.caliper, rs_clock_wall());
   rs_reel_options opts = {.progress = on_progress, .user = &prog};
   st = rs_scene_wind(scene, &opts, &res);
-  progress_clear(&prog);
+  cli_progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
     const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
@@ -219,7 +217,8 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet)
+  if (a->json) print_json(scene, res, defects, a->csv_dir, rs_clock_wall() - t0);
+  else if (!a->quiet)
     print_summary(scene, res, &sum, defects, storage, a->csv_dir, rs_clock_wall() - t0);
 
 done:

@@ -3,6 +3,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 static int verbose;
 
@@ -21,10 +22,25 @@ int cli_fail(int code, const char *fmt, ...)
   return code;
 }
 
+/* Bad input may hold several errors, one a line (a scene's): each gets its own
+ * "reelsim: " line. */
+static void print_lines(const char *msg)
+{
+  for (;;) {
+    const char *nl = strchr(msg, '\n');
+    if (!nl) {
+      cli_fail(0, "%s", msg);
+      return;
+    }
+    cli_fail(0, "%.*s", (int)(nl - msg), msg);
+    msg = nl + 1;
+  }
+}
+
 int cli_fail_status(rs_status st)
 {
   int code = rs_status_exit_code(st);
-  if (st == RS_ERR_INPUT) cli_fail(code, "%s", rs_error_message());
+  if (st == RS_ERR_INPUT) print_lines(rs_error_message());
   else if (st == RS_ERR_SOLVER) cli_fail(code, "solver failure: %s", rs_error_message());
   else cli_fail(code, "%s: %s", rs_status_name(st), rs_error_message());
   if (verbose && st != RS_ERR_INPUT && rs_error_where()[0])

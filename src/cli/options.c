@@ -57,8 +57,9 @@ const cli_option cli_options[] = {
      "write every run here (default: the -o name with .h5)"},
     {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_RUN,
      "also write DIR/<scene>-profile.csv and\n"
-     "DIR/<scene>-wot.csv "
-     "(DIR must exist)"},
+     "DIR/<scene>-wot.csv, and DIR/<scene>-history.csv when the\n"
+     "scene records a history (DIR made if missing, as mkdir -p\n"
+     "does)"},
     {CLI_OPT_RADIUS, "radius", 0, "R", "a roll radius in metres", CLI_NIP,
      "the roll radius (m) at which to solve the nip (required)"},
     {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", SCENE_CMDS & ~CLI_COMPARE & ~CLI_STUDY & ~CLI_SWEEP,
@@ -82,12 +83,18 @@ const cli_option cli_options[] = {
      "measurement)"},
     {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_NIP,
      "print the solution as one JSON object (with the profiles)"},
+    {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_RUN,
+     "print the summary as one JSON object on stdout instead of\n"
+     "the text (fields: docs/cli.md, \"JSON\")"},
+    {CLI_OPT_JSON, "json", 0, NULL, NULL, CLI_COMPARE,
+     "print the runs' summaries as one JSON object on stdout\n"
+     "instead of the table (fields: docs/cli.md, \"JSON\")"},
     {CLI_OPT_KEEP_PARTIAL, "keep-partial", 0, NULL, NULL, CLI_RUN,
      "when the solver fails or the run is interrupted, still\n"
      "write the layers finished to the output file, marked\n"
      "complete = 0"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_RUN,
-     "print nothing but errors (no summary, no progress bar)"},
+     "print nothing but errors (no summary, no progress line)"},
     {CLI_OPT_QUIET, "quiet", 'q', NULL, NULL, CLI_CHECK | CLI_COMPARE | CLI_PLOT | CLI_STUDY | CLI_SWEEP | CLI_OPTIMIZE,
      "print nothing but errors"},
     {CLI_OPT_VERBOSE, "verbose", 'v', NULL, NULL, CLI_EVERY,
@@ -100,7 +107,7 @@ const int cli_n_options = (int)(sizeof cli_options / sizeof cli_options[0]);
 const cli_command cli_commands[] = {
     {"run", CLI_RUN, "scene file", 0,
      "reelsim run SCENE [-o FILE] [--csv DIR] [--set key.path=value ...] [--quiet]\n"
-     "                         [--keep-partial]",
+     "                         [--json] [--keep-partial]",
      "wind the reel a scene file describes, write the result\n"
      "(HDF5) and print a summary",
      "Winds the reel SCENE describes layer by layer, writes the result to an HDF5 file\n"
@@ -119,7 +126,8 @@ const cli_command cli_commands[] = {
      "overrides applied), exactly what `run` would record in its output file.\n",
      "exit status: 0 the scene is good, 2 bad input\n"},
     {"compare", CLI_COMPARE, "scene file", 1,
-     "reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]",
+     "reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]\n"
+     "                         [--json]",
      "wind several scenes in parallel, print their key figures\n"
      "side by side and write them all to one HDF5 file (compare.h5)",
      "Loads and checks every scene first (bad input in any: exit 2, nothing wound), winds\n"
@@ -131,7 +139,7 @@ const cli_command cli_commands[] = {
      "exit status: 0 ok, 2 bad input in any scene, 3 a run's solver failed,\n"
      "             130 interrupted, 143 terminated, 1 other\n"},
     {"plot", CLI_PLOT, "file", 0, "reelsim plot FILE.h5 [-o DIR] [--quiet]",
-     "PNG plots of a run, compare or sweep file (needs gnuplot)",
+     "PNG plots of a run, compare, sweep or study file (needs gnuplot)",
      "Draws PNG plots of a reelsim file with gnuplot into DIR (default: the current\n"
      "directory), named <file name>-<plot>.png: interlayer pressure and hoop stress\n"
      "against radius (with history stages and defect ranges when the file has them),\n"
@@ -139,6 +147,7 @@ const cli_command cli_commands[] = {
      "file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
      "sweep file each figure against the parameter varied, or a heat map over the first\n"
      "two varied, and an optimisation's history (/optimize).\n",
+     "study file (study.h5) the study's picture, <file name>-study.png.\n",
      "exit status: 0 ok, 2 FILE is not a reelsim file or DIR (or a parent of it) is\n"
      "             not a directory, 1 gnuplot missing or failed, other errors\n"},
     {"study", CLI_STUDY, "scene file", 0,

@@ -1,5 +1,6 @@
 /* CSV export of a wound reel (docs/output.md, "CSV files"): the final profile and the
- * wound-on tension per layer, one header line, numbers to 17 significant digits so that
+ * wound-on tension per layer, and the history stages when the result has them, one header
+ * line, numbers to 17 significant digits so that
  * reading them back gives the same doubles. Both files are built in memory and staged
  * (util/atomic_file.h): each is whole or absent, never half-written. */
 #include <errno.h>
@@ -60,6 +61,25 @@ static rs_status build_wot(const rs_reel_result *res, csv_text *out)
   return RS_OK;
 }
 
+/* Long form, one row per wound layer per stage (the layers not yet wound at a stage, NaN
+ * in the arrays, are left out): what a data frame reads without reshaping. */
+static rs_status build_history(const rs_reel_result *res, csv_text *out)
+{
+  FILE *f = open_memstream(&out->text, &out->size);
+  if (!f) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the CSV history");
+  fputs("stage,layers_wound,roll_radius_m,layer,radius_m,sigma_r_Pa,sigma_theta_Pa\n", f);
+  for (int s = 0; s < res->n_stages; ++s) {
+    const double *sr = res->stage_sigma_r + (size_t)s * (size_t)res->n_layers;
+    const double *st = res->stage_sigma_theta + (size_t)s * (size_t)res->n_layers;
+    for (int j = 0; j < res->stage_layers[s] && j < res->n_layers; ++j)
+      fprintf(f, "%d,%d,%.17g,%d,%.17g,%.17g,%.17g\n", s + 1, res->stage_layers[s],
+              res->stage_radius[s], j + 1, res->radius[j], sr[j], st[j]);
+  }
+  int bad = ferror(f);
+  if (fclose(f) != 0 || bad) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the CSV history");
+  return RS_OK;
+}
+
 rs_status rs_output_csv_path(const char *dir, const char *name, const char *which, char *buf,
                              size_t size)
 {
@@ -72,14 +92,15 @@ rs_status rs_output_csv_path(const char *dir, const char *name, const char *whic
 
 rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_result *res)
 {
-  enum { N_FILES = 2 };
-  static const char *const which[N_FILES] = {"wot", "profile"};
-  static rs_status (*const build[N_FILES])(const rs_reel_result *, csv_text *) = {build_wot,
-                                                                                  build_profile};
-  char path[N_FILES][4096];
-  char *tmp[N_FILES] = {NULL, NULL};
-  csv_text text[N_FILES] = {{NULL, 0}, {NULL, 0}};
+  enum { MAX_FILES = 3 };
+  static const char *const which[MAX_FILES] = {"wot", "profile", "history"};
+  static rs_status (*const build[MAX_FILES])(const rs_reel_result *, csv_text *) = {
+      build_wot, build_profile, build_history};
+  char path[MAX_FILES][4096];
+  char *tmp[MAX_FILES] = {NULL, NULL, NULL};
+  csv_text text[MAX_FILES] = {{NULL, 0}, {NULL, 0}, {NULL, 0}};
   if (!res || !name || !name[0]) return RS_ERROR(RS_ERR_INTERNAL, "no result or no name for CSV");
+  const int N_FILES = res->n_stages > 0 ? 3 : 2; /* the history when the result has one */
   rs_status st = rs_output_check_csv_dir(dir);
   for (int i = 0; st == RS_OK && i < N_FILES; ++i) {
     st = rs_output_csv_path(dir, name, which[i], path[i], sizeof path[i]);

@@ -1,4 +1,5 @@
-/* Whether a summary can be shown: NaN or Inf in a figure means a broken solution. */
+/* Whether a summary can be shown (NaN or Inf in a figure means a broken solution), and
+ * the roll's size as engineers quote it. */
 #include <math.h>
 #include <stddef.h>
 
@@ -25,4 +26,18 @@ int rs_reel_summary_finite(const rs_reel_summary *s, const char **what)
       return 0;
     }
   return 1;
+}
+
+/* L = sum_j pi (r_{j-1} + r_j), r_{-1} the core radius; m = rho t L per unit width. */
+void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_reel_sizes *out)
+{
+  double L = 0.0, inner = res->core_radius;
+  for (int j = 0; j < res->n_layers; ++j) {
+    L += 3.14159265358979323846 * (inner + res->radius[j]);
+    inner = res->radius[j];
+  }
+  out->diameter = res->n_layers > 0 ? 2.0 * res->radius[res->n_layers - 1] : 2.0 * inner;
+  out->wound_length = L;
+  out->has_mass = problem && problem->material.density > 0.0;
+  out->mass = out->has_mass ? problem->material.density * problem->material.caliper * L : 0.0;
 }

@@ -1,4 +1,5 @@
-/* Locating range-check errors: a dotted scene path -> the node the user wrote. */
+/* Locating range-check errors (a dotted scene path -> the node the user wrote), and
+ * collecting every error of one load so that they are reported together. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -53,4 +54,43 @@ void ys_fmt(char *buf, size_t size, double v)
   if (*x == '+' || *x == '-') ++x;
   while (*x == '0' && x[1]) ++x;
   snprintf(buf, size, "%se%s%s", mant, neg ? "-" : "", x);
+}
+
+/* The errors of the load in progress on this thread (loads on other threads are their own). */
+enum { YS_ERRORS_TEXT = 8192 };
+static _Thread_local struct {
+  int n;                      /* errors noted */
+  size_t len;
+  char text[YS_ERRORS_TEXT];  /* the first YS_MAX_ERRORS, one a line */
+} errs;
+
+void ys_errors_begin(void)
+{
+  errs.n = 0;
+  errs.len = 0;
+  errs.text[0] = '\0';
+}
+
+rs_status ys_note(rs_status st)
+{
+  if (st != RS_ERR_INPUT) return st;
+  if (errs.n++ < YS_MAX_ERRORS) {
+    int w = snprintf(errs.text + errs.len, sizeof errs.text - errs.len, "%s%s",
+                     errs.len ? "\n" : "", rs_error_message());
+    if (w > 0) errs.len = (size_t)w < sizeof errs.text - errs.len ? errs.len + (size_t)w
+                                                                   : sizeof errs.text - 1;
+  }
+  return st;
+}
+
+int ys_errors(void) { return errs.n; }
+
+rs_status ys_errors_end(void)
+{
+  if (errs.n == 0) return RS_OK;
+  if (errs.n == 1) return RS_ERROR(RS_ERR_INPUT, "%s", errs.text);
+  if (errs.n > YS_MAX_ERRORS)
+    return RS_ERROR(RS_ERR_INPUT, "%s\n(%d more errors not shown; %d in all)", errs.text,
+                    errs.n - YS_MAX_ERRORS, errs.n);
+  return RS_ERROR(RS_ERR_INPUT, "%s", errs.text);
 }

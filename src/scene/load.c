@@ -44,6 +44,9 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
   return RS_OK;
 }
 
+/* Bad input is noted and reported with the rest (ys_errors_end); any other failure stops. */
+static rs_status input_ok(rs_status st) { return st == RS_ERR_INPUT ? RS_OK : st; }
+
 /* text == NULL: read the file `path`; otherwise parse text[0..len) and use `path` only as
  * the scene's name (messages, model lookup directory, default title and output file). */
 static rs_status scene_load(const char *path, const char *text, size_t len, int n_sets,
@@ -61,14 +64,23 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
 
   yn *root = NULL;
   char *body = NULL;
+  /* Every error is reported together (ys_note): every bad --set and every unknown key or
+   * value of the wrong type; when there are none, every value out of range (the range
+   * checks need a tree of the right types). A syntax error or a missing model stops at once. */
+  ys_errors_begin();
   rs_status st = text ? yn_parse_text(text, len, s->path, &root) : yn_parse_file(s->path, &root);
   for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 0);
   if (st == RS_OK) st = ys_inline_material(root, s);
-  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 1);
-  if (st == RS_OK) st = ys_normalize(root);
-  if (st == RS_OK) st = ys_typecheck(root, &ys_scene_schema);
+  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = input_ok(ys_note(ys_apply_set(root, sets[i], 1)));
+  if (st == RS_OK) {
+    /* a bad --set leaves the tree as it was: the file's own errors are still looked for */
+    rs_status norm = ys_normalize(root);
+    if (norm == RS_OK) st = input_ok(ys_typecheck(root, &ys_scene_schema));
+    else st = input_ok(ys_note(norm));
+  }
+  if (st == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = ys_fill_defaults(root, s->path);
-  if (st == RS_OK) st = ys_resolve(root, s);
+  if (st == RS_OK && (st = input_ok(ys_resolve(root, s))) == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = yn_emit(root, &body);
   if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);
 

@@ -7,7 +7,9 @@
  *      tree, else the installed <datadir>/reelsim/models (model_dirs.c)
  * A name ending in .yaml/.yml or holding a '/' is a path (relative to the scene's
  * directory). The model file's lines stay attached to its values, so an error in it
- * names the model file, not the scene. */
+ * names the model file, not the scene.
+ * `material: {model: NAME, caliper: ...}` loads the model the same way and then replaces
+ * the keys given beside `model`. */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -100,13 +102,36 @@ static int same_file(const struct stat *a, const struct stat *b)
   return a->st_dev == b->st_dev && a->st_ino == b->st_ino;
 }
 
+/* `material: {model: NAME, key: value, ...}`: the model's keys, each key given beside
+ * `model` replacing the model's (a whole mapping such as `radial` is replaced, not merged:
+ * a law's keys belong together). The given values keep the scene's lines. */
+static rs_status override_model(yn *model, yn *given)
+{
+  for (int i = 0; i < given->n; ++i) {
+    if (strcmp(given->keys[i], "model") == 0) continue;
+    yn *v = yn_copy(given->kids[i]);
+    if (!v) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+    rs_status st = yn_map_put(model, given->keys[i], v);
+    if (st != RS_OK) return st;
+  }
+  return RS_OK;
+}
+
 rs_status ys_inline_material(yn *root, rs_scene *scene)
 {
   yn *mat = yn_map_get(root, "material");
   if (!mat) return yn_error_key(root, "material", "required key is missing");
+  yn *given = NULL; /* the mapping holding `model`, whose other keys override the model's */
   if (mat->kind == YN_MAP) {
-    snprintf(scene->material_source, sizeof scene->material_source, "inline");
-    return RS_OK;
+    yn *name = yn_map_get(mat, "model");
+    if (!name) {
+      snprintf(scene->material_source, sizeof scene->material_source, "inline");
+      return RS_OK;
+    }
+    if (name->kind != YN_SCALAR || yn_is_empty(name))
+      return yn_error(name, "expected a model name (e.g. pet-film)");
+    given = mat;
+    mat = name;
   }
   if (mat->kind != YN_SCALAR || yn_is_empty(mat))
     return yn_error(mat, "expected a model name (e.g. newsprint) or a mapping of material keys");
@@ -134,6 +159,12 @@ rs_status ys_inline_material(yn *root, rs_scene *scene)
   yn *model;
   rs_status s = yn_parse_file(scene->material_source, &model);
   if (s != RS_OK) return s;
+  yn *nested = yn_map_get(model, "model");
+  if (nested) {
+    s = yn_error(nested, "a model file cannot name another model");
+    yn_free(model);
+    return s;
+  }
   /* the model's values keep their own file and lines; a --set on the name stays visible */
   if (!yn_map_get(model, "name")) {
     yn *name = yn_new_scalar(mat->text, mat->file, mat->line, "material");
@@ -152,6 +183,10 @@ rs_status ys_inline_material(yn *root, rs_scene *scene)
       (s = yn_map_put(model, "source", source)) != RS_OK) {
     yn_free(model);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  }
+  if (given && (s = override_model(model, given)) != RS_OK) {
+    yn_free(model);
+    return s;
   }
   return yn_map_put(root, "material", model);
 }

@@ -3,7 +3,9 @@
  * A key the file leaves out but the schema knows (numerics.layers_per_step with no
  * numerics section) is created; a key the schema does not know, a path through a single
  * value, or a path that ends on a whole mapping or list is refused. The value is checked
- * later with everything else, and errors about it name the --set that wrote it. */
+ * later with everything else, and errors about it name the --set that wrote it.
+ * KEY=null (or ~) removes the key instead, so a --set can switch between keys that
+ * exclude each other (final_radius / web_length). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +24,51 @@ static void join3(char *dst, size_t size, const char *a, const char *sep, const 
 
 static int is_scalar_schema(const ys_value *s) { return s->type != YS_MAP && s->type != YS_LIST; }
 
+/* YAML's null: `--set KEY=null` removes the key */
+static int is_null(const char *value) { return strcmp(value, "null") == 0 || strcmp(value, "~") == 0; }
+
+static rs_status set_scalar(yn *node, const char *value, const char *origin)
+{
+  char *text = malloc(strlen(value) + 1);
+  if (!text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  strcpy(text, value);
+  free(node->text);
+  node->text = text;
+  node->quoted = 0;
+  return yn_set_origin(node, origin);
+}
+
+/* --set KEY=null: the key goes, as if the file had never had it (its default, if any,
+ * applies). A key the schema does not know is refused like any --set; a key that is not
+ * there already is left absent. */
+static rs_status remove_key(yn *root, const char *origin, const char *path,
+                            char seg[][YN_SEG_MAX], int n)
+{
+  if (!ys_schema_at(path)) {
+    char keys[512], parent[1024];
+    snprintf(parent, sizeof parent, "%s", path);
+    char *dot = strrchr(parent, '.');
+    if (dot) *dot = '\0';
+    const ys_value *ps = dot ? ys_schema_at(parent) : &ys_scene_schema;
+    ys_schema_keys(ps ? ps : &ys_scene_schema, keys, sizeof keys);
+    return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
+                    seg[n - 1], dot ? " in " : "", dot ? parent : "", keys);
+  }
+  yn *cur = root;
+  for (int i = 0; i < n - 1 && cur; ++i) {
+    long idx;
+    if (cur->kind == YN_SEQ)
+      cur = yn_seg_index(seg[i], &idx) && idx < cur->n ? cur->kids[idx] : NULL;
+    else
+      cur = yn_map_get(cur, seg[i]);
+  }
+  if (!cur) return RS_OK;
+  if (cur->kind != YN_MAP)
+    return RS_ERROR(RS_ERR_INPUT, "%s: only a key of a mapping can be removed", origin);
+  yn_map_remove(cur, seg[n - 1]);
+  return RS_OK;
+}
+
 rs_status ys_apply_set(yn *root, const char *set, int pass)
 {
   char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
@@ -35,10 +82,17 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
   path[plen] = '\0';
   const char *value = eq + 1;
 
-  if ((pass == 0) != (strcmp(path, "material") == 0)) return RS_OK;
+  /* the model is chosen before it is looked up: material and material.model go first */
+  int names_model = strcmp(path, "material") == 0 || strcmp(path, "material.model") == 0;
+  if ((pass == 0) != names_model) return RS_OK;
+  if (strcmp(path, "material.model") == 0 && !is_null(value)) {
+    yn *mat = yn_map_get(root, "material");
+    if (mat && mat->kind == YN_SCALAR) return set_scalar(mat, value, origin); /* material: NAME */
+  }
 
   int n = yn_path_split(path, seg, 16);
   if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);
+  if (is_null(value)) return remove_key(root, origin, path, seg, n);
 
   yn *cur = root;
   for (int i = 0; i < n; ++i) {
@@ -91,11 +145,5 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
   if (cur->kind != YN_SCALAR)
     return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, path,
                     cur->kind == YN_MAP ? "mapping" : "list");
-  char *text = malloc(strlen(value) + 1);
-  if (!text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  strcpy(text, value);
-  free(cur->text);
-  cur->text = text;
-  cur->quoted = 0;
-  return yn_set_origin(cur, origin);
+  return set_scalar(cur, value, origin);
 }

@@ -9,16 +9,35 @@
 enum { RS_MAX_LAYERS = 10000000 };
 static const double pi = 3.14159265358979323846;
 
+/* The core's size is its radius or its diameter (engineers quote cores by diameter), one
+ * of the two. Returns the key given in *key. */
+static rs_status core_size(const yn *root, double *radius, const char **key)
+{
+  int has_r = ys_has(root, "core.radius"), has_d = ys_has(root, "core.diameter");
+  if (has_r && has_d)
+    return ys_fail(root, "core.diameter", "give either core.radius or core.diameter, not both");
+  if (!has_r && !has_d)
+    return ys_fail(root, "core.radius", "required: the core size as radius (m) or diameter (m)");
+  *key = has_r ? "core.radius" : "core.diameter";
+  double v = ys_num(root, *key);
+  if (!(v > 0.0)) return ys_fail(root, *key, "must be > 0 m (got %g)", v);
+  *radius = has_r ? v : 0.5 * v;
+  return RS_OK;
+}
+
 static rs_status resolve_core(const yn *root, rs_core *c)
 {
-  const double radius = ys_num(root, "core.radius"), rating = ys_num(root, "core.rating"),
+  const double rating = ys_num(root, "core.rating"),
                stiffness = ys_num(root, "core.stiffness"), bore = ys_num(root, "core.bore"),
                modulus = ys_num(root, "core.modulus"), poisson = ys_num(root, "core.poisson");
   int elastic = ys_has(root, "core.stiffness");
   int tube = ys_has(root, "core.bore") || ys_has(root, "core.modulus") ||
              ys_has(root, "core.poisson");
+  double radius = 0.0;
+  const char *size_key = NULL; /* which of radius and diameter */
   memset(c, 0, sizeof *c);
-  if (!(radius > 0.0)) return ys_fail(root, "core.radius", "must be > 0 m (got %g)", radius);
+  rs_status st = core_size(root, &radius, &size_key);
+  if (st != RS_OK) return st;
   c->radius = radius;
   if (ys_has(root, "core.rating")) {
     if (!(rating > 0.0))
@@ -60,29 +79,43 @@ static rs_status resolve_core(const yn *root, rs_core *c)
 }
 
 /* Final radius and layer count. Web length L on a core of radius r_c, caliper t:
- * the wound cross-section pi (r^2 - r_c^2) equals L t, so r = sqrt(r_c^2 + L t / pi). */
+ * the wound cross-section pi (r^2 - r_c^2) equals L t, so r = sqrt(r_c^2 + L t / pi).
+ * The size is one of final_radius, final_diameter (d = 2 r) and web_length. */
 static rs_status resolve_winding(const yn *root, rs_scene *s)
 {
-  const double final_radius = ys_num(root, "winding.final_radius"),
-               web_length = ys_num(root, "winding.web_length"),
+  const double web_length = ys_num(root, "winding.web_length"),
                accel_torque = ys_num(root, "winding.accel_torque");
-  int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length");
+  int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length"),
+      has_d = ys_has(root, "winding.final_diameter");
   double rc = s->problem.core.radius, t = s->problem.material.caliper;
+  if (has_r && has_d)
+    return ys_fail(root, "winding.final_diameter",
+                   "give either winding.final_radius or winding.final_diameter, not both");
   if (has_r && has_L)
     return ys_fail(root, "winding.web_length",
                    "give either final_radius or web_length, not both");
-  if (!has_r && !has_L)
+  if (has_d && has_L)
+    return ys_fail(root, "winding.web_length",
+                   "give either final_diameter or web_length, not both");
+  if (!has_r && !has_L && !has_d)
     return ys_fail(root, "winding.final_radius",
-                   "required: the roll size as final_radius (m) or web_length (m)");
-  const char *key = has_r ? "winding.final_radius" : "winding.web_length";
+                   "required: the roll size as final_radius (m), final_diameter (m) or "
+                   "web_length (m)");
+  const char *key = has_r ? "winding.final_radius"
+                          : has_d ? "winding.final_diameter" : "winding.web_length";
+  const double final_radius = has_d ? 0.5 * ys_num(root, key) : ys_num(root, "winding.final_radius");
   if (has_L) {
     if (!(web_length > 0.0))
       return ys_fail(root, key, "must be > 0 m (got %g)", web_length);
     s->web_length = web_length;
     s->problem.final_radius = sqrt(rc * rc + web_length * t / pi);
   } else {
-    if (!(final_radius > rc))
+    if (!(final_radius > rc)) {
+      if (has_d)
+        return ys_fail(root, key, "must be > the core diameter %g m (got %g)", 2.0 * rc,
+                       2.0 * final_radius);
       return ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, final_radius);
+    }
     s->web_length = 0.0;
     s->problem.final_radius = final_radius;
   }
@@ -161,6 +194,48 @@ static rs_status resolve_drum(const yn *root, rs_drum *d)
     return ys_fail(root, "nip.drum.nu", "must lie in (-1, 0.5) (got %g)", nu);
   d->E = E;
   d->nu = nu;
+  return RS_OK;
+}
+
+/* A surface (or center-surface) winder's drum carries (1 - share) Ti by friction alone, so
+ * the contact nip has no stick/slip state unless mu_drum P > (1 - share) Ti (docs/nip.md,
+ * "Winder"; the nip refuses it at the first solve where it fails). Tension and load are
+ * recipes in the radius, so the condition is checked along the roll, as the reel will
+ * meet it: the layer going on at roll radius R = r_c + j t has Ti(R + t) and P(R). A reel
+ * of more than a million layers is checked at a million evenly spaced layers and the last. */
+static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
+{
+  const rs_problem *p = &s->problem;
+  const rs_nip_spec *n = &p->nip;
+  if (n->model != RS_NIP_CONTACT || n->winder == RS_WINDER_CENTER) return RS_OK;
+  double share = n->winder == RS_WINDER_SURFACE ? 0.0 : n->torque_share;
+  const double rc = p->core.radius, t = p->material.caliper;
+  const int N = p->n_layers, stride = N > 1000000 ? (N + 999999) / 1000000 : 1;
+  for (int j = 0;; j += stride) {
+    if (j > N - 1) j = N - 1; /* the last layer always */
+    double R = rc + j * t, Ti = rs_recipe_eval(&p->tension, R + t), P = rs_recipe_eval(&n->load, R);
+    double carried = (1.0 - share) * Ti;
+    if (carried > 0 && n->mu_drum * P <= carried * (1 + 1e-9)) {
+      char a[4][32], what[256];
+      ys_fmt(a[0], sizeof a[0], R);
+      ys_fmt(a[1], sizeof a[1], n->mu_drum * P);
+      ys_fmt(a[2], sizeof a[2], carried);
+      ys_fmt(a[3], sizeof a[3], Ti);
+      if (n->winder == RS_WINDER_SURFACE)
+        snprintf(what, sizeof what, "winding.tension = %s N/m, all of which the drum carries "
+                 "on a surface winder", a[3]);
+      else
+        snprintf(what, sizeof what, "(1 - nip.torque_share) x winding.tension = (1 - %g) x %s "
+                 "= %s N/m, what the drum carries on a center-surface winder", share, a[3], a[2]);
+      return ys_fail(root, "nip.friction.drum",
+                     "the drum cannot carry the web by friction from roll radius r = %s m "
+                     "(layer %d of %d) on: nip.friction.drum x nip.load = %g x %g = %s N/m is "
+                     "not above %s; raise nip.load or nip.friction.drum, or lower "
+                     "winding.tension",
+                     a[0], j + 1, N, n->mu_drum, P, a[1], what);
+    }
+    if (j == N - 1) break;
+  }
   return RS_OK;
 }
 
@@ -288,18 +363,39 @@ static rs_status resolve_output(const yn *root, rs_scene *s)
   return RS_OK;
 }
 
+/* A part of the scene checked: its input error noted (ys_note) and remembered in *bad. */
+static rs_status part(rs_status st, rs_status *bad)
+{
+  ys_note(st);
+  if (st == RS_ERR_INPUT) *bad = st;
+  return st;
+}
+
+static int fatal(rs_status st) { return st != RS_OK && st != RS_ERR_INPUT; }
+
+/* Every part is checked and its error noted, so a scene's range errors are reported
+ * together; a part that needs another (the roll size needs the core and the caliper, the
+ * recipes and the nip the roll size, the nip profiles the nip) is checked only when that
+ * one is good. */
 rs_status ys_resolve(const yn *root, rs_scene *s)
 {
-  rs_status st;
+  rs_status bad = RS_OK, st;
   snprintf(s->title, sizeof s->title, "%s", ys_str(root, "title"));
-  if ((st = ys_resolve_material(root, &s->problem.material)) != RS_OK) return st;
-  if ((st = resolve_core(root, &s->problem.core)) != RS_OK) return st;
-  if ((st = resolve_winding(root, s)) != RS_OK) return st;
-  if ((st = ys_resolve_recipe(root, "winding.tension", "tension", 
-                              s->problem.core.radius, s->problem.final_radius, &s->problem.tension)) != RS_OK)
-    return st;
-  if ((st = resolve_nip(root, s)) != RS_OK) return st;
-  if ((st = resolve_numerics(root, &s->problem.numerics)) != RS_OK) return st;
-  if ((st = ys_resolve_storage(root, s)) != RS_OK) return st;
-  return resolve_output(root, s);
+  rs_status mat = part(ys_resolve_material(root, &s->problem.material), &bad);
+  if (fatal(mat)) return mat;
+  rs_status core = part(resolve_core(root, &s->problem.core), &bad);
+  if (fatal(core)) return core;
+  if (fatal(st = part(resolve_numerics(root, &s->problem.numerics), &bad))) return st;
+  if (mat != RS_OK || core != RS_OK) return bad;
+  if ((st = part(resolve_winding(root, s), &bad)) != RS_OK) return st;
+  rs_status tension = part(ys_resolve_recipe(root, "winding.tension", "tension",
+                                             s->problem.core.radius, s->problem.final_radius,
+                                             &s->problem.tension),
+                           &bad);
+  if (fatal(tension)) return tension;
+  if ((st = part(resolve_nip(root, s), &bad)) != RS_OK) return st;
+  if (tension == RS_OK && fatal(st = part(check_drum_capacity(root, s), &bad))) return st;
+  if (mat == RS_OK && fatal(st = part(ys_resolve_storage(root, s), &bad))) return st;
+  if (fatal(st = part(resolve_output(root, s), &bad))) return st;
+  return bad;
 }

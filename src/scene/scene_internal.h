@@ -60,6 +60,16 @@ rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 int ys_has(const yn *root, const char *path);
 
+/* diag.c: every error of a load, reported together (one line each, the first
+ * YS_MAX_ERRORS of them). ys_note(st) keeps the recorded message when st is RS_ERR_INPUT
+ * and returns st; ys_errors_end() records them all as one message (lines joined by '\n')
+ * and returns RS_ERR_INPUT, or RS_OK when there were none. */
+enum { YS_MAX_ERRORS = 20 };
+void ys_errors_begin(void);
+rs_status ys_note(rs_status st);
+int ys_errors(void);
+rs_status ys_errors_end(void);
+
 /* effects.c / resolve: numbers for people: 1e9 rather than 1e+09. */
 void ys_fmt(char *buf, size_t size, double v);
 

@@ -1,0 +1,87 @@
+/* The run summary as JSON members (run --json, compare --json): the figures of the text
+ * summary in SI units and the defect verdicts. Field by field in docs/cli.md, "JSON";
+ * the names are a contract. */
+#include "cli/summary_json.h"
+
+#include <math.h> /* NAN: written as null */
+
+#include "reelsim/scene.h"
+
+static void defects(cli_json *j, const rs_defect_report *d)
+{
+  cli_json_object(j, "defects");
+  cli_json_object(j, "hoop");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->hoop.verdict));
+  cli_json_int(j, "layers", d->hoop.layers);
+  cli_json_number(j, "min", d->hoop.min);
+  cli_json_number(j, "min_radius", d->hoop.min_radius);
+  cli_json_end(j);
+
+  cli_json_object(j, "buckling");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->buckling.verdict));
+  cli_json_int(j, "layers", d->buckling.layers);
+  int weighed = d->buckling.verdict != RS_DEFECT_NOT_ASSESSED && d->buckling.compressed > 0;
+  if (weighed) {
+    cli_json_number(j, "margin_min", d->buckling.margin_min);
+    cli_json_number(j, "margin_radius", d->buckling.margin_radius);
+  } else {
+    cli_json_null(j, "margin_min");
+    cli_json_null(j, "margin_radius");
+  }
+  cli_json_end(j);
+
+  int assessed = d->pressure.verdict != RS_DEFECT_NOT_ASSESSED;
+  cli_json_object(j, "pressure");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->pressure.verdict));
+  cli_json_number(j, "max", d->pressure.max);
+  cli_json_number(j, "max_radius", d->pressure.max_radius);
+  cli_json_number(j, "limit", assessed ? d->pressure.limit : NAN);
+  cli_json_number(j, "ratio", assessed ? d->pressure.ratio : NAN);
+  cli_json_end(j);
+
+  assessed = d->slip.verdict != RS_DEFECT_NOT_ASSESSED;
+  cli_json_object(j, "slip");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->slip.verdict));
+  cli_json_int(j, "layers", d->slip.layers);
+  cli_json_number(j, "margin_min", assessed ? d->slip.margin_min : NAN);
+  cli_json_number(j, "margin_radius", assessed ? d->slip.margin_radius : NAN);
+  cli_json_end(j);
+
+  assessed = d->core.verdict != RS_DEFECT_NOT_ASSESSED;
+  cli_json_object(j, "core");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->core.verdict));
+  cli_json_number(j, "pressure", d->core.pressure);
+  cli_json_number(j, "rating", assessed ? d->core.rating : NAN);
+  cli_json_number(j, "ratio", assessed ? d->core.ratio : NAN);
+  cli_json_end(j);
+  cli_json_end(j);
+}
+
+void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_result *res,
+                         const rs_defect_report *d)
+{
+  rs_reel_summary s;
+  rs_reel_sizes z;
+  rs_reel_summarize(res, &s);
+  rs_reel_sizes_of(res, rs_scene_problem(scene), &z);
+  cli_json_string(j, "scene", rs_scene_path(scene));
+  cli_json_string(j, "title", rs_scene_title(scene));
+  cli_json_int(j, "layers", s.layers);
+  cli_json_number(j, "core_radius", res->core_radius);
+  cli_json_number(j, "final_radius", s.final_radius);
+  cli_json_number(j, "final_diameter", z.diameter);
+  cli_json_number(j, "wound_length", z.wound_length);
+  cli_json_number(j, "roll_mass", z.has_mass ? z.mass : NAN);
+  cli_json_number(j, "core_pressure", s.core_pressure);
+  cli_json_number(j, "peak_pressure", s.peak_pressure);
+  cli_json_number(j, "peak_pressure_radius", s.peak_pressure_radius);
+  cli_json_number(j, "min_hoop_stress", s.min_hoop);
+  cli_json_number(j, "min_hoop_stress_radius", s.min_hoop_radius);
+  cli_json_number(j, "wound_on_tension_min", s.wot_min);
+  cli_json_number(j, "wound_on_tension_max", s.wot_max);
+  cli_json_number(j, "solver_seconds", res->wall_seconds);
+  cli_json_int(j, "increments", res->increments);
+  cli_json_int(j, "cvode_steps", res->cvode_steps);
+  if (d) defects(j, d);
+  else cli_json_null(j, "defects");
+}

@@ -1,0 +1,14 @@
+/* The run summary as members of a JSON object (summary_json.c, docs/cli.md "JSON"). */
+#ifndef RS_CLI_SUMMARY_JSON_H
+#define RS_CLI_SUMMARY_JSON_H
+
+#include "cli/json.h"
+#include "reelsim/defects.h"
+#include "reelsim/reel.h"
+#include "reelsim/scene.h"
+
+/* scene, title, the figures and the defect verdicts of one wound reel (d NULL: null) */
+void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_result *res,
+                         const rs_defect_report *d);
+
+#endif
