@@ -146,8 +146,8 @@ const cli_command cli_commands[] = {
      "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
      "file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
      "sweep file each figure against the parameter varied, or a heat map over the first\n"
-     "two varied, and an optimisation's history (/optimize).\n",
-     "study file (study.h5) the study's picture, <file name>-study.png.\n",
+     "two varied, and an optimisation's history (/optimize); for a study file (study.h5)\n"
+     "the study's picture, <file name>-study.png.\n",
      "exit status: 0 ok, 2 FILE is not a reelsim file or DIR (or a parent of it) is\n"
      "             not a directory, 1 gnuplot missing or failed, other errors\n"},
     {"study", CLI_STUDY, "scene file", 0,
