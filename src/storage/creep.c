@@ -25,6 +25,7 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 
 #include "storage/creep.h"
+#include "storage/creep_vector.h"
 
 struct rs_creep {
   rs_creep_params p;
@@ -36,6 +37,10 @@ struct rs_creep {
   long ny;
   double *q;                       /* [n_arm n] the arm stresses between holds */
   double *R_last, *H_last;         /* [n] the turn stresses at the last hold's end */
+  double *F_last;                  /* [n] the face stresses at the last hold's end */
+  int warm;                        /* CVODE holds the last hold's end: a hold that starts
+                                      from it unchanged continues the integration */
+  double t_end;                    /* h, CVODE's time at the last hold's end */
   double *P, *Er, *Sr, *St, *cr, *ct, *work; /* [n] right-hand side work */
   SUNContext ctx;
   void *cvode;
@@ -44,6 +49,7 @@ struct rs_creep {
   double gamma;                    /* of the last preconditioner set-up */
   char msg[512];
   rs_creep_stats stats;
+  long seen[5];                    /* CVODE's counters when last read */
 };
 
 void rs_creep_destroy(rs_creep **cp)
@@ -58,6 +64,7 @@ void rs_creep_destroy(rs_creep **cp)
   free(c->q);
   free(c->R_last);
   free(c->H_last);
+  free(c->F_last);
   free(c->P);
   free(c->Er);
   free(c->Sr);
@@ -210,6 +217,7 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   c->q = calloc(n * (size_t)(c->n_arm ? c->n_arm : 1), sizeof(double));
   c->R_last = calloc(n, sizeof(double));
   c->H_last = calloc(n, sizeof(double));
+  c->F_last = calloc(n, sizeof(double));
   c->P = calloc(n, sizeof(double));
   c->Er = calloc(n, sizeof(double));
   c->Sr = calloc(n, sizeof(double));
@@ -217,7 +225,7 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   c->cr = calloc(n, sizeof(double));
   c->ct = calloc(n, sizeof(double));
   c->work = calloc(n, sizeof(double));
-  if (!c->q || !c->R_last || !c->H_last || !c->P || !c->Er || !c->Sr || !c->St || !c->cr ||
+  if (!c->q || !c->R_last || !c->H_last || !c->F_last || !c->P || !c->Er || !c->Sr || !c->St || !c->cr ||
       !c->ct || !c->work) {
     rs_creep_destroy(&c);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the creep solver for %d layers", p->n_layers);
@@ -226,6 +234,10 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   c->y = N_VNew_Serial(c->ny, c->ctx);
   c->atol = c->y ? N_VClone(c->y) : NULL;
   if (!c->y || !c->atol) goto fail;
+  /* fused vector kernels: the vector operations on N (1 + arms) values are most of the cost */
+  if (N_VEnableFusedOps_Serial(c->y, SUNTRUE) != 0 || N_VEnableFusedOps_Serial(c->atol, SUNTRUE) != 0)
+    goto fail;
+  rs_creep_vector_specialise(c->y); /* before CVODE clones its vectors from it */
   N_VConst(0.0, c->y);
   N_VConst(1.0, c->atol);
   c->cvode = CVodeCreate(CV_BDF, c->ctx);
@@ -236,6 +248,8 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   if (CVodeSetUserData(c->cvode, c) != CV_SUCCESS) goto fail;
   c->LS = SUNLinSol_SPGMR(c->y, SUN_PREC_LEFT, 10, c->ctx);
   if (!c->LS) goto fail;
+  /* classical Gram-Schmidt: one fused multi-dot product per iteration */
+  if (SUNLinSol_SPGMRSetGSType(c->LS, SUN_CLASSICAL_GS) != 0) goto fail;
   if (CVodeSetLinearSolver(c->cvode, c->LS, NULL) != CV_SUCCESS) goto fail;
   if (CVodeSetPreconditioner(c->cvode, creep_psetup, creep_psolve) != CV_SUCCESS) goto fail;
   if (CVodeSetMaxNumSteps(c->cvode, p->max_steps) != CV_SUCCESS) goto fail;
@@ -248,15 +262,26 @@ fail:
   return st;
 }
 
-static void creep_add_stats(rs_creep *c)
+/* CVODE's counters run from its last re-initialisation; the stats add what they gained */
+static void creep_add_stats(rs_creep *c, int restarted)
 {
-  long v = 0;
-  if (CVodeGetNumSteps(c->cvode, &v) == CV_SUCCESS) c->stats.steps += v;
-  if (CVodeGetNumLinIters(c->cvode, &v) == CV_SUCCESS) c->stats.lin_iters += v;
-  if (CVodeGetNumNonlinSolvIters(c->cvode, &v) == CV_SUCCESS) c->stats.nonlin_iters += v;
-  if (CVodeGetNumErrTestFails(c->cvode, &v) == CV_SUCCESS) c->stats.err_fails += v;
-  if (CVodeGetNumNonlinSolvConvFails(c->cvode, &v) == CV_SUCCESS) c->stats.conv_fails += v;
+  long v[5] = {0};
+  CVodeGetNumSteps(c->cvode, &v[0]);
+  CVodeGetNumLinIters(c->cvode, &v[1]);
+  CVodeGetNumNonlinSolvIters(c->cvode, &v[2]);
+  CVodeGetNumErrTestFails(c->cvode, &v[3]);
+  CVodeGetNumNonlinSolvConvFails(c->cvode, &v[4]);
+  if (restarted) memset(c->seen, 0, sizeof c->seen);
+  long *dst[5] = {&c->stats.steps, &c->stats.lin_iters, &c->stats.nonlin_iters,
+                  &c->stats.err_fails, &c->stats.conv_fails};
+  for (int i = 0; i < 5; ++i) {
+    *dst[i] += v[i] - c->seen[i];
+    c->seen[i] = v[i];
+  }
 }
+
+static rs_status creep_commit(rs_creep *c, double hours, double *core_pressure, double *sigma_r,
+                              double *sigma_theta);
 
 rs_status rs_creep_hold(rs_creep *c, double hours, double *core_pressure, double *sigma_r,
                         double *sigma_theta)
@@ -265,6 +290,28 @@ rs_status rs_creep_hold(rs_creep *c, double hours, double *core_pressure, double
     return RS_ERROR(RS_ERR_INPUT, "creep: a stage's hours must be >= 0 (got %g)", hours);
   const int n = c->n;
   double *y = N_VGetArrayPointer(c->y), *atol = N_VGetArrayPointer(c->atol);
+  /* A hold that starts where the last one ended (no change in between: the same stresses,
+   * bit for bit) continues CVODE's integration with its step size and order, instead of
+   * restarting at order 1 with a tiny step: a week in 10 stages at constant conditions
+   * costs one integration (docs/performance.md). */
+  int same = c->warm && -*core_pressure == c->F_last[0];
+  for (int j = 1; same && j < n; ++j) same = sigma_r[j - 1] == c->F_last[j];
+  for (int j = 0; same && j < n; ++j) same = sigma_theta[j] == c->H_last[j];
+  if (same && hours > 0.0 && c->n_arm > 0) {
+    c->msg[0] = '\0';
+    sunrealtype tret = c->t_end;
+    int flag = CVodeSetStopTime(c->cvode, c->t_end + hours);
+    if (flag == CV_SUCCESS) flag = CVode(c->cvode, c->t_end + hours, c->y, &tret, CV_NORMAL);
+    creep_add_stats(c, 0);
+    if (flag < 0)
+      return RS_ERROR(RS_ERR_SOLVER,
+                      "creep did not converge: CVODE (BDF, GMRES preconditioned by the arms' "
+                      "relaxation, rtol %g, at most %ld steps) stopped at %.6g h of a %.6g h "
+                      "stage: %s", c->p.rtol, c->p.max_steps, tret - c->t_end, hours,
+                      c->msg[0] ? c->msg : CVodeGetReturnFlagName(flag));
+    c->t_end += hours;
+    return creep_commit(c, hours, core_pressure, sigma_r, sigma_theta);
+  }
   /* face stresses now, and the scales of the error weights */
   double sr_max = 0.0, st_max = 0.0;
   y[0] = -*core_pressure;
@@ -299,7 +346,7 @@ rs_status rs_creep_hold(rs_creep *c, double hours, double *core_pressure, double
       return RS_ERROR(RS_ERR_SOLVER, "creep: CVODE re-initialisation failed: %s", c->msg);
     sunrealtype tret = 0.0;
     const int flag = CVode(c->cvode, hours, c->y, &tret, CV_NORMAL);
-    creep_add_stats(c);
+    creep_add_stats(c, 1);
     if (flag < 0)
       return RS_ERROR(RS_ERR_SOLVER,
                       "creep did not converge: CVODE (BDF, GMRES preconditioned by the arms' "
@@ -307,6 +354,17 @@ rs_status rs_creep_hold(rs_creep *c, double hours, double *core_pressure, double
                       "stage: %s", rtol, c->p.max_steps, tret, hours,
                       c->msg[0] ? c->msg : CVodeGetReturnFlagName(flag));
   }
+  c->warm = hours > 0.0 && c->n_arm > 0;
+  c->t_end = hours;
+  return creep_commit(c, hours, core_pressure, sigma_r, sigma_theta);
+}
+
+/* the hold's end: face stresses (the hoop stress by the turns' equilibrium), arms, turn stresses */
+static rs_status creep_commit(rs_creep *c, double hours, double *core_pressure, double *sigma_r,
+                              double *sigma_theta)
+{
+  const int n = c->n;
+  const double *y = N_VGetArrayPointer(c->y);
   for (long i = 0; i < c->ny; ++i)
     if (!isfinite(y[i]))
       return RS_ERROR(RS_ERR_SOLVER, "creep: non-finite stresses after a %.6g h stage", hours);
@@ -321,6 +379,7 @@ rs_status rs_creep_hold(rs_creep *c, double hours, double *core_pressure, double
     prev_d = d_hi;
     c->R_last[j] = 0.5 * (y[j] + (j + 1 < n ? y[j + 1] : 0.0));
     c->H_last[j] = sigma_theta[j];
+    c->F_last[j] = y[j];
   }
   memcpy(c->q, y + n, (size_t)c->n_arm * (size_t)n * sizeof(double));
   return RS_OK;

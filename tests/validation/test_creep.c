@@ -238,19 +238,20 @@ static rs_creep_params paper_creep(rs_roll_params *rp, int n, double rtol)
 }
 
 /* Tighter rtol, smaller error (against rtol 1e-11), stages of 5, 20 and 50 h. From 1e-5
- * down (at 1e-4 the error is that of 1e-5: CVODE's loosest steps are limited by the
- * fastest term's 1 h, not by the tolerance). */
+ * down: CVODE's global error is not monotone from one tolerance to the next (1e-6 can land
+ * closer than 1e-7), so what is asserted is the bound (error < 100 rtol), the fall over two
+ * decades, and the least-squares order of error against rtol over four decades. */
 static void converges_in_rtol(void)
 {
-  const int n = 400;
+  const int n = 400, K = 5;
   const double hours[] = {5.0, 20.0, 50.0};
   rs_roll_params rp;
   rs_creep_params p = paper_creep(&rp, n, 1e-11);
   wound w0 = wound_from(&rp, n, 682.5), ref = wound_copy(&w0);
   CHECK(hold_stages(&p, &ref, hours, 3, NULL) == RS_OK);
   const double rtols[] = {1e-5, 1e-6, 1e-7, 1e-8, 1e-9};
-  double prev_r = INFINITY, prev_t = INFINITY;
-  for (int k = 0; k < 5; ++k) {
+  double err_r[5], err_t[5];
+  for (int k = 0; k < K; ++k) {
     p.rtol = rtols[k];
     wound w = wound_copy(&w0);
     rs_creep_stats s;
@@ -260,16 +261,30 @@ static void converges_in_rtol(void)
       er = fmax(er, fabs(w.sr[j] - ref.sr[j]));
       et = fmax(et, fabs(w.st[j] - ref.st[j]));
     }
-    er /= ref.core_p;
-    et /= max_abs(ref.st, n);
+    err_r[k] = er / ref.core_p;
+    err_t[k] = et / max_abs(ref.st, n);
     printf("rtol %.0e: sigma_r error %.3e of the core pressure, sigma_theta %.3e of max; "
-           "%ld steps, %ld rhs, %ld GMRES iterations\n", rtols[k], er, et, s.steps, s.rhs, s.lin_iters);
-    CHECK_LT(er, prev_r);
-    CHECK_LT(et, prev_t);
-    CHECK_LT(er, 100.0 * rtols[k]);
-    CHECK_LT(et, 100.0 * rtols[k]);
-    prev_r = er, prev_t = et;
+           "%ld steps, %ld rhs, %ld GMRES iterations\n", rtols[k], err_r[k], err_t[k], s.steps,
+           s.rhs, s.lin_iters);
+    CHECK_LT(err_r[k], 100.0 * rtols[k]);
+    CHECK_LT(err_t[k], 100.0 * rtols[k]);
+    if (k >= 2) {
+      CHECK_LT(err_r[k], err_r[k - 2]);
+      CHECK_LT(err_t[k], err_t[k - 2]);
+    }
     wound_free(&w);
+  }
+  /* order: slope of log(error) against log(rtol) */
+  for (int d = 0; d < 2; ++d) {
+    const double *e = d ? err_t : err_r;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int k = 0; k < K; ++k) {
+      const double x = log10(rtols[k]), y = log10(e[k]);
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double slope = (K * sxy - sx * sy) / (K * sxx - sx * sx);
+    printf("order in rtol (%s): %.3f\n", d ? "sigma_theta" : "sigma_r", slope);
+    CHECK(slope > 0.7 && slope < 1.5); /* measured 0.80 */
   }
   wound_free(&w0);
   wound_free(&ref);
