@@ -30,6 +30,7 @@ layer_of() {
     include/reelsim/roll.h | include/reelsim/nip.h | include/reelsim/nip_contact.h | \
       src/roll/* | src/nip/*) echo 2 ;;
     include/reelsim/problem.h | include/reelsim/reel.h | include/reelsim/defects.h | \
+      include/reelsim/storage.h | src/storage/* | \
       src/reel/*) echo 3 ;;
     include/reelsim/scene.h | src/scene/*) echo 4 ;;
     include/reelsim/output.h | include/reelsim/reader.h | src/output/*) echo 5 ;;

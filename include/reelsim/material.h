@@ -8,7 +8,7 @@
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
 
-enum { RS_TABLE_MAX = 256, RS_HAKIEL_MAX_COEF = 5, RS_NAME_MAX = 128 };
+enum { RS_TABLE_MAX = 256, RS_HAKIEL_MAX_COEF = 5, RS_NAME_MAX = 128, RS_PRONY_MAX = 16 };
 
 typedef enum rs_radial_kind {
   RS_RADIAL_LINEAR,   /* E_r constant */
@@ -40,6 +40,17 @@ double rs_radial_modulus(const rs_radial_law *law, double P);
  * so that the loops vectorise; the roll engine evaluates every layer at every increment). */
 void rs_radial_modulus_n(const rs_radial_law *law, const double *P, double *E, int n);
 
+/* A Prony series of the web's relaxation (storage creep, docs/storage.md): term i relaxes
+ * the fraction w_i of a modulus with relaxation time tau_i,
+ *   E(t) = E (1 - sum_i w_i (1 - exp(-t / tau_i))),
+ * for the hoop modulus E_theta (w_theta) and for the stack law (w_radial). */
+typedef struct rs_prony {
+  int n;                          /* terms; 0 = no viscoelastic data */
+  double tau[RS_PRONY_MAX];       /* h, > 0 */
+  double w_theta[RS_PRONY_MAX];   /* >= 0, sum < 1 */
+  double w_radial[RS_PRONY_MAX];  /* >= 0, sum < 1 */
+} rs_prony;
+
 typedef struct rs_material {
   char name[RS_NAME_MAX];
   double caliper;    /* m: the sheet thickness 2h of the seed paper */
@@ -55,6 +66,12 @@ typedef struct rs_material {
   double density;    /* kg/m^3; 0 = not given */
   double pressure_limit; /* Pa: crushing/blocking pressure (defect check); 0 = not given */
   double friction_layer; /* web-on-web friction coefficient (slip check); 0 = not given */
+  /* Free strains of the web in storage (docs/storage.md): eps* = alpha dT + beta dH. */
+  int has_thermal;       /* material.thermal given */
+  double alpha_r, alpha_theta; /* 1/K: thermal expansion through the stack and along the web */
+  int has_hygroscopic;   /* material.hygroscopic given */
+  double beta_r, beta_theta;   /* 1/%RH: hygroscopic expansion, likewise */
+  rs_prony viscoelastic; /* material.viscoelastic (n = 0: not given) */
 } rs_material;
 
 RS_END_DECLS

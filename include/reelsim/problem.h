@@ -15,7 +15,7 @@
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
 
-enum { RS_MAX_PROFILES = 64 };
+enum { RS_MAX_PROFILES = 64, RS_STORAGE_MAX_STAGES = 256 };
 
 typedef struct rs_numerics {
   int layers_per_step;     /* layers wound per increment */
@@ -33,6 +33,26 @@ typedef struct rs_record_spec {
   double nip_profiles_at[RS_MAX_PROFILES]; /* m, roll radii of those */
 } rs_record_spec;
 
+/* One storage stage (docs/storage.md): the roll is brought to temperature and humidity
+ * (a uniform, instantaneous change from the previous stage's) and then held there for
+ * `hours`. A scene's stage that omits either keeps the previous stage's value here. */
+typedef struct rs_storage_stage {
+  double hours;            /* h, >= 0 */
+  double temperature;      /* C */
+  double humidity;         /* % RH */
+} rs_storage_stage;
+
+/* After the winder: the state the roll is wound in and the stages it is stored through.
+ * n_stages = 0: no storage (nothing of src/storage runs). */
+typedef struct rs_storage_spec {
+  double wind_temperature; /* C, winding.temperature (default 23) */
+  double wind_humidity;    /* % RH, winding.humidity (default 50) */
+  double core_alpha;       /* 1/K, core.alpha: the core's thermal expansion (0 if not given) */
+  double core_beta;        /* 1/%RH, core.beta: its hygroscopic expansion (0 if not given) */
+  int n_stages;
+  rs_storage_stage stage[RS_STORAGE_MAX_STAGES];
+} rs_storage_spec;
+
 typedef struct rs_problem {
   rs_material material;
   rs_core core;
@@ -43,6 +63,7 @@ typedef struct rs_problem {
   rs_nip_spec nip;         /* model RS_NIP_NONE: T0 = web tension */
   rs_numerics numerics;
   rs_record_spec record;
+  rs_storage_spec storage; /* stages after winding (n_stages = 0: none) */
 } rs_problem;
 
 RS_END_DECLS

@@ -30,6 +30,7 @@
 #include "reelsim/problem.h"
 #include "reelsim/reel.h"
 #include "reelsim/defects.h"
+#include "reelsim/storage.h"
 
 /* scenes (YAML -> problem), files */
 #include "reelsim/scene.h"

@@ -8,6 +8,8 @@
 
 typedef char num_t[48];
 
+static void print_storage(FILE *out, const rs_scene *s);
+
 static const char *f(num_t buf, double v)
 {
   ys_fmt(buf, sizeof(num_t), v);
@@ -166,4 +168,36 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
                    : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "
                      "own outer radius)\n");
   print_defect_checks(out, s);
+  print_storage(out, s);
+}
+
+/* After the winder (docs/storage.md): listed only when the scene has storage stages. */
+static void print_storage(FILE *out, const rs_scene *s)
+{
+  num_t a, b, c, d;
+  const rs_storage_spec *sp = &s->problem.storage;
+  const rs_material *m = &s->problem.material;
+  if (sp->n_stages == 0) return;
+  double hours = 0.0;
+  for (int i = 0; i < sp->n_stages; ++i) hours += sp->stage[i].hours;
+  fprintf(out, "  - storage: %d stage%s, %s h, wound at %s C and %s %% RH\n", sp->n_stages,
+          sp->n_stages == 1 ? "" : "s", f(a, hours), f(b, sp->wind_temperature),
+          f(c, sp->wind_humidity));
+  if (m->has_thermal)
+    fprintf(out, "  - thermal expansion: web alpha_r %s, alpha_theta %s, core %s 1/K\n",
+            f(a, m->alpha_r), f(b, m->alpha_theta), f(c, sp->core_alpha));
+  if (m->has_hygroscopic)
+    fprintf(out, "  - hygroscopic expansion: web beta_r %s, beta_theta %s, core %s 1/%% RH\n",
+            f(a, m->beta_r), f(b, m->beta_theta), f(c, sp->core_beta));
+  if (m->viscoelastic.n > 0) {
+    double wt = 0.0, wr = 0.0;
+    for (int i = 0; i < m->viscoelastic.n; ++i) {
+      wt += m->viscoelastic.w_theta[i];
+      wr += m->viscoelastic.w_radial[i];
+    }
+    fprintf(out, "  - creep: Prony series of %d term%s (tau %s .. %s h; relaxes %s of E_theta, "
+                 "%s of the stack law)\n",
+            m->viscoelastic.n, m->viscoelastic.n == 1 ? "" : "s", f(a, m->viscoelastic.tau[0]),
+            f(b, m->viscoelastic.tau[m->viscoelastic.n - 1]), f(c, wt), f(d, wr));
+  }
 }

@@ -300,5 +300,6 @@ rs_status ys_resolve(const yn *root, rs_scene *s)
     return st;
   if ((st = resolve_nip(root, s)) != RS_OK) return st;
   if ((st = resolve_numerics(root, &s->problem.numerics)) != RS_OK) return st;
+  if ((st = ys_resolve_storage(root, s)) != RS_OK) return st;
   return resolve_output(root, s);
 }

@@ -50,6 +50,9 @@ rs_status ys_resolve_material(const yn *root, rs_material *m);
 rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
                             double r1, rs_recipe *out);
 rs_status ys_resolve(const yn *root, rs_scene *scene);
+/* resolve_storage.c: winding temperature and humidity, storage stages, the material's
+ * thermal, hygroscopic and viscoelastic data, the core's expansion (docs/storage.md). */
+rs_status ys_resolve_storage(const yn *root, rs_scene *scene);
 
 /* Reports an error at a dotted scene path; when the key is absent, at its nearest
  * present parent ("file:line: nip.load: required by ..."). */

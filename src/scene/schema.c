@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "reelsim/material.h"
+#include "reelsim/problem.h"
 #include "reelsim/recipe.h"
 #include "reelsim/scene.h"
 
@@ -57,6 +58,19 @@ static const ys_value v_name = STRING(0, RS_NAME_MAX - 1);
 static const ys_value v_source = STRING(0, RS_PATH_MAX - 1);
 static const ys_value v_notes = STRING(0, 1u << 20);
 
+/* After the winder (docs/storage.md): free strains and the Prony series of relaxation */
+static const ys_field thermal_fields[] = {REQ("alpha_r", &v_float), REQ("alpha_theta", &v_float),
+                                          END};
+static const ys_value v_thermal = MAP(thermal_fields);
+static const ys_field hygroscopic_fields[] = {REQ("beta_r", &v_float),
+                                              REQ("beta_theta", &v_float), END};
+static const ys_value v_hygroscopic = MAP(hygroscopic_fields);
+static const ys_value v_prony = {.type = YS_LIST, .entry = &v_float, .min = 1,
+                                 .max = RS_PRONY_MAX};
+static const ys_field viscoelastic_fields[] = {
+    REQ("tau", &v_prony), REQ("E_theta", &v_prony), REQ("radial", &v_prony), END};
+static const ys_value v_viscoelastic = MAP(viscoelastic_fields);
+
 static const ys_field material_fields[] = {
     DEF("name", &v_name, "inline"),
     OPT("source", &v_source),
@@ -72,6 +86,9 @@ static const ys_field material_fields[] = {
     OPT("E_cd", &v_float),
     OPT("nu_md_cd", &v_float),
     REQ("radial", &v_radial),
+    OPT("thermal", &v_thermal),
+    OPT("hygroscopic", &v_hygroscopic),
+    OPT("viscoelastic", &v_viscoelastic),
     END};
 static const ys_value v_material = MAP(material_fields);
 
@@ -79,13 +96,21 @@ static const ys_value v_material = MAP(material_fields);
 static const ys_field core_fields[] = {
     REQ("radius", &v_float),  OPT("stiffness", &v_float), OPT("bore", &v_float),
     OPT("modulus", &v_float), OPT("poisson", &v_float),   OPT("rating", &v_float),
-    END};
+    OPT("alpha", &v_float),   OPT("beta", &v_float),      END};
 static const ys_value v_core = MAP(core_fields);
 
 static const ys_field winding_fields[] = {
     OPT("final_radius", &v_float), OPT("web_length", &v_float), REQ("tension", &v_recipe),
-    OPT("accel_torque", &v_float), END};
+    OPT("accel_torque", &v_float), DEF("temperature", &v_float, "23"),
+    DEF("humidity", &v_float, "50"), END};
 static const ys_value v_winding = MAP(winding_fields);
+
+/* ---- storage after the winder (docs/storage.md) ----------------------------------------- */
+static const ys_field stage_fields[] = {REQ("hours", &v_float), OPT("temperature", &v_float),
+                                        OPT("humidity", &v_float), END};
+static const ys_value v_stage = MAP(stage_fields);
+static const ys_value v_storage = {.type = YS_LIST, .entry = &v_stage, .min = 1,
+                                   .max = RS_STORAGE_MAX_STAGES};
 
 /* ---- nip ------------------------------------------------------------------------------ */
 static const ys_name nip_models[] = {
@@ -163,6 +188,7 @@ static const ys_field scene_fields[] = {
     REQ("core", &v_core),
     REQ("winding", &v_winding),
     OPT("nip", &v_nip),
+    OPT("storage", &v_storage),
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
     END};

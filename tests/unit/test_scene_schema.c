@@ -30,7 +30,11 @@ static int documented(const char *key)
 static int walk_docs(const ys_value *v, const char *path)
 {
   int n = 0;
-  if (v->type == YS_LIST) return walk_docs(v->entry, path);
+  if (v->type == YS_LIST) { /* a list's entries are reached by index: storage[0].hours */
+    char sub[256];
+    snprintf(sub, sizeof sub, "%s[0]", path);
+    return walk_docs(v->entry, sub);
+  }
   if (v->type != YS_MAP) return 0;
   for (const ys_field *f = v->fields; f->key; ++f) {
     char sub[256];

@@ -1,0 +1,60 @@
+/* After the winder: a wound roll stored through stages of temperature, humidity and time
+ * (docs/storage.md). Each stage first brings the whole roll to its temperature and humidity
+ * (the elastic response to the free thermal and hygroscopic strains of web and core, with
+ * the stack's current tangent modulus) and then holds it there for the stage's hours
+ * (viscoelastic creep, when the material has a Prony series). The defect rules run after
+ * every stage. Physics on a result: no I/O. */
+#ifndef REELSIM_STORAGE_H
+#define REELSIM_STORAGE_H
+
+#include "reelsim/defects.h"
+#include "reelsim/problem.h"
+#include "reelsim/reel.h"
+#include "reelsim/status.h"
+
+#include "reelsim/export.h"
+RS_BEGIN_DECLS
+
+typedef struct rs_storage_result {
+  int n_stages;              /* S = storage stages + 1: stage 0 is the wound roll */
+  int n_layers;              /* N */
+  double *hours;             /* S: h of storage at the end of each stage, cumulative (0 first) */
+  double *temperature;       /* S: C */
+  double *humidity;          /* S: % RH */
+  double *core_pressure;     /* S: Pa, compression positive */
+  double *sigma_r;           /* S x N, row-major: Pa at each layer's outer radius */
+  double *sigma_theta;       /* S x N: Pa, each layer's mean hoop stress */
+  rs_defect_report **defects;/* S: the defect rules after each stage */
+  long elastic_solves;       /* tridiagonal solves of the temperature/humidity changes */
+  int max_substeps;          /* the most sub-steps one change needed */
+  double wall_seconds;
+} rs_storage_result;
+
+/* 1 when the problem has storage stages (problem->storage.n_stages > 0). */
+int rs_storage_requested(const rs_problem *problem);
+
+/* Stores the wound roll `wound` (the result of winding `problem`) through the problem's
+ * stages. Stage 0 of the result is `wound` itself. Caller owns *out
+ * (rs_storage_result_destroy). On a failure *out holds the stages finished (n_stages
+ * counts them) and the error record says why. */
+rs_status rs_storage_run(const rs_problem *problem, const rs_reel_result *wound,
+                         rs_storage_result **out);
+void rs_storage_result_destroy(rs_storage_result **res);
+
+/* Stage s of a storage result as a reel result (radius from `wound`, the stage's stresses
+ * and core pressure): a view into both, valid while they live; nothing to free. The
+ * winding-only fields (tensions, history, nip) are those of `wound`. */
+void rs_storage_stage_view(const rs_storage_result *res, const rs_reel_result *wound, int s,
+                           rs_reel_result *view);
+
+/* The stage (0 .. S-1) where each defect rule reads worst, -1 when it was assessed at no
+ * stage: hoop compression and buckling by the least hoop stress / margin, pressure by the
+ * greatest ratio to its limit (or pressure), slip by the least margin, the core by the
+ * core pressure. */
+typedef struct rs_storage_worst {
+  int hoop, buckling, pressure, slip, core;
+} rs_storage_worst;
+void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *worst);
+
+RS_END_DECLS
+#endif
