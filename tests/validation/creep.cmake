@@ -1,3 +1,3 @@
 rs_test(test_creep validation SOURCES validation/test_creep.c
         CASES proportional one_turn_hoop one_turn_radial bvp_vs_lekhnitskii converges_in_rtol
-              storage_pressure_decays fails_cleanly)
+              storage_pressure_decays fails_cleanly scene_proportional)

@@ -7,7 +7,9 @@
 
 #include "check.h"
 #include "roll_helpers.h"
+#include "reelsim/scene.h"
 #include "reelsim/status.h"
+#include "reelsim/storage.h"
 #include "storage/creep.h"
 
 /* the wound roll's stresses, copied out of the winding engine */
@@ -360,6 +362,56 @@ static void fails_cleanly(void)
   wound_free(&w);
 }
 
+/* Through the scene and the storage driver: a linear roll on a rigid core, nu = 0, the
+ * same two Prony terms on E_theta and on the stack: every stage's stresses are f(hours)
+ * times the wound roll's (the proportional case above), over stages of 2, 8 and 20 h. */
+static void scene_proportional(void)
+{
+  const char *text = "title: creep end to end\n"
+                     "material: {name: m, caliper: 1.0e-4, E_theta: 2.0e9, nu_rtheta: 0.0,\n"
+                     "  radial: {law: linear, E_r: 2.0e6},\n"
+                     "  viscoelastic: {tau: [3.0, 40.0], E_theta: [0.1, 0.2], radial: [0.1, 0.2]}}\n"
+                     "core: {radius: 0.05}\n"
+                     "winding: {final_radius: 0.08, tension: 300}\n"
+                     "numerics: {rtol: 1.0e-9}\n"
+                     "storage:\n  - {hours: 2}\n  - {hours: 8}\n  - {hours: 20}\n";
+  rs_scene *sc = NULL;
+  rs_status st = rs_scene_load_text("creep.yaml", text, strlen(text), 0, NULL, &sc);
+  CHECK(st == RS_OK);
+  if (st) {
+    fprintf(stderr, "%s\n", rs_error_message());
+    return;
+  }
+  rs_reel_result *wound_r = NULL;
+  CHECK(rs_scene_wind(sc, NULL, &wound_r) == RS_OK);
+  rs_storage_result *res = NULL;
+  st = rs_storage_run(rs_scene_problem(sc), wound_r, &res);
+  CHECK(st == RS_OK);
+  if (st) fprintf(stderr, "%s\n", rs_error_message());
+  if (res) {
+    const int n = res->n_layers;
+    CHECK(res->n_stages == 4);
+    const double scale_t = max_abs(res->sigma_theta, n);
+    for (int s = 1; s < res->n_stages; ++s) {
+      const double T = res->hours[s];
+      const double f = 1.0 - 0.1 * (1.0 - exp(-T / 3.0)) - 0.2 * (1.0 - exp(-T / 40.0));
+      double er = fabs(res->core_pressure[s] - f * res->core_pressure[0]), et = 0.0;
+      for (int j = 0; j < n; ++j) {
+        er = fmax(er, fabs(res->sigma_r[(long)s * n + j] - f * res->sigma_r[j]));
+        et = fmax(et, fabs(res->sigma_theta[(long)s * n + j] - f * res->sigma_theta[j]));
+      }
+      printf("stage %d (%g h): f = %.9f, core pressure ratio %.9f; max error sigma_r %.2e of "
+             "the core pressure, sigma_theta %.2e\n", s, T, f,
+             res->core_pressure[s] / res->core_pressure[0], er / res->core_pressure[0], et / scale_t);
+      CHECK_LT(er / res->core_pressure[0], 1e-6);
+      CHECK_LT(et / scale_t, 1e-6);
+    }
+  }
+  rs_storage_result_destroy(&res);
+  rs_reel_result_destroy(&wound_r);
+  rs_scene_destroy(&sc);
+}
+
 static const check_case cases[] = {
   {"proportional", proportional},
   {"one_turn_hoop", one_turn_hoop},
@@ -368,6 +420,7 @@ static const check_case cases[] = {
   {"converges_in_rtol", converges_in_rtol},
   {"storage_pressure_decays", storage_pressure_decays},
   {"fails_cleanly", fails_cleanly},
+  {"scene_proportional", scene_proportional},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
