@@ -7,6 +7,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
+#include "reelsim/storage.h"
 
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
@@ -14,6 +15,10 @@ RS_BEGIN_DECLS
 /* Writes the result to `path`: first to a temporary name beside it, renamed onto
  * `path` only when complete, so a failed run never leaves a file that looks whole. */
 rs_status rs_output_write(const char *path, const rs_scene *scene, const rs_reel_result *res);
+/* The same with the storage stages (rs_storage_run) under /storage (docs/output.md);
+ * storage NULL: exactly rs_output_write. */
+rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
+                                 const rs_reel_result *res, const rs_storage_result *storage);
 
 /* CSV export (docs/output.md): writes DIR/<name>-profile.csv (layer, radius_m, sigma_r_Pa,
  * sigma_theta_Pa, pressure_Pa, wound_on_tension_N_per_m) and DIR/<name>-wot.csv (radius_m,

@@ -8,6 +8,7 @@
 #include "cli/args.h"
 #include "cli/fail.h"
 #include "reelsim/defects.h"
+#include "reelsim/storage.h"
 
 int cli_run(const cli_args *a);
 int cli_check(const cli_args *a);
@@ -23,5 +24,7 @@ int cli_nip(const cli_args *a);
  * lines of the run summary. */
 void cli_fmt_stress(char *buf, size_t size, double pa);
 void cli_print_defects(FILE *out, const rs_defect_report *rep);
+/* The storage stages and the stage where each defect rule reads worst (summary_storage.c). */
+void cli_print_storage(FILE *out, const rs_storage_result *sr);
 
 #endif

@@ -26,6 +26,7 @@
 #include "cli/signals.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "reelsim/storage.h"
 
 typedef struct progress {
   int done, total;
@@ -76,7 +77,7 @@ static int on_progress(void *user, int layers_done, int layers_total)
 
 static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const rs_reel_summary *s, const rs_defect_report *defects,
-                          const char *csv_dir, double wall)
+                          const rs_storage_result *storage, const char *csv_dir, double wall)
 {
   char a[64], b[64];
   printf("%s\n", rs_scene_title(scene));
@@ -103,6 +104,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
+  cli_print_storage(stdout, storage);
 }
 
 /* Writes the finished part of a run that stopped early (--keep-partial). Returns 1 when a
@@ -135,6 +137,7 @@ int cli_run(const cli_args *a)
   rs_scene *scene = NULL;
   rs_reel_result *res = NULL;
   rs_defect_report *defects = NULL;
+  rs_storage_result *storage = NULL;
   int code = CLI_EXIT_OK;
   /* a --csv path that cannot be a directory must not cost a whole winding */
   if (a->csv_dir && (code = cli_outdir_check("--csv", a->csv_dir)) != CLI_EXIT_OK) goto done;
@@ -189,7 +192,17 @@ int cli_run(const cli_args *a)
   rs_defect_limits limits;
   rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
   st = rs_defects_assess(res, &limits, &defects);
-  if (st == RS_OK) st = rs_output_write(rs_scene_output_file(scene), scene, res);
+  /* after the winder: the storage stages (docs/storage.md), only when the scene has them */
+  if (st == RS_OK && rs_storage_requested(rs_scene_problem(scene))) {
+    st = rs_storage_run(rs_scene_problem(scene), res, &storage);
+    if (st != RS_OK) {
+      rs_error_wrap("%s", rs_scene_path(scene));
+      code = cli_fail_status(st);
+      fprintf(stderr, "reelsim:   the roll was wound; no output written\n");
+      goto done;
+    }
+  }
+  if (st == RS_OK) st = rs_output_write_stored(rs_scene_output_file(scene), scene, res, storage);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
     cli_outdir made;
@@ -206,9 +219,11 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (!a->quiet) print_summary(scene, res, &sum, defects, a->csv_dir, rs_clock_wall() - t0);
+  if (!a->quiet)
+    print_summary(scene, res, &sum, defects, storage, a->csv_dir, rs_clock_wall() - t0);
 
 done:
+  rs_storage_result_destroy(&storage);
   rs_defect_report_destroy(&defects);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);

@@ -32,6 +32,9 @@ typedef struct run_data {
 } run_data;
 
 rs_status plot_run_read(const plot_ctx *c, int i, run_data *d);
+/* plot_storage.c: <stem>-storage-pressure.png, -storage-hoop.png (by stage) and
+ * -storage-core.png (core pressure against storage time) when the run has /storage. */
+rs_status plot_storage_figures(plot_ctx *c, const run_data *d);
 void plot_run_free(run_data *d);
 
 enum { PLOT_PATH = 4096 };

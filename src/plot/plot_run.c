@@ -238,5 +238,6 @@ rs_status plot_run_figures(plot_ctx *c, const run_data *d)
   rs_status st = fig_pressure(c, d);
   if (st == RS_OK) st = fig_hoop(c, d);
   if (st == RS_OK) st = fig_tension(c, d);
+  if (st == RS_OK) st = plot_storage_figures(c, d); /* only when the file has /storage */
   return st;
 }

@@ -125,7 +125,7 @@ rs_status rs_storage_run(const rs_problem *problem, const rs_reel_result *wound,
   return st;
 }
 
-/* worse(a, b): a is strictly worse than b (b < 0: none yet) */
+/* v is the first value seen or below the best so far */
 static int first_or_less(double v, double best, int have) { return !have || v < best; }
 
 void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *w)
@@ -144,8 +144,8 @@ void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *w)
       buck = d->buckling.margin_min;
       w->buckling = s;
     }
-    if (d->pressure.verdict != RS_DEFECT_NOT_ASSESSED &&
-        first_or_less(-d->pressure.max, -pres, w->pressure >= 0)) {
+    /* the greatest pressure and the core pressure are figures with or without a limit */
+    if (res->n_layers > 0 && first_or_less(-d->pressure.max, -pres, w->pressure >= 0)) {
       pres = d->pressure.max;
       w->pressure = s;
     }
@@ -154,8 +154,7 @@ void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *w)
       slip = d->slip.margin_min;
       w->slip = s;
     }
-    if (d->core.verdict != RS_DEFECT_NOT_ASSESSED &&
-        first_or_less(-d->core.pressure, -core, w->core >= 0)) {
+    if (res->n_layers > 0 && first_or_less(-d->core.pressure, -core, w->core >= 0)) {
       core = d->core.pressure;
       w->core = s;
     }

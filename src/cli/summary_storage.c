@@ -1,0 +1,82 @@
+/* The "storage" part of the run summary (docs/storage.md): one line per stage, then the
+ * stage where each defect rule reads worst, with a WARNING where a rule flags risk there. */
+#include <math.h>
+#include <stdio.h>
+
+#include "cli/cli.h"
+
+static void stage_line(FILE *out, const rs_storage_result *sr, int s)
+{
+  char a[64], b[64], c[64];
+  const int n = sr->n_layers;
+  const double *r = sr->sigma_r + (size_t)s * n, *t = sr->sigma_theta + (size_t)s * n;
+  double peak = sr->core_pressure[s], hoop = INFINITY;
+  for (int j = 0; j < n; ++j) {
+    if (-r[j] > peak) peak = -r[j]; /* no libm in the program: plain comparisons */
+    if (t[j] < hoop) hoop = t[j];
+  }
+  cli_fmt_stress(a, sizeof a, sr->core_pressure[s]);
+  cli_fmt_stress(b, sizeof b, peak);
+  cli_fmt_stress(c, sizeof c, hoop);
+  fprintf(out, "  %5d %8.1f %7.1f %6.1f  %14s %14s %14s\n", s, sr->hours[s], sr->temperature[s],
+          sr->humidity[s], a, b, c);
+}
+
+static void worst_line(FILE *out, const char *rule, const rs_storage_result *sr, int s,
+                       rs_defect_verdict v, const char *what)
+{
+  if (s < 0) {
+    fprintf(out, "  %-18s not assessed\n", rule);
+    return;
+  }
+  fprintf(out, "  %-18s worst at stage %d (%.1f h): %s\n", rule, s, sr->hours[s], what);
+  if (v == RS_DEFECT_RISK)
+    fprintf(out, "  WARNING: %s at risk after storage stage %d (%.1f h, %.1f C, %.1f %% RH)\n",
+            rule, s, sr->hours[s], sr->temperature[s], sr->humidity[s]);
+}
+
+void cli_print_storage(FILE *out, const rs_storage_result *sr)
+{
+  char a[96], x[64];
+  rs_storage_worst w;
+  if (!sr) return;
+  fprintf(out, "storage:\n");
+  fprintf(out, "  %d stage%s after winding, %.1f h; %ld elastic solves, at most %d sub-steps a "
+               "change, %.3f s\n",
+          sr->n_stages - 1, sr->n_stages == 2 ? "" : "s", sr->hours[sr->n_stages - 1],
+          sr->elastic_solves, sr->max_substeps, sr->wall_seconds);
+  fprintf(out, "  %5s %8s %7s %6s  %14s %14s %14s\n", "stage", "hours", "T (C)", "RH (%)",
+          "core pressure", "peak pressure", "min hoop");
+  for (int s = 0; s < sr->n_stages; ++s) stage_line(out, sr, s);
+  rs_storage_worst_stages(sr, &w);
+  const rs_defect_report *const *d = (const rs_defect_report *const *)sr->defects;
+  if (w.hoop >= 0) {
+    cli_fmt_stress(x, sizeof x, d[w.hoop]->hoop.min);
+    snprintf(a, sizeof a, "least %s", x);
+  }
+  worst_line(out, "hoop stress", sr, w.hoop, RS_DEFECT_OK, a);
+  if (w.buckling >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.buckling]->buckling.margin_min);
+  worst_line(out, "hoop buckling", sr, w.buckling,
+             w.buckling >= 0 ? d[w.buckling]->buckling.verdict : RS_DEFECT_NOT_ASSESSED, a);
+  if (w.pressure >= 0) {
+    cli_fmt_stress(x, sizeof x, d[w.pressure]->pressure.max);
+    if (d[w.pressure]->pressure.verdict == RS_DEFECT_NOT_ASSESSED)
+      snprintf(a, sizeof a, "%s (no material.pressure_limit)", x);
+    else
+      snprintf(a, sizeof a, "%s (%.3g of the limit)", x, d[w.pressure]->pressure.ratio);
+  }
+  worst_line(out, "pressure", sr, w.pressure,
+             w.pressure >= 0 ? d[w.pressure]->pressure.verdict : RS_DEFECT_NOT_ASSESSED, a);
+  if (w.slip >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.slip]->slip.margin_min);
+  worst_line(out, "interlayer slip", sr, w.slip,
+             w.slip >= 0 ? d[w.slip]->slip.verdict : RS_DEFECT_NOT_ASSESSED, a);
+  if (w.core >= 0) {
+    cli_fmt_stress(x, sizeof x, d[w.core]->core.pressure);
+    if (d[w.core]->core.verdict == RS_DEFECT_NOT_ASSESSED)
+      snprintf(a, sizeof a, "%s (no core.rating)", x);
+    else
+      snprintf(a, sizeof a, "%s (%.3g of the rating)", x, d[w.core]->core.ratio);
+  }
+  worst_line(out, "core pressure", sr, w.core, w.core >= 0 ? d[w.core]->core.verdict : RS_DEFECT_NOT_ASSESSED,
+             a);
+}
