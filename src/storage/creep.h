@@ -66,7 +66,7 @@ void rs_creep_get_stats(const rs_creep *c, rs_creep_stats *stats);
 
 /* The elastic problem one right-hand side solves (exposed for the tests): the face stress
  * rates ds[0..n) (face n is free: 0) of the roll whose turns have the creep strain rates
- * c_r[n], c_theta[n] and glassy stack moduli E_r[n] (per turn). Work array of 2n. */
+ * c_r[n], c_theta[n] and glassy stack moduli E_r[n] (per turn). Work array of n. */
 void rs_creep_bvp(const rs_creep_params *p, const double *E_r, const double *c_r,
                   const double *c_theta, double *ds, double *work);
 
