@@ -48,6 +48,14 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
   fprintf(out, "  %5s %8s %7s %6s  %14s %14s %14s\n", "stage", "hours", "T (C)", "RH (%)",
           "core pressure", "peak pressure", "min hoop");
   for (int s = 0; s < sr->n_stages; ++s) stage_line(out, sr, s);
+  /* an interface in radial tension: real layers would part there (docs/storage.md, Limits) */
+  for (int s = 1; s < sr->n_stages; ++s) {
+    int apart = 0;
+    for (int j = 0; j < sr->n_layers - 1; ++j) apart += sr->sigma_r[(size_t)s * sr->n_layers + j] > 0.0;
+    if (apart > 0)
+      fprintf(out, "  note: stage %d leaves %d interface%s in radial tension (sigma_r > 0): the "
+                   "layers would part there\n", s, apart, apart == 1 ? "" : "s");
+  }
   rs_storage_worst_stages(sr, &w);
   const rs_defect_report *const *d = (const rs_defect_report *const *)sr->defects;
   if (w.hoop >= 0) {

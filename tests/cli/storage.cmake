@@ -18,3 +18,13 @@ rs_cli_test(storage_prony_lengths 2
 rs_cli_test(storage_humidity_range 2 [=[winding\.humidity=120: must lie in \[0, 100\]]=]
             check ${SC}/storage-small.yaml --set winding.humidity=120)
 rs_cli_script(storage_plot storage_plot.sh ${SC}/storage-small.yaml)
+rs_cli_test(storage_no_hygroscopic 2
+            [[storage\[0\]\.humidity=80: changes the humidity \(50 -> 80 % RH\) but the material has no material\.hygroscopic]]
+            check ${SC}/bad-storage-thermal.yaml --set storage[0].humidity=80)
+rs_cli_test(storage_negative_hours 2 [[storage\[0\]\.hours=-1: must be >= 0 h]]
+            check ${SC}/storage-small.yaml --set storage[0].hours=-1)
+rs_cli_test(storage_tau_positive 2 [[material\.viscoelastic\.tau\[1\]=0: must be > 0 h]]
+            check ${SC}/bad-prony-sum.yaml --set material.viscoelastic.E_theta[0]=0.1
+            --set material.viscoelastic.tau[1]=0)
+rs_cli_test(storage_layers_part 0 [[note: stage 1 leaves [0-9]+ interfaces in radial tension]]
+            run ${SC}/storage-loose.yaml -o storage-loose.h5)
