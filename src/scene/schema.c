@@ -147,7 +147,7 @@ static const ys_field nip_fields[] = {
     DEF_WHEN("winder", &v_winder, "center", "model", "!none"),
     DEF_WHEN("torque_share", &v_float, "0.5", "winder", "center-surface"),
     OPT("drum", &v_drum),
-    DEF_WHEN("nodes", &v_int, "64", "model", "!none"),
+    DEF_WHEN("nodes", &v_int, "96", "model", "!none"),
     DEF_WHEN("terms", &v_int, "0", "model", "!none"),
     DEF_WHEN("update", &v_nip_update, "adaptive", "model", "!none"),
     DEF_WHEN("update_every", &v_int, "1", "update", "every"),

@@ -132,8 +132,8 @@ small_quick) # into a directory made as mkdir -p would
 nip_quick)
   run "$bin" study "$sc/study-nip.yaml" --quick -o "$tmp/out"
   [ "$got" -eq 0 ] || fail "exit status $got, expected 0"
-  has "^reference: +rtol 1e-09, 1 layer per step, nip 96 nodes, 512 terms, nip every 1 layer$"
-  for k in nodes=16 terms=16 T0_rtol=0.01 update_every=10; do has "^$k "; done
+  has "^reference: +rtol 1e-09, 1 layer per step, nip 128 nodes, 512 terms, nip every 1 layer$"
+  for k in nodes=32 terms=16 T0_rtol=0.01 update_every=10; do has "^$k "; done
   check_study "$tmp/out" nip
   ;;
 bad_input)

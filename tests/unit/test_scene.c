@@ -127,7 +127,7 @@ static void contract_scene(void)
   CHECK(s->problem.tension.law == RS_RECIPE_CONSTANT && s->problem.tension.start == 350);
   CHECK(s->problem.nip.model == RS_NIP_FRICTION && s->problem.nip.mu_roll == 0.19);
   CHECK(s->problem.nip.load.law == RS_RECIPE_CONSTANT && s->problem.nip.load.start == 1750);
-  CHECK(s->problem.nip.nodes == 64 && s->problem.nip.winder == RS_WINDER_CENTER);
+  CHECK(s->problem.nip.nodes == 96 && s->problem.nip.winder == RS_WINDER_CENTER);
   CHECK(s->problem.numerics.layers_per_step == 1 && s->problem.numerics.rtol == 1e-6);
   CHECK(strcmp(s->output.file, "newsprint-rider.h5") == 0);
   rs_scene_destroy(&s);
@@ -211,11 +211,11 @@ static void defaults_filled(void)
   }
   rs_scene_destroy(&s);
 
-  /* a nip fills its own defaults: winder center, 64 nodes */
+  /* a nip fills its own defaults: winder center, 96 nodes */
   const char *nip[] = {"nip.model=friction", "nip.load=1000", "nip.friction.roll=0.2"};
   s = load(path, 3, nip);
   if (s) {
-    CHECK(s->problem.nip.model == RS_NIP_FRICTION && s->problem.nip.nodes == 64);
+    CHECK(s->problem.nip.model == RS_NIP_FRICTION && s->problem.nip.nodes == 96);
     CHECK(s->problem.nip.winder == RS_WINDER_CENTER && s->problem.nip.mu_roll == 0.2);
   }
   rs_scene_destroy(&s);
