@@ -36,7 +36,8 @@ int main(int argc, char **argv)
   }
   if (strcmp(cmd, "--bash-completion") == 0) return cli_bash_completion(stdout);
   if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
-    if (strcmp(cmd, "help") != 0 || argc < 3 || strcmp(argv[2], "help") == 0) {
+    if (strcmp(cmd, "help") != 0 || argc < 3 || strcmp(argv[2], "help") == 0 ||
+        strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0) {
       cli_usage(stdout, NULL);
       return CLI_EXIT_OK;
     }

@@ -12,9 +12,9 @@ bin="$1"; sc="$2"; cmd="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 
-commands="run check compare plot study nip sweep"
+commands="run check compare plot study nip sweep optimize"
 if [ "$cmd" = general ]; then
-  for how in --help -h help; do
+  for how in --help -h help "help help" "help --help" "help -h"; do
     run "$bin" $how
     [ "$got" -eq 0 ] || fail "reelsim $how: exit $got"
     for c in $commands help; do has "^  $c( |$)"; done
