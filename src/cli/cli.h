@@ -8,6 +8,7 @@
 #include "cli/args.h"
 #include "cli/fail.h"
 #include "reelsim/defects.h"
+#include "reelsim/scene.h"
 #include "reelsim/storage.h"
 
 int cli_run(const cli_args *a);
@@ -34,5 +35,8 @@ void cli_fmt_stress(char *buf, size_t size, double pa);
 void cli_print_defects(FILE *out, const rs_defect_report *rep);
 /* The storage stages and the stage where each defect rule reads worst (summary_storage.c). */
 void cli_print_storage(FILE *out, const rs_storage_result *sr);
+/* A note on stderr when the scene has storage stages that `command` does not simulate
+ * (only `reelsim run` does; docs/storage.md). */
+void cli_note_storage_ignored(const rs_scene *scene, const char *command);
 
 #endif

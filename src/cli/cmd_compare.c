@@ -51,7 +51,10 @@ static int load_all(compare_state *c, const cli_args *a, int n_sets, const char 
   int code = CLI_EXIT_OK;
   for (int i = 0; i < c->n; ++i) {
     rs_status st = rs_scene_load(a->scenes[i], n_sets, sets, &c->scenes[i]);
-    if (st == RS_OK) continue;
+    if (st == RS_OK) {
+      cli_note_storage_ignored(c->scenes[i], "compare");
+      continue;
+    }
     int k = cli_fail_status(st);
     /* bad input decides the status; an I/O or memory failure only if there is none */
     if (code != CLI_EXIT_USAGE && (k == CLI_EXIT_USAGE || code == CLI_EXIT_OK)) code = k;

@@ -193,6 +193,14 @@ int cli_run(const cli_args *a)
   /* after the winder: the storage stages (docs/storage.md), only when the scene has them */
   if (st == RS_OK && rs_storage_requested(rs_scene_problem(scene))) {
     st = rs_storage_run(rs_scene_problem(scene), res, &storage);
+    /* the stages are not interruptible from inside (they are short against the winding):
+     * a signal during them is honoured when they return, and nothing is written */
+    int sig = cli_signal_caught();
+    if (sig) {
+      code = cli_fail(cli_signal_exit_code(sig), "%s during storage (the roll was wound; no output written)",
+                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+      goto done;
+    }
     if (st != RS_OK) {
       rs_error_wrap("%s", rs_scene_path(scene));
       code = cli_fail_status(st);

@@ -88,3 +88,12 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
   worst_line(out, "core pressure", sr, w.core, w.core >= 0 ? d[w.core]->core.verdict : RS_DEFECT_NOT_ASSESSED,
              a);
 }
+
+void cli_note_storage_ignored(const rs_scene *scene, const char *command)
+{
+  if (!scene || !rs_storage_requested(rs_scene_problem(scene))) return;
+  fprintf(stderr,
+          "reelsim: note: %s has storage stages; `reelsim %s` winds the reel only (the stages "
+          "are simulated by `reelsim run`)\n",
+          rs_scene_path(scene), command);
+}
