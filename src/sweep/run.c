@@ -80,6 +80,13 @@ static void keep_profile(const rs_reel_result *res, rs_output_profile *prof)
   *prof = (rs_output_profile){(int)n, block, block + n, block + 2 * n};
 }
 
+/* A failed run does not sink the sweep, but why it failed is said (on the stderr of the
+ * process that wound it), not only recorded as a status. */
+static void say_failed(int i, const char *why)
+{
+  fprintf(stderr, "reelsim: sweep: run %d failed: %s\n", i + 1, why && why[0] ? why : "(no message)");
+}
+
 void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
                    rs_output_profile *prof)
 {
@@ -92,6 +99,7 @@ void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
     st = rs_scene_wind(scene, &opts, &res);
   }
   double wall = rs_clock_wall() - t0;
+  if (st != RS_OK) say_failed(i, rs_error_message());
   sweep_figures_compute(scene ? rs_scene_problem(scene) : NULL, res, st, wall, fig);
   if (prof) {
     if (st == RS_OK) keep_profile(res, prof);
@@ -133,6 +141,7 @@ static rs_status wind_batch(const sweep_spec *spec, int first, int n, sweep_resu
   for (int j = 0; st == RS_OK && j < n; ++j) {
     int i = first + j;
     double fig[SWEEP_N_FIGURES];
+    if (jobs[j].status != RS_OK) say_failed(i, jobs[j].message);
     sweep_figures_compute(scenes[j] ? rs_scene_problem(scenes[j]) : NULL, jobs[j].result,
                           jobs[j].status, jobs[j].wall_seconds + load_each, fig);
     for (int f = 0; f < SWEEP_N_FIGURES; ++f) out->figures[(size_t)f * out->n_runs + i] = fig[f];

@@ -96,6 +96,7 @@ failed_run)
   run "$bin" sweep "$scene" --vary numerics.max_steps=1,5000 --csv f.csv -o f.h5
   [ "$got" -eq 0 ] || fail "a failed run sank the sweep"
   has "sweep: 2 runs on .*, 1 failed"
+  has "sweep: run 1 failed: .*CVODE needed more than 1 steps"
   [ "$(col f.csv status 1)" = 3 ] && [ "$(col f.csv status 2)" = 0 ] || fail "statuses"
   [ -z "$(col f.csv core_pressure 1)" ] || fail "a failed run has a core pressure"
   [ -n "$(col f.csv core_pressure 2)" ] || fail "the good run lacks its core pressure"
