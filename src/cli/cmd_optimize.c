@@ -155,7 +155,10 @@ static int name_outputs(const cli_args *a, opt_cli *c)
     if (slash == dir) slash[1] = '\0';
     else *slash = '\0';
     struct stat st;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+    if (stat(dir, &st) != 0)
+      return cli_fail(CLI_EXIT_USAGE, "optimize: %s %s: directory '%s' does not exist", flags[i],
+                      files[i], dir);
+    if (!S_ISDIR(st.st_mode))
       return cli_fail(CLI_EXIT_USAGE, "optimize: %s %s: %s is not a directory", flags[i], files[i], dir);
   }
   if (strcmp(c->output, c->history) == 0)

@@ -147,7 +147,7 @@ bad_input)
   expect 2 "--vary material\.caliper=-1:1e-4: .*material\.caliper" \
     "$small" --vary material.caliper=-1:1e-4 --maximize core_pressure
   expect 2 "give at least one --vary" "$small" --maximize core_pressure
-  expect 2 "-o nodir/best\.yaml: nodir is not a directory" "$small" "${ok[@]}" -o nodir/best.yaml
+  expect 2 "-o nodir/best\.yaml: directory 'nodir' does not exist" "$small" "${ok[@]}" -o nodir/best.yaml
   expect 2 "--history bad\.csv/h\.h5: bad\.csv is not a directory" "$small" "${ok[@]}" --history bad.csv/h.h5
   ;;
 infeasible)
