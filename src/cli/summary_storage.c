@@ -41,10 +41,10 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
   rs_storage_worst w;
   if (!sr) return;
   fprintf(out, "storage:\n");
-  fprintf(out, "  %d stage%s after winding, %.1f h; %ld elastic solves, at most %d sub-steps a "
+  fprintf(out, "  %d stage%s after winding, %.1f h; %ld elastic solves, at most %d sub-step%s a "
                "change, %.3f s\n",
           sr->n_stages - 1, sr->n_stages == 2 ? "" : "s", sr->hours[sr->n_stages - 1],
-          sr->elastic_solves, sr->max_substeps, sr->wall_seconds);
+          sr->elastic_solves, sr->max_substeps, sr->max_substeps == 1 ? "" : "s", sr->wall_seconds);
   fprintf(out, "  %5s %8s %7s %6s  %14s %14s %14s\n", "stage", "hours", "T (C)", "RH (%)",
           "core pressure", "peak pressure", "min hoop");
   for (int s = 0; s < sr->n_stages; ++s) stage_line(out, sr, s);
