@@ -78,7 +78,8 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
 
 /* run --json: the summary as one JSON object (docs/cli.md, "JSON"). */
 static void print_json(const rs_scene *scene, const rs_reel_result *res,
-                       const rs_defect_report *defects, const char *csv_dir, double wall)
+                       const rs_defect_report *defects, const rs_storage_result *storage,
+                       const char *csv_dir, double wall)
 {
   cli_json j;
   cli_json_init(&j, stdout);
@@ -86,6 +87,7 @@ static void print_json(const rs_scene *scene, const rs_reel_result *res,
   cli_json_string(&j, "reelsim", RS_VERSION_STRING);
   cli_json_string(&j, "command", "run");
   cli_json_run_fields(&j, scene, res, defects);
+  cli_json_storage(&j, storage);
   cli_json_number(&j, "wall_seconds", wall);
   cli_json_string(&j, "output", rs_scene_output_file(scene));
   if (csv_dir) {
@@ -225,7 +227,7 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  if (a->json) print_json(scene, res, defects, a->csv_dir, rs_clock_wall() - t0);
+  if (a->json) print_json(scene, res, defects, storage, a->csv_dir, rs_clock_wall() - t0);
   else if (!a->quiet)
     print_summary(scene, res, &sum, defects, storage, a->csv_dir, rs_clock_wall() - t0);
 

@@ -7,9 +7,9 @@
 
 #include "reelsim/scene.h"
 
-static void defects(cli_json *j, const rs_defect_report *d)
+static void defects(cli_json *j, const char *key, const rs_defect_report *d)
 {
-  cli_json_object(j, "defects");
+  cli_json_object(j, key);
   cli_json_object(j, "hoop");
   cli_json_string(j, "verdict", rs_defect_verdict_name(d->hoop.verdict));
   cli_json_int(j, "layers", d->hoop.layers);
@@ -82,6 +82,45 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   cli_json_number(j, "solver_seconds", res->wall_seconds);
   cli_json_int(j, "increments", res->increments);
   cli_json_int(j, "cvode_steps", res->cvode_steps);
-  if (d) defects(j, d);
+  if (d) defects(j, "defects", d);
   else cli_json_null(j, "defects");
+}
+
+void cli_json_storage(cli_json *j, const rs_storage_result *sr)
+{
+  if (!sr) {
+    cli_json_null(j, "storage");
+    return;
+  }
+  const int S = sr->n_stages;
+  const struct {
+    const char *key;
+    const double *v;
+  } rows[] = {{"hours", sr->hours},
+              {"temperature", sr->temperature},
+              {"humidity", sr->humidity},
+              {"core_pressure", sr->core_pressure}};
+  cli_json_object(j, "storage");
+  cli_json_int(j, "stages", S - 1);
+  for (size_t r = 0; r < sizeof rows / sizeof rows[0]; ++r) {
+    cli_json_array(j, rows[r].key);
+    for (int s = 0; s < S; ++s) cli_json_number(j, NULL, rows[r].v[s]);
+    cli_json_end(j);
+  }
+  rs_storage_worst w;
+  rs_storage_worst_stages(sr, &w);
+  cli_json_object(j, "worst_stage");
+  cli_json_int(j, "hoop", w.hoop);
+  cli_json_int(j, "buckling", w.buckling);
+  cli_json_int(j, "pressure", w.pressure);
+  cli_json_int(j, "slip", w.slip);
+  cli_json_int(j, "core", w.core);
+  cli_json_end(j);
+  cli_json_array(j, "defects");
+  for (int s = 0; s < S; ++s) {
+    if (sr->defects && sr->defects[s]) defects(j, NULL, sr->defects[s]);
+    else cli_json_null(j, NULL);
+  }
+  cli_json_end(j);
+  cli_json_end(j);
 }

@@ -39,3 +39,4 @@ rs_cli_script(plot_study plot_study.sh ${SC}/small.yaml)
 set_tests_properties(cli.plot_study PROPERTIES SKIP_RETURN_CODE 77)
 # bash completion, generated from the option table at build time and installed
 rs_cli_script(completion completion.sh ${PROJECT_BINARY_DIR}/reelsim.bash)
+rs_cli_script(json_storage json_storage.sh ${CASES}/pet-storage.yaml)
