@@ -1,0 +1,3 @@
+# Speed effects: the centrifugal load (docs/validation.md, "Speed effects")
+rs_test(test_spin validation SOURCES validation/test_spin.c
+        CASES annulus_closed_form one_layer_rigid zero_speed updates_converge limit_refused)
