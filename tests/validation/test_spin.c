@@ -203,6 +203,18 @@ static void limit_refused(void)
   CHECK(strstr(rs_error_message(), "material.density") != NULL);
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350}\ncentrifugal: {}\n", &sc) == RS_ERR_INPUT);
   CHECK(strstr(rs_error_message(), "winding.speed") != NULL);
+  /* centrifugal: false is no effect; true is {} */
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: false\n", &sc) ==
+        RS_OK);
+  CHECK(rs_scene_problem(sc)->centrifugal == 0 && rs_scene_problem(sc)->speed == 20.0);
+  rs_scene_destroy(&sc);
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: true\n", &sc) ==
+        RS_OK);
+  CHECK(rs_scene_problem(sc)->centrifugal == 1);
+  rs_scene_destroy(&sc);
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: yes\n", &sc) ==
+        RS_ERR_INPUT);
+  CHECK(strstr(rs_error_message(), "centrifugal") != NULL);
   /* just above the limit: winds, finite, the outer layers nearly unloaded at speed */
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 22.41, speed: 20}\ncentrifugal: {}\n", &sc) ==
         RS_OK);
