@@ -67,7 +67,7 @@ typedef struct rs_problem {
   /* Winding at speed (docs/roll-model.md, "Centrifugal load"): centrifugal = 0 winds as
    * at rest, whatever the speed; 1 takes rho t V^2 off each layer's contact load and adds
    * the spin field of the last layer's speed (rs_reel_result.at_speed_*). */
-  double speed;            /* m/s, winding.speed; 0 = not given */
+  rs_recipe speed;         /* m/s against roll radius, winding.speed (zeroed: 0) */
   int centrifugal;         /* 1: centrifugal load on (needs material.density) */
 } rs_problem;
 

@@ -374,14 +374,15 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
       if (pb->centrifugal) {
         /* the hoop force the spinning layer needs for its own rotation is not pressed on
          * the roll beneath it (docs/roll-model.md, "Centrifugal load") */
-        const double spin = pb->material.density * pb->material.caliper * pb->speed * pb->speed;
+        const double V = rs_recipe_eval(&pb->speed, r);
+        const double spin = pb->material.density * pb->material.caliper * V * V;
         block[b] = T0 - spin;
         if (!(block[b] > 0.0)) {
           spin_stop = 1;
           st = RS_ERROR(RS_ERR_SOLVER,
                         "centrifugal load: at r = %.6g m (layer %d of %d) the wound-on tension "
-                        "%g N/m is not above rho t V^2 = %g N/m: the web cannot stay on the "
-                        "spinning roll", r, j + 1, N, T0, spin);
+                        "%g N/m is not above rho t V^2 = %g N/m (V = %g m/s): the web cannot "
+                        "stay on the spinning roll", r, j + 1, N, T0, spin, V);
           goto done;
         }
       }

@@ -22,6 +22,7 @@
 
 #include "reelsim/core.h"
 #include "reelsim/material.h"
+#include "reelsim/recipe.h"
 
 static double expm1_over(double z) { return fabs(z) < 1e-300 ? 1.0 : expm1(z) / z; }
 
@@ -100,7 +101,7 @@ rs_status rs_spin_field(int n, const double *s, const double *E_r, double E_thet
 }
 
 /* The spin part, exact for linear layers with frozen moduli: layer j arrives at its own
- * omega_j = V / s_j as a free spinning ring (hoop c_j r^2, no face load: its tension's
+ * omega_j = V(s_j) / s_j as a free spinning ring (hoop c_j r^2, no face load: its tension's
  * rho t V^2 is what it does not press with); as the roll grows it slows, a change of body
  * force on the roll wound so far, applied at `updates` checkpoints to each turn by the
  * difference between the new omega^2 and the one it last had; the stop takes the last
@@ -110,7 +111,7 @@ rs_status rs_spin_wound(const rs_problem *pb, rs_reel_result *res, int updates)
   const int n = res->n_layers;
   if (n < 1) return RS_OK;
   const rs_material *m = &pb->material;
-  const double rho = m->density, V = pb->speed, Ec = rs_core_stiffness(&pb->core);
+  const double rho = m->density, Ec = rs_core_stiffness(&pb->core);
   const double E_c_inv = isfinite(Ec) ? 1.0 / Ec : 0.0, nu = m->nu_rtheta;
   const size_t N = (size_t)n + 1;
   double *buf = malloc(10 * N * sizeof(double));
@@ -137,13 +138,14 @@ rs_status rs_spin_wound(const rs_problem *pb, rs_reel_result *res, int updates)
   while (done_to < n) {
     const int k = done_to + every < n ? done_to + every : n;
     for (int j = done_to; j < k; ++j) { /* arrivals: free rings at their own speed */
-      const double w = V / s[j + 1], a = s[j], b = s[j + 1];
+      const double w = rs_recipe_eval(&pb->speed, s[j + 1]) / s[j + 1], a = s[j], b = s[j + 1];
       lev[j] = rho * w * w;
       St[j] += lev[j] * (a * a + a * b + b * b) / 3.0;
     }
     done_to = k;
     /* the roll of k layers slows to the omega the next layer arrives at (the last: its own) */
-    const double w = V / (k < n ? s[k + 1] : s[n]), target = rho * w * w;
+    const double sk = k < n ? s[k + 1] : s[n], w = rs_recipe_eval(&pb->speed, sk) / sk;
+    const double target = rho * w * w;
     int any = 0;
     for (int j = 0; j < k; ++j) {
       c[j] = target - lev[j];

@@ -179,14 +179,21 @@ static void print_centrifugal(FILE *out, const rs_scene *s)
   const rs_problem *p = &s->problem;
   if (!p->centrifugal) return;
   num_t a, b, c;
-  const double spin = p->material.density * p->material.caliper * p->speed * p->speed;
-  double lo = INFINITY;
-  for (int j = 0; j < p->n_layers; ++j)
-    lo = fmin(lo, rs_recipe_eval(&p->tension, p->core.radius + (j + 1) * p->material.caliper));
-  fprintf(out, "  - centrifugal load: speed %s m/s, rho t V^2 = %s N/m taken off each layer's "
-               "contact load (%s the least web tension %s N/m%s); /final at rest, "
+  double lo = INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  for (int j = 0; j < p->n_layers; ++j) {
+    const double r = p->core.radius + (j + 1) * p->material.caliper, V = rs_recipe_eval(&p->speed, r);
+    lo = fmin(lo, rs_recipe_eval(&p->tension, r));
+    vlo = fmin(vlo, V);
+    vhi = fmax(vhi, V);
+  }
+  const double spin = p->material.density * p->material.caliper * vhi * vhi;
+  char d[2 * sizeof(num_t) + 8];
+  if (vlo == vhi) snprintf(d, sizeof d, "%s", f(a, vhi));
+  else snprintf(d, sizeof d, "%s .. %s", f(a, vlo), f(b, vhi));
+  fprintf(out, "  - centrifugal load: speed %s m/s, rho t V^2 %s %s N/m taken off each layer's "
+               "contact load (against the least web tension %s N/m%s); /final at rest, "
                "/final_at_speed spinning\n",
-          f(a, p->speed), f(b, spin), "against", f(c, lo),
+          d, vlo == vhi ? "=" : "up to", f(b, spin), f(c, lo),
           p->nip.model == RS_NIP_NONE ? "" : "; the nip's T0 checked as the reel finds it");
 }
 

@@ -2,7 +2,7 @@
  *   tension: 350                 -> tension: {law: constant, value: 350}
  *   tension: {table: [...]}      -> tension: {law: table, table: [...]}
  *   centrifugal: true / false    -> centrifugal: {} / no key
- * (the same for nip.load). The new nodes keep the line and origin of what the user
+ * (the same for nip.load and winding.speed). The new nodes keep the line and origin of what the user
  * wrote, so `tension: abc` is still reported as winding.tension at its line. */
 #include <string.h>
 
@@ -99,6 +99,8 @@ rs_status ys_normalize(yn *root)
   rs_status st = RS_OK;
   if (yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
     st = normalize_recipe(root, "winding", "tension");
+  if (st == RS_OK && yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
+    st = normalize_recipe(root, "winding", "speed");
   if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
     st = normalize_recipe(root, "nip", "load");
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "centrifugal");

@@ -104,7 +104,7 @@ static const ys_value v_core = MAP(core_fields);
 static const ys_field winding_fields[] = {
     OPT("final_radius", &v_float), OPT("web_length", &v_float), REQ("tension", &v_recipe),
     OPT("accel_torque", &v_float), DEF("temperature", &v_float, "23"),
-    DEF("humidity", &v_float, "50"), OPT("final_diameter", &v_float), OPT("speed", &v_float),
+    DEF("humidity", &v_float, "50"), OPT("final_diameter", &v_float), OPT("speed", &v_recipe),
     END};
 static const ys_value v_winding = MAP(winding_fields);
 

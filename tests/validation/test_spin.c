@@ -65,6 +65,15 @@ static void annulus_closed_form(void)
   CHECK_LT(e3, 1e-5);
 }
 
+static void set_speed(rs_problem *pb, double V)
+{
+  memset(&pb->speed, 0, sizeof pb->speed);
+  pb->speed.law = RS_RECIPE_CONSTANT;
+  pb->speed.start = pb->speed.end = V;
+  pb->speed.k = NAN;
+  CHECK(rs_recipe_prepare(&pb->speed, pb->core.radius, pb->final_radius) == RS_OK);
+}
+
 static void paper_problem(rs_problem *pb, int layers, double T, double V)
 {
   memset(pb, 0, sizeof *pb);
@@ -87,7 +96,7 @@ static void paper_problem(rs_problem *pb, int layers, double T, double V)
   CHECK(rs_recipe_prepare(&pb->tension, pb->core.radius, pb->final_radius) == RS_OK);
   pb->numerics.layers_per_step = 1;
   pb->numerics.rtol = 1e-8;
-  pb->speed = V;
+  set_speed(pb, V);
   pb->centrifugal = 1;
 }
 
@@ -107,6 +116,32 @@ static void one_layer_rigid(void)
   CHECK_LOG("at rest: core pressure / (T0/r_c) - 1", res->core_pressure / (T / rc) - 1.0);
   CHECK_CLOSE(res->core_pressure, T / rc, 1e-3);
   rs_reel_result_destroy(&res);
+}
+
+/* A linear speed recipe with start = end is the constant speed (to round-off); a rising
+ * speed presses less at the outside than the constant start speed. */
+static void speed_recipe(void)
+{
+  rs_problem pb;
+  paper_problem(&pb, 300, 350.0, 30.0);
+  rs_reel_result *c = NULL, *l = NULL, *up = NULL;
+  CHECK(rs_reel_wind(&pb, NULL, &c) == RS_OK);
+  pb.speed.law = RS_RECIPE_LINEAR;
+  CHECK(rs_recipe_prepare(&pb.speed, pb.core.radius, pb.final_radius) == RS_OK);
+  CHECK(rs_reel_wind(&pb, NULL, &l) == RS_OK);
+  for (int j = 0; j < 300; ++j) { /* the linear law's interpolation may round differently */
+    CHECK_CLOSE(l->sigma_r[j], c->sigma_r[j], 1e-12);
+    CHECK_CLOSE(l->at_speed_sigma_theta[j], c->at_speed_sigma_theta[j], 1e-12);
+  }
+  pb.speed.start = 10.0;
+  CHECK(rs_recipe_prepare(&pb.speed, pb.core.radius, pb.final_radius) == RS_OK);
+  CHECK(rs_reel_wind(&pb, NULL, &up) == RS_OK);
+  CHECK_LOG("core pressure at rest, 30 m/s (Pa)", c->core_pressure);
+  CHECK_LOG("core pressure at rest, 10 -> 30 m/s (Pa)", up->core_pressure);
+  CHECK_LT(c->core_pressure, up->core_pressure); /* slower early layers press harder */
+  rs_reel_result_destroy(&c);
+  rs_reel_result_destroy(&l);
+  rs_reel_result_destroy(&up);
 }
 
 /* V = 0 with the effect on: bit for bit the roll without it. */
@@ -142,7 +177,7 @@ static void updates_converge(void)
   pb.centrifugal = 0;
   CHECK(rs_reel_wind(&pb, NULL, &ref) == RS_OK);
   pb.centrifugal = 1;
-  pb.speed = 30.0;
+  set_speed(&pb, 30.0);
   rs_reel_result *exact = NULL;
   CHECK(rs_reel_wind(&pb, NULL, &exact) == RS_OK); /* only to own the arrays */
   pb.centrifugal = 1;
@@ -206,7 +241,7 @@ static void limit_refused(void)
   /* centrifugal: false is no effect; true is {} */
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: false\n", &sc) ==
         RS_OK);
-  CHECK(rs_scene_problem(sc)->centrifugal == 0 && rs_scene_problem(sc)->speed == 20.0);
+  CHECK(rs_scene_problem(sc)->centrifugal == 0 && rs_recipe_eval(&rs_scene_problem(sc)->speed, 0.09) == 20.0);
   rs_scene_destroy(&sc);
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: true\n", &sc) ==
         RS_OK);
@@ -215,6 +250,17 @@ static void limit_refused(void)
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: 20}\ncentrifugal: yes\n", &sc) ==
         RS_ERR_INPUT);
   CHECK(strstr(rs_error_message(), "centrifugal") != NULL);
+  /* the recipe forms: a speed rising 5 -> 20 m/s (the limit at the outside) and a table */
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 22.41, speed: {law: linear, start: 5, end: 20}}\n"
+                 "centrifugal: {}\n", &sc) == RS_OK);
+  rs_scene_destroy(&sc);
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 22.41, speed: {table: [[0.0762, 5], [0.09, 20.1]]}}\n"
+                 "centrifugal: {}\n", &sc) == RS_ERR_INPUT);
+  printf("  %s\n", rs_error_message());
+  CHECK(strstr(rs_error_message(), "winding.speed") && strstr(rs_error_message(), "at r = 0.08"));
+  CHECK(load(MAT "winding: {final_radius: 0.1, tension: 350, speed: -1}\ncentrifugal: {}\n", &sc) ==
+        RS_ERR_INPUT);
+  CHECK(strstr(rs_error_message(), "m/s") != NULL);
   /* just above the limit: winds, finite, the outer layers nearly unloaded at speed */
   CHECK(load(MAT "winding: {final_radius: 0.1, tension: 22.41, speed: 20}\ncentrifugal: {}\n", &sc) ==
         RS_OK);
@@ -247,6 +293,7 @@ static void limit_refused(void)
 static const check_case cases[] = {{"annulus_closed_form", annulus_closed_form},
                                    {"one_layer_rigid", one_layer_rigid},
                                    {"zero_speed", zero_speed},
+                                   {"speed_recipe", speed_recipe},
                                    {"updates_converge", updates_converge},
                                    {"limit_refused", limit_refused}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
