@@ -205,6 +205,7 @@ const ys_value ys_scene_schema = MAP(scene_fields);
 int ys_is_shorthand(const char *p)
 {
   return strcmp(p, "material") == 0 || strcmp(p, "winding.tension") == 0 ||
+         strcmp(p, "winding.speed") == 0 ||
          strcmp(p, "nip.load") == 0;
 }
 
