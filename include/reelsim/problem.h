@@ -64,6 +64,11 @@ typedef struct rs_problem {
   rs_numerics numerics;
   rs_record_spec record;
   rs_storage_spec storage; /* stages after winding (n_stages = 0: none) */
+  /* Winding at speed (docs/roll-model.md, "Centrifugal load"): centrifugal = 0 winds as
+   * at rest, whatever the speed; 1 takes rho t V^2 off each layer's contact load and adds
+   * the spin field of the last layer's speed (rs_reel_result.at_speed_*). */
+  rs_recipe speed;         /* m/s against roll radius, winding.speed (zeroed: 0) */
+  int centrifugal;         /* 1: centrifugal load on (needs material.density) */
 } rs_problem;
 
 RS_END_DECLS

@@ -20,6 +20,11 @@ typedef struct rs_reel_result {
   double *sigma_theta;       /* Pa, final hoop stress per layer */
   double core_pressure;      /* Pa, compression positive */
   double core_radius;        /* m */
+  /* Centrifugal load on (problem.centrifugal): the roll spinning at the last layer's speed,
+   * the rest state above plus the spin field (NULL otherwise). */
+  double *at_speed_sigma_r;     /* Pa, per layer */
+  double *at_speed_sigma_theta; /* Pa, per layer */
+  double at_speed_core_pressure; /* Pa */
   long increments, cvode_steps, rhs_evals;
   long full_integrations;    /* increments integrated from the core (numerics.reuse) */
   double wall_seconds;

@@ -116,6 +116,29 @@ static rs_status write_final(hid_t loc, const rs_reel_result *res)
   return st;
 }
 
+/* /final_at_speed: the roll spinning at the last layer's speed (centrifugal load on; /final
+ * is then the roll at rest, after the stop). */
+static rs_status write_final_at_speed(hid_t loc, const rs_reel_result *res)
+{
+  if (!res->at_speed_sigma_r || !res->at_speed_sigma_theta) return RS_OK;
+  size_t n = (size_t)res->n_layers;
+  hid_t g;
+  rs_status st = rs_h5_group_create(loc, "final_at_speed", &g);
+  if (st != RS_OK) return st;
+  st = rs_h5_write_1d(g, "sigma_r", res->at_speed_sigma_r, n, "Pa",
+                      "radial stress of each layer, the roll spinning at the last layer's "
+                      "speed; compression negative");
+  if (st == RS_OK)
+    st = rs_h5_write_1d(g, "sigma_theta", res->at_speed_sigma_theta, n, "Pa",
+                        "hoop stress of each layer, the roll spinning at the last layer's "
+                        "speed; compression negative");
+  if (st == RS_OK)
+    st = rs_h5_write_scalar(g, "core_pressure", res->at_speed_core_pressure, "Pa",
+                            "pressure on the core, the roll spinning; compression positive");
+  H5Gclose(g);
+  return st;
+}
+
 /* /history: the roll's stresses at stages of the winding (output.history_every > 0).
  * NaN marks the layers not yet wound at a stage; the last stage is /final. */
 static rs_status write_history(hid_t loc, const rs_scene *scene, const rs_reel_result *res)
@@ -172,6 +195,7 @@ rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result
   rs_status st = write_run_attributes(loc, scene, res);
   if (st == RS_OK) st = write_layers(loc, res);
   if (st == RS_OK) st = write_final(loc, res);
+  if (st == RS_OK) st = write_final_at_speed(loc, res);
   if (st == RS_OK && rs_scene_problem(scene)->record.history_every > 0) st = write_history(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_nip(loc, scene, res);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "reel/nip_policy.h"
+#include "reel/spin.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
 #include "reelsim/nip_contact.h"
@@ -23,6 +24,8 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->nip_load);
   free(res->sigma_r);
   free(res->sigma_theta);
+  free(res->at_speed_sigma_r);
+  free(res->at_speed_sigma_theta);
   free(res->stage_layers);
   free(res->stage_radius);
   free(res->stage_sigma_r);
@@ -238,6 +241,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   rs_nip_policy pol;
   rs_roll_state *snap = NULL;
   int nip_cap = 0, n_prof = 0, next_prof = 0;
+  int spin_stop = 0; /* centrifugal load: a layer that cannot stay on the roll */
   double prof_r[RS_MAX_PROFILES];
   if (!res || !block) {
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
@@ -367,6 +371,21 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
       res->nip_load[j] = load;
       res->wound_on_tension[j] = T0;
       block[b] = T0;
+      if (pb->centrifugal) {
+        /* the hoop force the spinning layer needs for its own rotation is not pressed on
+         * the roll beneath it (docs/roll-model.md, "Centrifugal load") */
+        const double V = rs_recipe_eval(&pb->speed, r);
+        const double spin = pb->material.density * pb->material.caliper * V * V;
+        block[b] = T0 - spin;
+        if (!(block[b] > 0.0)) {
+          spin_stop = 1;
+          st = RS_ERROR(RS_ERR_SOLVER,
+                        "centrifugal load: at r = %.6g m (layer %d of %d) the wound-on tension "
+                        "%g N/m is not above rho t V^2 = %g N/m (V = %g m/s): the web cannot "
+                        "stay on the spinning roll", r, j + 1, N, T0, spin, V);
+          goto done;
+        }
+      }
     }
     if (force) continue;
     if ((st = rs_roll_add_layers(roll, m, block))) {
@@ -391,6 +410,10 @@ done:
     history_finish(res, roll, N, hist_cap);
   }
   else if (res) res->n_layers = 0;
+  if (res && pb->centrifugal && (st == RS_OK || spin_stop) && res->n_layers > 0) {
+    rs_status sst = rs_spin_wound(pb, res, 0);
+    if (st == RS_OK) st = sst;
+  }
   if (st == RS_OK) {
     for (int j = 0; j < res->n_layers; ++j)
       if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j])) {

@@ -9,6 +9,7 @@
 typedef char num_t[48];
 
 static void print_storage(FILE *out, const rs_scene *s);
+static void print_centrifugal(FILE *out, const rs_scene *s);
 
 static const char *f(num_t buf, double v)
 {
@@ -167,8 +168,33 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
                      "the roll beneath it)\n"
                    : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "
                      "own outer radius)\n");
+  print_centrifugal(out, s);
   print_defect_checks(out, s);
   print_storage(out, s);
+}
+
+/* Winding at speed: listed only when the scene switches the centrifugal load on. */
+static void print_centrifugal(FILE *out, const rs_scene *s)
+{
+  const rs_problem *p = &s->problem;
+  if (!p->centrifugal) return;
+  num_t a, b, c;
+  double lo = INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  for (int j = 0; j < p->n_layers; ++j) {
+    const double r = p->core.radius + (j + 1) * p->material.caliper, V = rs_recipe_eval(&p->speed, r);
+    lo = fmin(lo, rs_recipe_eval(&p->tension, r));
+    vlo = fmin(vlo, V);
+    vhi = fmax(vhi, V);
+  }
+  const double spin = p->material.density * p->material.caliper * vhi * vhi;
+  char d[2 * sizeof(num_t) + 8];
+  if (vlo == vhi) snprintf(d, sizeof d, "%s", f(a, vhi));
+  else snprintf(d, sizeof d, "%s .. %s", f(a, vlo), f(b, vhi));
+  fprintf(out, "  - centrifugal load: speed %s m/s, rho t V^2 %s %s N/m taken off each layer's "
+               "contact load (against the least web tension %s N/m%s); /final at rest, "
+               "/final_at_speed spinning\n",
+          d, vlo == vhi ? "=" : "up to", f(b, spin), f(c, lo),
+          p->nip.model == RS_NIP_NONE ? "" : "; the nip's T0 checked as the reel finds it");
 }
 
 /* After the winder (docs/storage.md): listed only when the scene has storage stages. */

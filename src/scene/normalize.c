@@ -1,7 +1,8 @@
 /* Shorthands rewritten into the one form the schema knows:
  *   tension: 350                 -> tension: {law: constant, value: 350}
  *   tension: {table: [...]}      -> tension: {law: table, table: [...]}
- * (the same for nip.load). The new nodes keep the line and origin of what the user
+ *   centrifugal: true / false    -> centrifugal: {} / no key
+ * (the same for nip.load and winding.speed). The new nodes keep the line and origin of what the user
  * wrote, so `tension: abc` is still reported as winding.tension at its line. */
 #include <string.h>
 
@@ -71,12 +72,37 @@ static rs_status normalize_recipe(yn *root, const char *parent_path, const char 
   return RS_OK;
 }
 
+/* centrifugal: true -> centrifugal: {}; centrifugal: false -> no key (off) */
+static rs_status normalize_switch(yn *root, const char *key)
+{
+  int i = yn_map_index(root, key);
+  if (i < 0 || root->kids[i]->kind != YN_SCALAR) return RS_OK;
+  yn *node = root->kids[i];
+  if (strcmp(node->text, "false") == 0) {
+    yn_map_remove(root, key);
+    return RS_OK;
+  }
+  if (strcmp(node->text, "true") != 0)
+    return yn_error(node, "must be {} or true (on) or false (off) (got '%s')", node->text);
+  yn *map = yn_new_map(node->file, node->line, node->path);
+  if (!map || (node->origin && yn_set_origin(map, node->origin) != RS_OK)) {
+    yn_free(map);
+    return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  }
+  root->kids[i] = map;
+  yn_free(node);
+  return RS_OK;
+}
+
 rs_status ys_normalize(yn *root)
 {
   rs_status st = RS_OK;
   if (yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
     st = normalize_recipe(root, "winding", "tension");
+  if (st == RS_OK && yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
+    st = normalize_recipe(root, "winding", "speed");
   if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
     st = normalize_recipe(root, "nip", "load");
+  if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "centrifugal");
   return st;
 }

@@ -395,6 +395,7 @@ rs_status ys_resolve(const yn *root, rs_scene *s)
   if (fatal(tension)) return tension;
   if ((st = part(resolve_nip(root, s), &bad)) != RS_OK) return st;
   if (tension == RS_OK && fatal(st = part(check_drum_capacity(root, s), &bad))) return st;
+  if (tension == RS_OK && fatal(st = part(ys_resolve_speed(root, s), &bad))) return st;
   if (mat == RS_OK && fatal(st = part(ys_resolve_storage(root, s), &bad))) return st;
   if (fatal(st = part(resolve_output(root, s), &bad))) return st;
   return bad;

@@ -131,6 +131,7 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
 
   /* the least value on [r0, r1] and where it is (each law is monotone, a table is
    * piecewise linear: the minimum sits at an end or at a point) */
+  const char *unit = strcmp(what, "speed") == 0 ? "m/s" : "N/m";
   double vmin = rs_recipe_min(out);
   if (!(vmin >= 0.0)) {
     double v0 = rs_recipe_eval(out, r0), v1 = rs_recipe_eval(out, r1);
@@ -140,21 +141,21 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
       for (int i = 1; i < out->n_points; ++i)
         if (out->value[i] < out->value[imin]) imin = i;
       snprintf(key, sizeof key, "%s.%s[%d][1]", path, tkey, imin);
-      return ys_fail(root, key, "the %s must not be negative (got %g N/m at r = %g m)", what,
-                     out->value[imin], out->r[imin]);
+      return ys_fail(root, key, "the %s must not be negative (got %g %s at r = %g m)", what,
+                     out->value[imin], unit, out->r[imin]);
     }
     case RS_RECIPE_CONSTANT:
       snprintf(key, sizeof key, "%s.value", path);
-      return ys_fail(root, key, "the %s must not be negative (got %g N/m)", what, v0);
+      return ys_fail(root, key, "the %s must not be negative (got %g %s)", what, v0, unit);
     default:
       if (!(v0 >= 0.0)) {
         snprintf(key, sizeof key, "%s.start", path);
-        return ys_fail(root, key, "the %s must not be negative (got %g N/m at the core, r = %g m)",
-                       what, v0, r0);
+        return ys_fail(root, key, "the %s must not be negative (got %g %s at the core, r = %g m)",
+                       what, v0, unit, r0);
       }
       snprintf(key, sizeof key, "%s.%s", path, yn_map_get(node, "k") ? "k" : "end");
-      return ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g N/m)", what, r1,
-                     v1);
+      return ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g %s)", what, r1,
+                     v1, unit);
     }
   }
   for (int i = 0; i < out->n_points; ++i)

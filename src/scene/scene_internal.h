@@ -53,6 +53,8 @@ rs_status ys_resolve(const yn *root, rs_scene *scene);
 /* resolve_storage.c: winding temperature and humidity, storage stages, the material's
  * thermal, hygroscopic and viscoelastic data, the core's expansion (docs/storage.md). */
 rs_status ys_resolve_storage(const yn *root, rs_scene *scene);
+/* resolve_speed.c: winding.speed and the centrifugal load */
+rs_status ys_resolve_speed(const yn *root, rs_scene *scene);
 
 /* Reports an error at a dotted scene path; when the key is absent, at its nearest
  * present parent ("file:line: nip.load: required by ..."). */

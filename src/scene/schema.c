@@ -104,7 +104,8 @@ static const ys_value v_core = MAP(core_fields);
 static const ys_field winding_fields[] = {
     OPT("final_radius", &v_float), OPT("web_length", &v_float), REQ("tension", &v_recipe),
     OPT("accel_torque", &v_float), DEF("temperature", &v_float, "23"),
-    DEF("humidity", &v_float, "50"), OPT("final_diameter", &v_float), END};
+    DEF("humidity", &v_float, "50"), OPT("final_diameter", &v_float), OPT("speed", &v_recipe),
+    END};
 static const ys_value v_winding = MAP(winding_fields);
 
 /* ---- storage after the winder (docs/storage.md) ----------------------------------------- */
@@ -182,6 +183,10 @@ static const ys_field output_fields[] = {
     END};
 static const ys_value v_output = MAP(output_fields);
 
+/* ---- winding at speed (docs/roll-model.md, "Centrifugal load") ------------------------ */
+static const ys_field centrifugal_fields[] = {END};
+static const ys_value v_centrifugal = MAP(centrifugal_fields);
+
 /* ---- the scene ------------------------------------------------------------------------ */
 static const ys_value v_title = STRING(0, 511);
 static const ys_field scene_fields[] = {
@@ -191,6 +196,7 @@ static const ys_field scene_fields[] = {
     REQ("winding", &v_winding),
     OPT("nip", &v_nip),
     OPT("storage", &v_storage),
+    OPT("centrifugal", &v_centrifugal),
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
     END};
@@ -199,6 +205,7 @@ const ys_value ys_scene_schema = MAP(scene_fields);
 int ys_is_shorthand(const char *p)
 {
   return strcmp(p, "material") == 0 || strcmp(p, "winding.tension") == 0 ||
+         strcmp(p, "winding.speed") == 0 ||
          strcmp(p, "nip.load") == 0;
 }
 
