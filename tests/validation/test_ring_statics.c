@@ -113,15 +113,22 @@ static rs_core steel_tube(void)
   return c;
 }
 
+/* the oracle's roll on that tube itself */
+static ring_roll paper_ring_on_tube(const rs_core *core)
+{
+  ring_roll R = paper_ring();
+  R.core = RING_CORE_TUBE;
+  R.bore = core->bore;
+  R.E_tube = core->modulus;
+  R.nu_tube = core->poisson;
+  return R;
+}
+
 static void ring_tube(void)
 {
   rs_core core = steel_tube();
   rs_roll_params p = paper_params(rs_core_stiffness(&core), PAPER_N);
-  ring_roll R = paper_ring();
-  R.core = RING_CORE_TUBE;
-  R.bore = core.bore;
-  R.E_tube = core.modulus;
-  R.nu_tube = core.poisson;
+  ring_roll R = paper_ring_on_tube(&core);
   check_within(engine_vs_oracle(&p, &R, PAPER_N, PAPER_TENSION, NULL, NULL), 1e-6);
 }
 
@@ -164,11 +171,7 @@ static void tube_400_sign(void)
 {
   rs_core core = steel_tube();
   rs_roll_params p = paper_params(rs_core_stiffness(&core), PAPER_N);
-  ring_roll R = paper_ring();
-  R.core = RING_CORE_TUBE;
-  R.bore = core.bore;
-  R.E_tube = core.modulus;
-  R.nu_tube = core.poisson;
+  ring_roll R = paper_ring_on_tube(&core);
   double hoop_beneath, hoop_hakiel;
   check_within(engine_vs_oracle(&p, &R, PAPER_N, PAPER_TENSION, NULL, &hoop_beneath), 1e-6);
   p.placement = RS_LOAD_HAKIEL;
