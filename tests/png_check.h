@@ -12,6 +12,8 @@
 
 #include <zlib.h>
 
+#include "check.h"
+
 typedef struct png_image {
   uint32_t width, height;
   uint32_t *rgb; /* 0xRRGGBB per pixel, row by row; alpha composited over white */
@@ -162,6 +164,20 @@ static inline size_t png_ink(const png_image *img)
 {
   size_t n = (size_t)img->width * img->height;
   return n - png_count(img, img->rgb[0]);
+}
+
+/* Decodes a plot into *img and checks it has at least 1% of it drawn on (an empty frame with
+ * its labels has 1.6%, a blank image 0), printing its size and ink. 0 when it did not
+ * decode. */
+static inline int png_read_drawn(const char *path, png_image *img)
+{
+  int ok = png_read(path, img) == 0;
+  CHECK(ok);
+  if (!ok) return 0;
+  size_t ink = png_ink(img), all = (size_t)img->width * img->height;
+  printf("  %s: %ux%u, %zu of %zu pixels drawn\n", path, img->width, img->height, ink, all);
+  CHECK_LT(0.01 * all, (double)ink);
+  return 1;
 }
 
 #endif

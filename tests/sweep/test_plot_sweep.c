@@ -47,17 +47,6 @@ static char *write_sweep(const char *dir, const char *name, int n_keys)
   return path;
 }
 
-static int read_plot(const char *path, png_image *img)
-{
-  int ok = png_read(path, img) == 0;
-  CHECK(ok);
-  if (!ok) return 0;
-  size_t ink = png_ink(img), all = (size_t)img->width * img->height;
-  printf("  %s: %ux%u, %zu of %zu pixels drawn\n", path, img->width, img->height, ink, all);
-  CHECK_LT(0.01 * all, (double)ink);
-  return 1;
-}
-
 /* The PNGs of a sweep file: the 7 figures but status, in order. */
 static void check_list(char **written, int n, const char *stem)
 {
@@ -78,7 +67,7 @@ static void one_parameter(void)
   CHECK(rs_plot_file(file, dir, NULL, &written, &n) == RS_OK);
   check_list(written, n, "one");
   png_image img;
-  if (n > 0 && read_plot(written[0], &img)) {
+  if (n > 0 && png_read_drawn(written[0], &img)) {
     size_t blue = png_count(&img, BLUE);
     printf("    #%06x: %zu pixels\n", (unsigned)BLUE, blue);
     CHECK(blue > 300); /* the line and its points */
@@ -98,7 +87,7 @@ static void two_parameters(void)
   CHECK(rs_plot_file(file, dir, NULL, &written, &n) == RS_OK);
   check_list(written, n, "two");
   png_image img;
-  if (n > 0 && read_plot(written[0], &img)) {
+  if (n > 0 && png_read_drawn(written[0], &img)) {
     /* a heat map: coloured squares, none of them the line colour */
     size_t colours = 0;
     for (size_t p = 0; p < (size_t)img.width * img.height; ++p) {
@@ -140,7 +129,7 @@ static void optimize_history(void)
   CHECK(rs_plot_file(file, dir, NULL, &written, &n) == RS_OK);
   CHECK(n == 1);
   png_image img;
-  if (n == 1 && strstr(written[0], "opt-optimize.png") && read_plot(written[0], &img)) {
+  if (n == 1 && strstr(written[0], "opt-optimize.png") && png_read_drawn(written[0], &img)) {
     size_t blue = png_count(&img, BLUE), orange = png_count(&img, ORANGE);
     printf("    evaluations #%06x: %zu, best #%06x: %zu pixels\n", (unsigned)BLUE, blue,
            (unsigned)ORANGE, orange);
