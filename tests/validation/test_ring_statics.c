@@ -154,7 +154,7 @@ static void paper_2000_published(void)
   rs_roll_params p = paper_params(INFINITY, n);
   p.rtol = 1e-8;
   ring_roll R = paper_ring();
-  double core, hoop;
+  double core = 0.0, hoop = 0.0;
   check_within(engine_vs_oracle(&p, &R, n, PAPER_TENSION, &core, &hoop), 1e-6);
   CHECK_CLOSE(core, 137.5e3, 0.01);
   CHECK_CLOSE(hoop, -85e3, 0.02);
