@@ -88,6 +88,9 @@ double rs_roll_layer_radius(const rs_roll *roll, int j);   /* outer radius of la
  * tension positive. The arrays stay owned by the roll. */
 const double *rs_roll_sigma_r(const rs_roll *roll);
 const double *rs_roll_sigma_theta(const rs_roll *roll);
+/* sigma_r of layer j alone (NaN outside 0..n-1): the engine keeps its deep part lazy
+ * (docs/roll-model.md), which rs_roll_sigma_r brings up to date over the whole roll */
+double rs_roll_layer_sigma_r(const rs_roll *roll, int j);
 double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression positive */
 /* Tangent radial modulus E_r (Pa) at the outermost loaded interface: under the outermost
  * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL). */

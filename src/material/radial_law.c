@@ -108,6 +108,16 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
     for (int i = 0; i < n; ++i) E[i] = pfeiffer_modulus(K1, K2, P[i]);
     return;
   }
+  case RS_RADIAL_HAKIEL: { /* Horner over the nodes: a plain loop that vectorises */
+    const int m = law->n_coef;
+    const double *C = law->C;
+    for (int i = 0; i < n; ++i) E[i] = C[m - 1];
+    for (int c = m - 2; c >= 0; --c) {
+      const double Cc = C[c];
+      for (int i = 0; i < n; ++i) E[i] = E[i] * (P[i] > 0.0 ? P[i] : 0.0) + Cc;
+    }
+    return;
+  }
   default:
     for (int i = 0; i < n; ++i) E[i] = rs_radial_modulus(law, P[i]);
     return;

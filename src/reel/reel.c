@@ -285,7 +285,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
                            .web_tension = rs_recipe_eval(&pb->tension, rs_roll_layer_radius(roll, first)),
                            .nip_load = rs_recipe_eval(&pb->nip.load, R),
                            .surface_modulus = rs_roll_surface_modulus(roll),
-                           .surface_pressure = n > 0 ? -rs_roll_sigma_r(roll)[n - 1] : 0.0};
+                           .surface_pressure = n > 0 ? -rs_roll_layer_sigma_r(roll, n - 1) : 0.0};
         double T0 = 0.0;
         res->nip_solves++;
         if ((st = rs_nip_wound_on_tension(nip, &ns, &T0))) {

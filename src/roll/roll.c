@@ -76,6 +76,8 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->scan_L);
   free(roll->shape_e);
   free(roll->shape_h);
+  free(roll->lazy_a);
+  free(roll->lazy_b);
   free(roll);
   *rollp = NULL;
 }
@@ -138,6 +140,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->scan_L = calloc(cap + 1, sizeof(double));
   roll->shape_e = calloc(cap + 1, sizeof(double));
   roll->shape_h = calloc(cap + 1, sizeof(double));
+  roll->lazy_a = calloc(cap + 1, sizeof(double));
+  roll->lazy_b = calloc(cap + 1, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
@@ -203,6 +207,9 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   }
   const int k_old = roll->n, k = roll->n + m;
   const int top = k - roll->shift; /* the highest node the increment loads */
+  /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
+  roll->lazy_ok = m == 1;
+  if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
   roll_gather_pressure(roll, top, NULL);
@@ -245,9 +252,19 @@ double rs_roll_outer_radius(const rs_roll *roll)
 {
   return roll->p.core_radius + roll->n * roll->p.caliper;
 }
-const double *rs_roll_sigma_r(const rs_roll *roll) { return roll->sigma_r; }
+/* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
+const double *rs_roll_sigma_r(const rs_roll *roll)
+{
+  if (roll->lazy_top > 0) roll_lazy_flush((rs_roll *)roll, 0);
+  return roll->sigma_r;
+}
+double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
+{
+  return j >= 0 && j < roll->n ? roll_lazy_sigma(roll, j + 1) : NAN;
+}
 const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
+  if (roll->lazy_top > 0) roll_lazy_flush((rs_roll *)roll, 0);
   if (roll->hoop_stale) { /* a cache of sigma_r's equilibrium: logically const */
     rs_roll *r = (rs_roll *)roll;
     roll_hoop_from_equilibrium(r, r->n);
@@ -255,11 +272,11 @@ const double *rs_roll_sigma_theta(const rs_roll *roll)
   }
   return roll->sigma_theta;
 }
-double rs_roll_core_pressure(const rs_roll *roll) { return -roll->core_sigma; }
+double rs_roll_core_pressure(const rs_roll *roll) { return -roll_lazy_sigma(roll, 0); }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {
   const int node = roll->n - roll->shift; /* the outermost loaded interface */
-  double P = node > 0 ? -roll->sigma_r[node - 1] : node == 0 && roll->n > 0 ? -roll->core_sigma : 0.0;
+  double P = node >= 0 && roll->n > 0 ? -roll_lazy_sigma(roll, node) : 0.0;
   return rs_radial_modulus(&roll->p.radial, P);
 }
 

@@ -17,22 +17,69 @@ static inline double roll_exp_step(double d)
 
 /* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
  * down, of the one-layer decays exp(L_j - L_{j+1}) (roll_exp_step: the Taylor sums in a
- * plain loop that vectorises, then the running product, which takes exp() where a decay
- * is large). Below 1e-290 the product is 0: no subnormals. */
+ * plain loop that vectorises, exp() where a decay is large). A running product is a chain
+ * of dependent multiplications (its latency, not its flops, set the time: a sixth of a
+ * 100,000-layer film's run), so a long range is cut into four segments whose products run
+ * side by side, each then scaled by the product of the segments above it. Below 1e-290 the
+ * product is 0: no subnormals. */
 static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
-  for (int j = lo; j < top; ++j) {
-    const double d = L[j] - L[j + 1];
-    e[j] = roll_exp_small(d);
+  for (int j = lo; j < top; ++j) e[j] = roll_exp_small(L[j] - L[j + 1]);
+  /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
+   * increasing there, and far below 1 or negative for d < -0.03): exp() there */
+  int bad = 0;
+  for (int j = lo; j < top; ++j) bad |= (e[j] <= 0.9705) | (e[j] >= 1.0304);
+  if (bad)
+    for (int j = lo; j < top; ++j)
+      if (!(e[j] > 0.9705 && e[j] < 1.0304)) e[j] = roll_exp_step(L[j] - L[j + 1]);
+  const int n = top - lo;
+  if (n < 256) {
+    double p = 1.0;
+    for (int j = top - 1; j >= lo; --j) {
+      p = p > 1e-290 ? p * e[j] : 0.0;
+      e[j] = p;
+    }
+    return;
   }
-  double p = 1.0;
-  for (int j = top - 1; j >= lo; --j) {
-    double t = e[j];
-    /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
-     * increasing there, and far below 1 or negative for d < -0.03): look only then */
-    if (!(t > 0.9705 && t < 1.0304)) t = roll_exp_step(L[j] - L[j + 1]);
-    p = p > 1e-290 ? p * t : 0.0;
-    e[j] = p;
+  /* segments [b0, b1), [b1, b2), [b2, b3), [b3, top): the top one takes the remainder. The
+   * chains test for underflow every 64 factors only (off the chain's critical path) */
+  const int q = n / 4, b0 = lo, b1 = lo + q, b2 = lo + 2 * q, b3 = lo + 3 * q;
+  double p0 = 1.0, p1 = 1.0, p2 = 1.0, p3 = 1.0;
+  for (int j = top - 1; j >= b3 + q; --j) {
+    p3 = p3 > 1e-290 ? p3 * e[j] : 0.0;
+    e[j] = p3;
+  }
+  for (int i = q - 1; i >= 0; --i) {
+    p0 *= e[b0 + i];
+    p1 *= e[b1 + i];
+    p2 *= e[b2 + i];
+    p3 *= e[b3 + i];
+    e[b0 + i] = p0;
+    e[b1 + i] = p1;
+    e[b2 + i] = p2;
+    e[b3 + i] = p3;
+    if ((i & 63) == 0) {
+      p0 = p0 > 1e-290 ? p0 : 0.0;
+      p1 = p1 > 1e-290 ? p1 : 0.0;
+      p2 = p2 > 1e-290 ? p2 : 0.0;
+      p3 = p3 > 1e-290 ? p3 : 0.0;
+    }
+  }
+  /* scale each segment by the product of those above it (e[b3] = p3, ...), and clear what
+   * fell below 1e-290 */
+  const double s2 = p3, s1 = s2 * p2, s0 = s1 * p1;
+  for (int j = b3; j < top; ++j) e[j] = e[j] > 1e-290 ? e[j] : 0.0;
+  for (int j = b2; j < b3; ++j) {
+    const double v = e[j] * s2;
+    e[j] = v > 1e-290 ? v : 0.0;
+  }
+  for (int j = b1; j < b2; ++j) {
+    const double v = e[j] * s1;
+    e[j] = v > 1e-290 ? v : 0.0;
+  }
+  for (int j = b0; j < b1; ++j) {
+    const double v = e[j] * s0;
+    e[j] = v > 1e-290 ? v : 0.0;
   }
 }
 
@@ -89,6 +136,18 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  if (lo > 0 && dsr[lo] > 1e-280) {
+    /* the shape above the start follows this integration, in the reference's scale (so that
+     * a later increment may start higher and still read its deep part as c x shape); not
+     * where that scale would overflow (then later starts stay below shape_top) */
+    const double scale = roll->shape_e[lo] / dsr[lo];
+    if (scale < 1e200) {
+      for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
+      if (!shift)
+        for (int j = lo; j < bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+      roll->shape_top = bottom - 1;
+    }
+  }
   if (mean) {
     for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
     const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
@@ -197,10 +256,16 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
     const int lo = roll->deep_lo;
     const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict ds = roll->dsr;
     double *restrict sr = roll->sigma_r;
-    roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
-    for (int j = 1; j < lo; ++j) sr[j - 1] += c * se[j];
-    for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) sr[j - 1] += ds[j];
-    for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
+    int j = 1;
+    if (lo > 0 && roll->lazy_top > 0) { /* the lazy nodes take c in their common scale */
+      roll->lazy_c += c;
+      j = roll->lazy_top;
+    } else {
+      roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
+    }
+    for (; j < lo; ++j) sr[j - 1] += c * se[j];
+    for (j = lo > 1 ? lo : 1; j <= k_old; ++j) sr[j - 1] += ds[j];
+    for (j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
     roll->hoop_stale = 1; /* derived when asked for: rs_roll_sigma_theta */
     return RS_OK;
   }
@@ -209,16 +274,22 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   const double c = roll->c_deep;
   const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
   double *restrict sr = roll->sigma_r, *restrict st_ = roll->sigma_theta;
-  roll->core_sigma += lo > 0 ? c * se[0] : roll->dsr[0];
-  for (int j = 1; j < lo; ++j) {
+  int j = 1;
+  if (lo > 0 && roll->lazy_top > 0) { /* the lazy nodes take c in their common scale */
+    roll->lazy_c += c;
+    j = roll->lazy_top;
+  } else {
+    roll->core_sigma += lo > 0 ? c * se[0] : roll->dsr[0];
+  }
+  for (; j < lo; ++j) {
     sr[j - 1] += c * se[j];
     st_[j - 1] += c * sh[j];
   }
-  for (int j = lo > 1 ? lo : 1; j <= k_old; ++j) {
+  for (j = lo > 1 ? lo : 1; j <= k_old; ++j) {
     sr[j - 1] += roll->dsr[j];
     st_[j - 1] += roll->dsh[j];
   }
-  for (int j = k_old + 1; j <= k; ++j) {
+  for (j = k_old + 1; j <= k; ++j) {
     roll->sigma_r[j - 1] = roll->dsr[j];
     roll->sigma_theta[j - 1] = T0[j - k_old - 1] / t + roll->dsh[j];
   }

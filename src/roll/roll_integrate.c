@@ -114,8 +114,12 @@ static int roll_reuse_start(rs_roll *roll)
   const int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
   double *restrict pe = roll->scan_eps, *restrict pl = roll->scan_L;
-  double me = 0.0, ml = -INFINITY;
-  for (int j = 0; j <= top; ++j) {
+  /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and the
+   * prefix maxima of L are the scan's that froze them (L there is the reference's) */
+  const int F = roll->lazy_top < top + 1 ? roll->lazy_top : top + 1;
+  const double aC = fabs(roll->lazy_c), *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b;
+  double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
+  for (int j = F; j <= top; ++j) {
     const double e = fabs(Er[j] - Eref[j]) / Eref[j];
     me = e > me ? e : me;
     ml = L[j] > ml ? L[j] : ml;
@@ -126,7 +130,8 @@ static int roll_reuse_start(rs_roll *roll)
   int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
   while (hi - lo > 1) {
     const int mid = lo + (hi - lo) / 2;
-    if (pe[mid] * exp(pl[mid] - Ls) <= tol)
+    const double eps = mid < F ? la[mid] + aC * lb[mid] : pe[mid];
+    if (eps * exp(pl[mid] - Ls) <= tol)
       lo = mid;
     else
       hi = mid;
@@ -150,6 +155,14 @@ rs_status roll_integrate(rs_roll *roll, int k)
   }
   const double *xn = roll->xnode, xs = xn[k];
   const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
+  /* the nodes the integration looks at (from first - 1: the Hermite slopes) leave the lazy
+   * zone; a reference needs every node */
+  const int need = from_core ? 0 : first - 1, F = roll->lazy_top;
+  if (need < F) {
+    roll_lazy_flush(roll, need);
+    rs_status st = roll_prepare_nodes(roll, need, F);
+    if (st) return st;
+  }
   const double x0 = xn[first];
   sunrealtype *y = N_VGetArrayPointer(roll->y);
   if (from_core) {
@@ -181,6 +194,10 @@ rs_status roll_integrate(rs_roll *roll, int k)
   } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
     roll->ref_top = j0;
     roll->ref_age++;
+    /* below the start the increment is c x the reference's shape (roll_block_increment):
+     * those nodes can wait (roll_lazy.c) */
+    if (roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)
+      roll_lazy_freeze(roll, j0 - 1);
   }
 
   int next = first + 1; /* next node to fill */
@@ -216,6 +233,12 @@ rs_status roll_integrate(rs_roll *roll, int k)
       }
     }
     prev = cur;
+  }
+  if (!from_core) {
+    /* (w, L) above the start now come from this modulus: it is what later increments'
+     * drift is measured against there, and they may start as high as this one's top */
+    memcpy(roll->Er_ref + first, roll->Er + first, (size_t)(k - first + 1) * sizeof(double));
+    roll->ref_top = k;
   }
   long nfe = 0;
   CVodeGetNumRhsEvals(roll->cvode, &nfe); /* counters restart at every CVodeReInit */

@@ -6,6 +6,7 @@
  *                     interpolation inside each step; the reuse of the deep solution)
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_state.c      saving and restoring a roll's stresses
+ *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
  *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
@@ -74,6 +75,12 @@ struct rs_roll {
   int deep_lo;
   double c_deep;
   int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
+  /* the lazy deep part (roll_lazy.c): nodes 0..lazy_top-1 hold stored values, their true
+   * stresses being stored + lazy_c x shape (e, and h for Hakiel's hoop stress) */
+  int lazy_top;
+  int lazy_ok;           /* this increment may freeze nodes (one layer: no corrector) */
+  double lazy_c;
+  double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
 };
 
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
@@ -83,6 +90,11 @@ static inline double roll_exp_small(double d)
          d * (1.0 / 720 + d * (1.0 / 5040)))))));
 }
 
+/* roll_lazy.c */
+void roll_lazy_flush(rs_roll *roll, int from);
+void roll_lazy_freeze(rs_roll *roll, int to);
+double roll_lazy_sigma(const rs_roll *roll, int j);
+
 /* roll_ode.c */
 double roll_g2_at(rs_roll *roll, double x, double *dg2);
 int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
@@ -91,6 +103,7 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
 void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
+rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);

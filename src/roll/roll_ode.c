@@ -120,36 +120,60 @@ void roll_cvode_err(int code, const char *module, const char *function, char *ms
            msg);
 }
 
-/* P_node = the pressures (Pa, compression positive) at the nodes 0..k before the
- * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Plain
- * loops: they vectorise. */
+/* P_node = the pressures (Pa, compression positive) at the nodes lazy_top..k before the
+ * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Nodes
+ * below the lazy frontier are not read (roll_lazy.c). Plain loops: they vectorise. */
 void roll_gather_pressure(rs_roll *roll, int k, const double *add)
 {
   double *restrict P = roll->P_node;
-  const int n = roll->n < k ? roll->n : k;
-  P[0] = -roll->core_sigma;
-  for (int j = 1; j <= n; ++j) P[j] = -roll->sigma_r[j - 1];
-  for (int j = n + 1; j <= k; ++j) P[j] = 0.0;
+  const int n = roll->n < k ? roll->n : k, F = roll->lazy_top;
+  if (F == 0) P[0] = -roll->core_sigma;
+  for (int j = F > 1 ? F : 1; j <= n; ++j) P[j] = -roll->sigma_r[j - 1];
+  for (int j = n + 1 > F ? n + 1 : F; j <= k; ++j) P[j] = 0.0;
   if (add)
-    for (int j = 0; j <= k; ++j) P[j] += add[j];
+    for (int j = F; j <= k; ++j) P[j] += add[j];
 }
 
-/* E_r(P) at the nodes 0..k, P from roll->P_node: the modulus an integration sees
- * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
-rs_status roll_set_modulus(rs_roll *roll, int k)
+/* E_r at the nodes [lo, hi) from P_node, checked: positive and finite */
+static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
 {
-  rs_radial_modulus_n(&roll->p.radial, roll->P_node, roll->Er, k + 1);
+  if (hi <= lo) return RS_OK;
+  rs_radial_modulus_n(&roll->p.radial, roll->P_node + lo, roll->Er + lo, hi - lo);
   /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
    * E_r > 0 checked at load; the pressures are finite: roll_commit); a polynomial or a
    * table can leave its range */
   const rs_radial_kind law = roll->p.radial.law;
-  if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER)
-    for (int j = 0; j <= k; ++j)
+  if (law == RS_RADIAL_LINEAR || law == RS_RADIAL_PFEIFFER) return RS_OK;
+  /* one vectorised pass; the node is looked for only when one is out of range */
+  const double *restrict E = roll->Er;
+  int bad = 0;
+  for (int j = lo; j < hi; ++j) bad |= !(E[j] > 0.0) | !(E[j] < INFINITY);
+  if (!bad) return RS_OK;
+  {
+    for (int j = lo; j < hi; ++j)
       if (!(roll->Er[j] > 0.0 && roll->Er[j] < INFINITY))
         return RS_ERROR(RS_ERR_SOLVER,
                         "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
                         "positive: the radial law is outside its range",
                         roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+  }
+  return RS_OK;
+}
+
+/* The pressures and moduli of the nodes [lo, hi) that have just left the lazy zone
+ * (roll_integrate, when an integration starts below the frontier): same epoch */
+rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) roll->P_node[j] = -roll_lazy_sigma(roll, j);
+  return roll_modulus_range(roll, lo, hi);
+}
+
+/* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees
+ * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
+rs_status roll_set_modulus(rs_roll *roll, int k)
+{
+  rs_status st = roll_modulus_range(roll, roll->lazy_top, k + 1);
+  if (st) return st;
   /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
    * long roll): a log at every node at every increment was 7 % of the engine's time */
   roll->epoch++;

@@ -38,6 +38,7 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
     if (!a || !b) return RS_ERROR(RS_ERR_MEMORY, "cannot save a roll of %d layers", roll->n);
     st->capacity = cap;
   }
+  rs_roll_sigma_r(roll); /* the lazy deep part applied */
   st->n = roll->n;
   st->core_sigma = roll->core_sigma;
   if (roll->n > 0) { /* an empty roll has no arrays yet: memcpy of NULL is undefined */
@@ -53,6 +54,8 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
     return RS_ERROR(RS_ERR_INTERNAL, "a state of %d layers does not fit a roll of %d", st->n,
                     roll->p.max_layers);
   roll->n = st->n;
+  roll->lazy_top = 0; /* the state holds the stresses in full */
+  roll->lazy_c = 0.0;
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
   if (st->n > 0) { /* the state of an empty roll has no arrays */
     memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));

@@ -1,0 +1,76 @@
+/* The deep part of the roll kept lazy (docs/roll-model.md, "The lazy deep part"): below the
+ * node an increment's integration starts from, the increment is c times the reference's
+ * shape e_j (roll_block_increment). Nodes below the lazy frontier F are not touched at
+ * every increment: their stresses are
+ *     sigma_r(r_j) = stored_j + C e_j,    (Hakiel placement: sigma_theta_j = stored + C h_j)
+ * with C the sum of the increments' c since the nodes were frozen. The start-node search
+ * (roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
+ * the pressure added since freezing, -dC e_j, it is at most
+ *     eps_j <= a_j + |C| b_j,   b_j = 2 |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
+ * (C only grows in magnitude: every increment compresses; the factor 2 covers the curvature
+ * of ln E_r(P) over the pressure added), and the search takes the prefix maxima of a and b.
+ * So an increment costs work over the nodes from the frontier up, not over the whole roll. */
+#include <math.h>
+
+#include "roll/roll_internal.h"
+
+/* Nodes [from, F) back to explicit stresses (their true values); F = from. */
+void roll_lazy_flush(rs_roll *roll, int from)
+{
+  const int F = roll->lazy_top;
+  if (from < 0) from = 0;
+  if (from >= F) return;
+  const double C = roll->lazy_c, *restrict e = roll->shape_e;
+  double *restrict sr = roll->sigma_r;
+  if (from == 0) roll->core_sigma += C * e[0];
+  for (int j = from > 1 ? from : 1; j < F; ++j) sr[j - 1] += C * e[j];
+  if (!roll->shift) {
+    const double *restrict h = roll->shape_h;
+    double *restrict sth = roll->sigma_theta;
+    for (int j = from > 1 ? from : 1; j < F; ++j) sth[j - 1] += C * h[j];
+  }
+  roll->lazy_top = from;
+  if (from == 0) roll->lazy_c = 0.0;
+}
+
+/* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
+ * current, and the reference's shape covers them. Uses dsr and dsh as scratch (free
+ * between an integration's start and its increment). */
+void roll_lazy_freeze(rs_roll *roll, int to)
+{
+  const int F = roll->lazy_top;
+  if (to <= F) return;
+  const double C = roll->lazy_c, aC = fabs(C);
+  const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
+  double *restrict Pp = roll->dsr, *restrict Ep = roll->dsh;
+  /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
+  for (int j = F; j < to; ++j) Pp[j] = roll->P_node[j] * 1.001 + 1.0;
+  rs_radial_modulus_n(&roll->p.radial, Pp + F, Ep + F, to - F);
+  double pa = F > 0 ? roll->lazy_a[F - 1] : -INFINITY, pb = F > 0 ? roll->lazy_b[F - 1] : 0.0;
+  for (int j = F; j < to; ++j) {
+    const double dP = Pp[j] - roll->P_node[j];
+    double kappa = fabs(Ep[j] - E[j]) / (E[j] * dP); /* d ln E / dP to 1e-3 */
+    if (!isfinite(kappa)) kappa = INFINITY;
+    const double b = 2.0 * kappa * e[j];
+    const double a = fabs(E[j] - Eref[j]) / Eref[j] - aC * b;
+    pa = a > pa ? a : pa;
+    pb = b > pb ? b : pb;
+    roll->lazy_a[j] = pa;
+    roll->lazy_b[j] = pb;
+  }
+  if (C != 0.0) {
+    double *restrict sr = roll->sigma_r;
+    if (F == 0) roll->core_sigma -= C * e[0];
+    for (int j = F > 1 ? F : 1; j < to; ++j) sr[j - 1] -= C * e[j];
+    if (!roll->shift)
+      for (int j = F > 1 ? F : 1; j < to; ++j) roll->sigma_theta[j - 1] -= C * roll->shape_h[j];
+  }
+  roll->lazy_top = to;
+}
+
+/* sigma_r at node j (0: the core), lazy or not */
+double roll_lazy_sigma(const rs_roll *roll, int j)
+{
+  const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
+  return j < roll->lazy_top ? s + roll->lazy_c * roll->shape_e[j] : s;
+}

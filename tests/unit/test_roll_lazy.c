@@ -1,0 +1,103 @@
+/* The lazy deep part of the roll engine (src/roll/roll_lazy.c): below the lazy frontier a
+ * node's stress is its stored value plus a common scale times the reference's shape.
+ *   layer_reads_match_full  rs_roll_layer_sigma_r and rs_roll_core_pressure, read while
+ *                           the deep part is lazy, equal the full profile bit for bit once
+ *                           it is applied (rs_roll_sigma_r), at several stages of a roll
+ *   matches_reuse_none      with the deep solution reused (and kept lazy) the stresses of a
+ *                           1500-layer roll agree with integrating every increment from the
+ *                           core, within the reuse's error bound (rtol x T0/s a layer),
+ *                           for both load placements: the lazy scale carries the hoop
+ *                           stress of Hakiel's placement too
+ *   flush_midway_is_harmless applying the lazy part mid-roll (a read of the full profile)
+ *                           changes the rest of the winding by less than rtol */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "roll_helpers.h"
+
+enum { N = 1500 };
+
+static rs_roll *newsprint(rs_reuse reuse, rs_load_placement placement)
+{
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, N);
+  p.rtol = 1e-5;
+  p.reuse = reuse;
+  p.placement = placement;
+  rs_roll *roll = NULL;
+  CHECK(rs_roll_create(&p, &roll) == RS_OK);
+  return roll;
+}
+
+static int wind_to(rs_roll *roll, int n)
+{
+  const double T = 682.5;
+  while (rs_roll_layers(roll) < n)
+    if (rs_roll_add_layers(roll, 1, &T) != RS_OK) return 0;
+  return 1;
+}
+
+static void layer_reads_match_full(void)
+{
+  rs_roll *roll = newsprint(RS_REUSE_ON, RS_LOAD_BENEATH);
+  if (!roll) return;
+  static double lazy[N];
+  for (int n = 500; n <= N; n += 500) {
+    CHECK(wind_to(roll, n));
+    const double core = rs_roll_core_pressure(roll);
+    for (int j = 0; j < n; ++j) lazy[j] = rs_roll_layer_sigma_r(roll, j);
+    const double *full = rs_roll_sigma_r(roll);
+    CHECK(memcmp(lazy, full, (size_t)n * sizeof(double)) == 0);
+    CHECK(core == rs_roll_core_pressure(roll));
+  }
+  CHECK(isnan(rs_roll_layer_sigma_r(roll, -1)) && isnan(rs_roll_layer_sigma_r(roll, N)));
+  rs_roll_destroy(&roll);
+}
+
+/* max over layers of |a - b| / (T0 / s_j) and the core pressure's relative difference */
+static void compare_rolls(rs_load_placement placement, double tol)
+{
+  rs_roll *a = newsprint(RS_REUSE_ON, placement), *b = newsprint(RS_REUSE_OFF, placement);
+  if (!a || !b) return;
+  CHECK(wind_to(a, N) && wind_to(b, N));
+  const double *sa = rs_roll_sigma_r(a), *sb = rs_roll_sigma_r(b);
+  const double *ha = rs_roll_sigma_theta(a), *hb = rs_roll_sigma_theta(b);
+  double dr = 0.0, dh = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const double unit = 682.5 / rs_roll_layer_radius(a, j);
+    dr = fmax(dr, fabs(sa[j] - sb[j]) / unit);
+    dh = fmax(dh, fabs(ha[j] - hb[j]) * 70e-6 / 682.5);
+  }
+  CHECK_CLOSE(rs_roll_core_pressure(a), rs_roll_core_pressure(b), tol);
+  CHECK(dr < tol * 100); /* summed over the increments: the core pressure is ~100 T0/s */
+  CHECK(dh < tol);
+  rs_roll_stats st;
+  rs_roll_get_stats(a, &st);
+  CHECK(st.full_integrations < N / 2); /* the deep part was reused */
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
+static void matches_reuse_none(void)
+{
+  compare_rolls(RS_LOAD_BENEATH, 2e-5);
+  compare_rolls(RS_LOAD_HAKIEL, 2e-5);
+}
+
+static void flush_midway_is_harmless(void)
+{
+  rs_roll *a = newsprint(RS_REUSE_ON, RS_LOAD_BENEATH), *b = newsprint(RS_REUSE_ON, RS_LOAD_BENEATH);
+  if (!a || !b) return;
+  for (int n = 100; n <= N; n += 100) {
+    CHECK(wind_to(a, n) && wind_to(b, n));
+    (void)rs_roll_sigma_r(b); /* b's deep part applied every 100 layers, a's never */
+  }
+  CHECK_CLOSE(rs_roll_core_pressure(a), rs_roll_core_pressure(b), 1e-5);
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
+static const check_case cases[] = {{"layer_reads_match_full", layer_reads_match_full},
+                                   {"matches_reuse_none", matches_reuse_none},
+                                   {"flush_midway_is_harmless", flush_midway_is_harmless}};
+int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
