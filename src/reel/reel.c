@@ -75,6 +75,7 @@ static void reel_params(const rs_problem *pb, rs_roll_params *p)
   p->max_steps = pb->numerics.max_steps;
   p->reuse = pb->numerics.reuse;
   p->placement = pb->numerics.load_placement;
+  p->correction = pb->numerics.error_correction;
 }
 
 /* ---- stress history -------------------------------------------------------------------

@@ -57,6 +57,7 @@ void rs_roll_destroy(rs_roll **rollp)
   if (roll->cvode) CVodeFree(&roll->cvode);
   if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
   if (roll->y) N_VDestroy(roll->y);
+  if (roll->ele) N_VDestroy(roll->ele);
   if (roll->sunctx) SUNContext_Free(&roll->sunctx);
   free(roll->sigma_r);
   free(roll->sigma_theta);
@@ -105,6 +106,8 @@ static rs_status roll_check_params(const rs_roll_params *p)
     return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
   if (p->placement != RS_LOAD_BENEATH && p->placement != RS_LOAD_HAKIEL)
     return RS_ERROR(RS_ERR_INPUT, "unknown load placement %d", (int)p->placement);
+  if (p->correction != RS_CORRECTION_ON && p->correction != RS_CORRECTION_OFF)
+    return RS_ERROR(RS_ERR_INPUT, "unknown error correction setting %d", (int)p->correction);
   return RS_OK;
 }
 
@@ -163,6 +166,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
   if (rs_roll_vector2_specialise(roll->y) != 0) goto cvode_fail;
   N_VConst(0.0, roll->y);
+  roll->ele = N_VClone(roll->y);
+  if (!roll->ele) goto cvode_fail;
   roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
   if (!roll->cvode) goto cvode_fail;
   if (CVodeSetErrHandlerFn(roll->cvode, roll_cvode_err, roll) != CV_SUCCESS) goto cvode_fail;

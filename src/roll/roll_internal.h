@@ -52,6 +52,7 @@ struct rs_roll {
   SUNContext sunctx;
   void *cvode;
   N_Vector y;
+  N_Vector ele;         /* CVODE's estimated local errors of the last step */
   SUNNonlinearSolver NLS;
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;

@@ -332,6 +332,7 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   n->max_steps = max_steps;
   n->reuse = (rs_reuse)ys_enum(root, "numerics.reuse");
   n->load_placement = (rs_load_placement)ys_enum(root, "numerics.load_placement");
+  n->error_correction = (rs_correction)ys_enum(root, "numerics.error_correction");
   return RS_OK;
 }
 

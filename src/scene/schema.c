@@ -162,6 +162,9 @@ static const ys_value v_reuse = ENUM(reuses);
 static const ys_name placements[] = {
     {"beneath", RS_LOAD_BENEATH}, {"hakiel", RS_LOAD_HAKIEL}, {NULL, 0}};
 static const ys_value v_placement = ENUM(placements);
+static const ys_name corrections[] = {
+    {"on", RS_CORRECTION_ON}, {"off", RS_CORRECTION_OFF}, {NULL, 0}};
+static const ys_value v_correction = ENUM(corrections);
 
 static const ys_field numerics_fields[] = {
     DEF("layers_per_step", &v_int, "1"),
@@ -170,6 +173,7 @@ static const ys_field numerics_fields[] = {
     DEF("max_steps", &v_long, "0"),
     DEF("reuse", &v_reuse, "deep"),
     DEF("load_placement", &v_placement, "beneath"),
+    DEF("error_correction", &v_correction, "on"),
     END};
 static const ys_value v_numerics = MAP(numerics_fields);
 

@@ -70,7 +70,7 @@ static void compare_rolls(rs_load_placement placement, double tol)
   }
   CHECK_CLOSE(rs_roll_core_pressure(a), rs_roll_core_pressure(b), tol);
   CHECK(dr < tol * 100); /* summed over the increments: the core pressure is ~100 T0/s */
-  CHECK(dh < tol);
+  CHECK(dh < 3 * tol); /* the hoop stress: see test_roll.reuse_vs_from_core */
   rs_roll_stats st;
   rs_roll_get_stats(a, &st);
   CHECK(st.full_integrations < N / 2); /* the deep part was reused */

@@ -77,7 +77,11 @@ static void friction_adaptive_vs_every(void)
 static void friction_curved_adaptive_vs_every(void)
 {
   const char *scene = RS_TESTS_DIR "/validation/scenes/nip-friction-curved.yaml";
-  long n3 = compare_policies(scene, 1e-3, 2e-3, 0), n5 = compare_policies(scene, 1e-5, 2e-5, 0);
+  /* at T0_rtol 1e-5 the stresses' bound also holds the engine's own scatter between two
+   * runs that wind differently (the rewinds restart its partial integrations at other
+   * nodes), ~2 rtol of numerics.rtol = 1e-5 in the hoop stress with the error correction
+   * (docs/roll-model.md): 2 T0_rtol + 2 rtol */
+  long n3 = compare_policies(scene, 1e-3, 2e-3, 0), n5 = compare_policies(scene, 1e-5, 4e-5, 0);
   /* a linear prediction errs by O(h^2): the solves needed grow like tol^(-1/2) */
   double order = log((double)n5 / n3) / log(100.0);
   CHECK_LOG("observed solves ~ tol^(-p), p", order);
