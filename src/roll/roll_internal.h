@@ -6,6 +6,7 @@
  *                     interpolation inside each step; the reuse of the deep solution)
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_state.c      saving and restoring a roll's stresses
+ *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
@@ -91,6 +92,9 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
 void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
+
+/* roll_air.c */
+void roll_air_modulus(rs_roll *roll, int k);
 
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);

@@ -150,6 +150,7 @@ rs_status roll_set_modulus(rs_roll *roll, int k)
                         "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
                         "positive: the radial law is outside its range",
                         roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+  if (roll->p.air_film) roll_air_modulus(roll, k);
   /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
    * long roll): a log at every node at every increment was 7 % of the engine's time */
   roll->epoch++;
