@@ -449,11 +449,16 @@ done:
     history_finish(res, roll, N, hist_cap);
   }
   else if (res) res->n_layers = 0;
-  if (res && pb->centrifugal && (st == RS_OK || spin_stop) && res->n_layers > 0) {
+  if (res && has_air && air.film && res->n_layers > 0) {
+    rs_status ast = rs_reel_air_entrained(&air, res); /* the spin part's stack has them */
+    if (st == RS_OK) st = ast;
+  }
+  if (res && pb->centrifugal && (st == RS_OK || spin_stop) && res->n_layers > 0 &&
+      (!has_air || res->air_film_entrained)) {
     rs_status sst = rs_spin_wound(pb, res, 0);
     if (st == RS_OK) st = sst;
   }
-  if (res && has_air && air.film && res->n_layers > 0) {
+  if (res && has_air && res->air_film_entrained) {
     rs_status ast = rs_reel_air_finish(&air, pb, res);
     if (st == RS_OK) st = ast;
     if (res->n_stages > 0 && res->stage_layers[res->n_stages - 1] == res->n_layers)

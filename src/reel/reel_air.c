@@ -71,18 +71,27 @@ void rs_reel_air_wound(rs_reel_air *air, int j, double R, double h, double t)
   air->length[j] = (j ? air->length[j - 1] : 0.0) + 2.0 * 3.14159265358979323846 * (R + h + 0.5 * t);
 }
 
+rs_status rs_reel_air_entrained(const rs_reel_air *air, rs_reel_result *res)
+{
+  const int n = res->n_layers;
+  res->air_film_entrained = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+  if (!res->air_film_entrained)
+    return RS_ERROR(RS_ERR_MEMORY, "entrained air: out of memory (%d layers)", n);
+  memcpy(res->air_film_entrained, air->film, (size_t)n * sizeof(double));
+  return RS_OK;
+}
+
 rs_status rs_reel_air_finish(const rs_reel_air *air, const rs_problem *pb, rs_reel_result *res)
 {
   const int n = res->n_layers;
   const double pa = pb->air.pressure, t = pb->material.caliper;
+  rs_status st = res->air_film_entrained ? RS_OK : rs_reel_air_entrained(air, res);
+  if (st) return st;
   res->air_film = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
-  res->air_film_entrained = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
-  if (!res->air_film || !res->air_film_entrained)
-    return RS_ERROR(RS_ERR_MEMORY, "entrained air: out of memory (%d layers)", n);
+  if (!res->air_film) return RS_ERROR(RS_ERR_MEMORY, "entrained air: out of memory (%d layers)", n);
   double r = res->core_radius;
   for (int j = 0; j < n; ++j) {
     const double P = j ? -res->sigma_r[j - 1] : res->core_pressure;
-    res->air_film_entrained[j] = air->film[j];
     res->air_film[j] = rs_air_compressed_film(air->film[j], P, pa);
     r += t + res->air_film[j];
     res->radius[j] = r;

@@ -35,6 +35,9 @@ int rs_reel_air_stop(const rs_reel_air *air, const rs_problem *pb, int j, double
 /* Records layer j's film and web length (R: the roll's radius beneath it). */
 void rs_reel_air_wound(rs_reel_air *air, int j, double R, double h, double t);
 
+/* res->air_film_entrained from the films (before the spin part, which reads it). */
+rs_status rs_reel_air_entrained(const rs_reel_air *air, rs_reel_result *res);
+
 /* After winding (the final stresses in res): res->radius with the films compressed by the
  * final pressures, res->air_film, res->air_film_entrained, res->air_wound_length. */
 rs_status rs_reel_air_finish(const rs_reel_air *air, const rs_problem *pb, rs_reel_result *res);
