@@ -46,10 +46,22 @@ double rs_reel_air_film(const rs_problem *pb, double R, double Ti, double V, dou
 double rs_reel_air_begin(rs_reel_air *air, const rs_problem *pb, const rs_roll *roll, int n)
 {
   const double pa = pb->air.pressure, *sr = rs_roll_sigma_r(roll);
-  double gaps = 0.0;
-  for (int j = 0; j < n; ++j)
-    if (air->film[j] > 0.0)
-      gaps += rs_air_compressed_film(air->film[j], j ? -sr[j - 1] : rs_roll_core_pressure(roll), pa);
+  const double *restrict f = air->film + 1; /* node j + 1 is under sigma_r[j] */
+  double gaps = n > 0 ? rs_air_compressed_film(air->film[0], rs_roll_core_pressure(roll), pa) : 0.0;
+  /* rs_air_compressed_film inline, in four sums: the loop vectorises (every layer at every
+   * increment) */
+  double a[4] = {0.0, 0.0, 0.0, 0.0};
+  int j = 0;
+  for (; j + 3 < n - 1; j += 4)
+    for (int l = 0; l < 4; ++l) {
+      const double P = -sr[j + l];
+      a[l] += f[j + l] * pa / (pa + (P > 0.0 ? P : 0.0));
+    }
+  for (; j < n - 1; ++j) {
+    const double P = -sr[j];
+    a[0] += f[j] * pa / (pa + (P > 0.0 ? P : 0.0));
+  }
+  gaps += (a[0] + a[1]) + (a[2] + a[3]);
   air->radius = pb->core.radius + n * pb->material.caliper + gaps;
   return air->radius;
 }

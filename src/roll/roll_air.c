@@ -3,10 +3,18 @@
  * has films (rs_roll_params.air_film), after the stack law and its range check. */
 #include "roll/roll_internal.h"
 
-/* E_r at the nodes 0..k becomes t / (t / E_r + h_j p_a / (p_a + P_j)^2) */
+/* E_r at the nodes 0..k becomes t / (t / E_r + c), c = h_j p_a / (p_a + P_j)^2 (the law of
+ * rs_air_series_modulus), written E - E (c E) / (t + c E): no branch, so the loop
+ * vectorises (every node at every increment), and a node without a film (c = 0) keeps E_r
+ * bit for bit. */
 void roll_air_modulus(rs_roll *roll, int k)
 {
-  const double *h = roll->p.air_film, pa = roll->p.air_pressure, t = roll->p.caliper;
-  for (int j = 0; j <= k; ++j)
-    roll->Er[j] = rs_air_series_modulus(roll->Er[j], t, h[j], roll->P_node[j], pa);
+  const double *restrict h = roll->p.air_film, *restrict P = roll->P_node;
+  double *restrict E = roll->Er;
+  const double pa = roll->p.air_pressure, t = roll->p.caliper;
+  for (int j = 0; j <= k; ++j) {
+    const double p = P[j] > 0.0 ? P[j] : 0.0, q = pa + p;
+    const double c = h[j] * pa / (q * q), e = E[j];
+    E[j] = e - e * (c * e) / (t + c * e);
+  }
 }
