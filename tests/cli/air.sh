@@ -11,8 +11,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 command -v h5dump >/dev/null || fail "h5dump not found (Debian package hdf5-tools)"
 "$bin" run "$scene" -o "$tmp/a.h5" > "$tmp/out.txt" || fail "run failed"
 grep -q '^  entrained air  ' "$tmp/out.txt" || { cat "$tmp/out.txt"; fail "no 'entrained air' line"; }
-col() { h5dump -d "$1" -m '%.17g' -y -w 0 -o "$tmp/col.txt" "$tmp/a.h5" >/dev/null
-        tr ',' '\n' < "$tmp/col.txt" | sed 's/ //g; /^$/d'; }
+# one dataset as numbers, one a line, 17 digits (its own scratch file: two run at once below)
+col() { local o="$tmp/col-${1//\//_}.txt"
+        h5dump -d "$1" -m '%.17g' -y -w 0 -o "$o" "$tmp/a.h5" >/dev/null
+        tr ',' '\n' < "$o" | sed 's/ //g; /^$/d'; }
 n=$(col /layers/radius | wc -l)
 [ "$n" -gt 0 ] || fail "no layers"
 [ "$(col /layers/air_film | wc -l)" -eq "$n" ] || fail "/layers/air_film is not one value a layer"
