@@ -1,6 +1,6 @@
 # Speed effects: entrained air (docs/validation.md, "Speed effects")
 rs_test(test_air validation SOURCES validation/test_air.c
-        CASES film_law roughness_cutoff compression_identity all_cut_is_no_air reel_identities
+        CASES film_law roughness_cutoff compression_identity roll_series all_cut_is_no_air reel_identities
               topweb refused)
 target_compile_definitions(test_air PRIVATE RS_ROOT_DIR="${PROJECT_SOURCE_DIR}")
 # very high speed (with the centrifugal load), a very smooth film, a heavy and a light nip

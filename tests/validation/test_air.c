@@ -8,6 +8,7 @@
 
 #include "check.h"
 #include "reelsim/material.h"
+#include "roll_helpers.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 
@@ -85,6 +86,36 @@ static void compression_identity(void)
   CHECK_CLOSE(rs_air_series_modulus(Er, t, 1e-15, 0.0, pa), Er, 1e-6);
   /* a film much softer than the stack: t p_a / h */
   CHECK_CLOSE(rs_air_series_modulus(1e30, t, h, 0.0, pa), t * pa / h, 1e-12);
+}
+
+/* The engine with films: a film whose compliance h p_a / (p_a + P)^2 is constant (p_a far
+ * above every pressure) is, in series with a linear stack E_r, the linear stack
+ * t / (t / E_r + c): with c = t / E_r the roll with films is the roll of E_r / 2. */
+static void roll_series(void)
+{
+  const int n = 300;
+  const double rc = 0.0762, t = 70e-6, Et = 3.5e9, Er = 2e6, pa = 1e15, h = (t / Er) * pa;
+  rs_roll_params a = linear_params(rc, t, Et, Er, INFINITY, n);
+  rs_roll_params b = linear_params(rc, t, Et, 0.5 * Er, INFINITY, n);
+  double *film = malloc((size_t)(n + 1) * sizeof *film);
+  CHECK(film != NULL);
+  for (int j = 0; j <= n; ++j) film[j] = h;
+  a.air_film = film;
+  a.air_pressure = pa;
+  rs_roll *ra = wind(&a, n, 1, 350.0), *rb = wind(&b, n, 1, 350.0);
+  CHECK(ra && rb);
+  const double *sa = rs_roll_sigma_r(ra), *sb = rs_roll_sigma_r(rb);
+  double err = 0.0, scale = 0.0;
+  for (int j = 0; j < n; ++j) {
+    err = fmax(err, fabs(sa[j] - sb[j]));
+    scale = fmax(scale, fabs(sb[j]));
+  }
+  CHECK_LOG("max |sigma_r(films) - sigma_r(E_r / 2)| / max |sigma_r|", err / scale);
+  CHECK_LT(err / scale, 1e-7);
+  CHECK_CLOSE(rs_roll_core_pressure(ra), rs_roll_core_pressure(rb), 1e-7);
+  rs_roll_destroy(&ra);
+  rs_roll_destroy(&rb);
+  free(film);
 }
 
 static rs_scene *load(const char *text, int nset, const char **sets)
@@ -342,6 +373,7 @@ static void hard_nip(void)
 static const check_case cases[] = {{"film_law", film_law},
                                    {"roughness_cutoff", roughness_cutoff},
                                    {"compression_identity", compression_identity},
+                                   {"roll_series", roll_series},
                                    {"all_cut_is_no_air", all_cut_is_no_air},
                                    {"reel_identities", reel_identities},
                                    {"topweb", topweb},
