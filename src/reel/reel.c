@@ -353,10 +353,17 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
       if (has_air) {
         /* the film this layer brings; the layer nearest the roll's size is the last */
         film = rs_reel_air_film(pb, R_air, Ti, rs_recipe_eval(&pb->speed, r), load);
+        /* a slack web (Ti = 0, no nip) floats on an unbounded film: past the roll's size
+         * (a recipe at its end) that is the end, before it the run cannot go on */
+        if (!isfinite(film) && rs_reel_air_stop(&air, pb, j, R_air, 0.0)) {
+          m = b;
+          air_end = 1;
+          break;
+        }
         if (!isfinite(film)) {
           st = RS_ERROR(RS_ERR_SOLVER,
                         "entrained air: the film under layer %d of %d (r = %.6g m, web tension "
-                        "%g N/m) is not finite",
+                        "%g N/m) is not finite: a slack web floats on the air it carries",
                         j + 1, N, R_air, Ti);
           goto done;
         }

@@ -259,8 +259,11 @@ static void print_air(FILE *out, const rs_scene *s)
     lo = fmin(lo, h);
     hi = fmax(hi, h);
   }
-  fprintf(out, "  - entrained air: film %s .. %s um as wound on (Knox-Sweeney foil bearing, "
-               "U = 2V, mu = %s Pa s", f(x, lo * 1e6), f(y, hi * 1e6), f(z, a->viscosity));
+  char range[2 * sizeof(num_t) + 48];
+  if (isfinite(hi)) snprintf(range, sizeof range, "%s .. %s um", f(x, lo * 1e6), f(y, hi * 1e6));
+  else snprintf(range, sizeof range, "%s um .. unbounded (a web tension of 0)", f(x, lo * 1e6));
+  fprintf(out, "  - entrained air: film %s as wound on (Knox-Sweeney foil bearing, U = 2V, "
+               "mu = %s Pa s", range, f(z, a->viscosity));
   if (p->nip.model != RS_NIP_NONE)
     fprintf(out, "; the nip's film (roller radius %s mm) is less in %d of %d layers",
             f(w, a->nip_radius * 1e3), nip_less, p->n_layers);

@@ -370,6 +370,31 @@ static void hard_nip(void)
   rs_scene_destroy(&b);
 }
 
+/* a web tension of 0: past the roll's size (a taper's end) the reel has stopped; before it
+ * (a table dropping to 0) the run stops there, exit 3, keeping the finished layers */
+static void hard_slack(void)
+{
+  rs_scene *a = load(MAT "winding: {final_radius: 0.1, tension: {law: linear, start: 350, end: 0}, speed: 20}\n"
+                         "air: {roughness: 0.5e-6}\n", 0, NULL);
+  rs_reel_result *r = NULL;
+  CHECK(rs_scene_wind(a, NULL, &r) == RS_OK);
+  CHECK_LOG("taper to 0: layers", r->n_layers);
+  CHECK_LOG("taper to 0: outer radius (m)", r->radius[r->n_layers - 1]);
+  CHECK_LT(fabs(r->radius[r->n_layers - 1] - 0.1), 1e-3);
+  for (int j = 0; j < r->n_layers; ++j) CHECK_FINITE(r->air_film[j]);
+  rs_reel_result_destroy(&r);
+  rs_scene_destroy(&a);
+  a = load(MAT "winding: {final_radius: 0.1, tension: {table: [[0.0762, 350], [0.09, 0], [0.1, 0]]}, "
+               "speed: 20}\nair: {roughness: 0.5e-6}\n", 0, NULL);
+  CHECK(rs_scene_wind(a, NULL, &r) == RS_ERR_SOLVER);
+  printf("  %s\n", rs_error_message());
+  CHECK(strstr(rs_error_message(), "slack web") != NULL);
+  CHECK(r->n_layers > 100 && r->air_film != NULL);
+  for (int j = 0; j < r->n_layers; ++j) CHECK_FINITE(r->air_film[j]);
+  rs_reel_result_destroy(&r);
+  rs_scene_destroy(&a);
+}
+
 static const check_case cases[] = {{"film_law", film_law},
                                    {"roughness_cutoff", roughness_cutoff},
                                    {"compression_identity", compression_identity},
@@ -380,5 +405,6 @@ static const check_case cases[] = {{"film_law", film_law},
                                    {"refused", refused},
                                    {"hard_fast", hard_fast},
                                    {"hard_smooth", hard_smooth},
-                                   {"hard_nip", hard_nip}};
+                                   {"hard_nip", hard_nip},
+                                   {"hard_slack", hard_slack}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
