@@ -97,7 +97,8 @@ const double *rs_roll_sigma_r(const rs_roll *roll);
 const double *rs_roll_sigma_theta(const rs_roll *roll);
 double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression positive */
 /* Tangent radial modulus E_r (Pa) at the outermost loaded interface: under the outermost
- * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL). */
+ * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL); with
+ * air films, the film there in series. */
 double rs_roll_surface_modulus(const rs_roll *roll);
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats);
 

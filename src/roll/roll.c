@@ -260,7 +260,11 @@ double rs_roll_surface_modulus(const rs_roll *roll)
 {
   const int node = roll->n - roll->shift; /* the outermost loaded interface */
   double P = node > 0 ? -roll->sigma_r[node - 1] : node == 0 && roll->n > 0 ? -roll->core_sigma : 0.0;
-  return rs_radial_modulus(&roll->p.radial, P);
+  const double E = rs_radial_modulus(&roll->p.radial, P);
+  /* entrained air: the film at that interface in series (roll_air.c) */
+  return roll->p.air_film && node >= 0 ? rs_air_series_modulus(E, roll->p.caliper, roll->p.air_film[node], P,
+                                                                 roll->p.air_pressure)
+                                       : E;
 }
 
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats)
