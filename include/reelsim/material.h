@@ -72,7 +72,33 @@ typedef struct rs_material {
   int has_hygroscopic;   /* material.hygroscopic given */
   double beta_r, beta_theta;   /* 1/%RH: hygroscopic expansion, likewise */
   rs_prony viscoelastic; /* material.viscoelastic (n = 0: not given) */
+  double roughness;      /* m: RMS roughness of the web's two faces combined (entrained air,
+                            the default of air.roughness); 0 = not given */
 } rs_material;
+
+/* Entrained air (docs/roll-model.md, "Entrained air"). The film a web wrapping a roll of
+ * radius R carries in (Knox & Sweeney 1971, the foil bearing of Blok & van Rossum 1953):
+ *     h0 = 0.643 R (6 mu U / T)^(2/3)                                  (m)
+ * mu the air's viscosity (Pa s), T the web tension (N/m), U the sum of the two surfaces'
+ * speeds (m/s; 2V when web and roll both move at V). */
+double rs_air_foil_film(double R, double U, double T, double mu);
+/* The film a loaded nip lets through: the rigid-isoviscous minimum film of a cylinder
+ * rolling on a cylinder (Martin 1916; Hamrock 1994, "rigid-isoviscous" regime),
+ *     h_min = 4.9 mu u R_eq / w,    1/R_eq = 1/R_roll + 1/R_nip       (m)
+ * u the mean speed of the surfaces (m/s), w the nip load (N/m). */
+double rs_air_nip_film(double R_roll, double R_nip, double u, double w, double mu);
+/* The film that stays in the roll once the web lies on the asperities: what exceeds k
+ * combined RMS roughnesses (sigma, m), max(0, h0 - k sigma); the air below escapes
+ * through the valleys (k = 3: Ducotey & Good 1999's full-separation height). */
+double rs_air_surviving_film(double h0, double sigma, double k);
+/* A film h (at the ambient pressure p_a, Pa absolute) under the radial pressure P (Pa,
+ * gauge, compression positive; P < 0 counts as 0): the trapped air an isothermal ideal
+ * gas, h p_a / (p_a + P). */
+double rs_air_compressed_film(double h, double P, double p_a);
+/* The stack and the film under one layer in series, as the roll's stress solve sees it
+ * (layer pitch t): t / E = t / E_r + h p_a / (p_a + P)^2, the film's tangent compliance
+ * -dh/dP. h = 0 returns E_r itself. */
+double rs_air_series_modulus(double E_r, double t, double h, double P, double p_a);
 
 RS_END_DECLS
 #endif

@@ -54,6 +54,17 @@ typedef struct rs_storage_spec {
   rs_storage_stage stage[RS_STORAGE_MAX_STAGES];
 } rs_storage_spec;
 
+/* Entrained air (docs/roll-model.md, "Entrained air"): the scene's `air` block. on = 0:
+ * no air, the roll winds exactly as without the block. */
+typedef struct rs_air_spec {
+  int on;                  /* 1: entrained air (needs the speed and a roughness) */
+  double viscosity;        /* Pa s, air.viscosity (default 1.8e-5: air at 20 C) */
+  double roughness;        /* m, combined RMS roughness of web and roll surfaces */
+  double cutoff;           /* the film kept is max(0, h0 - cutoff roughness) (default 3) */
+  double pressure;         /* Pa, absolute ambient pressure (default 101325) */
+  double nip_radius;       /* m, the nip roller's radius (a problem with a nip) */
+} rs_air_spec;
+
 typedef struct rs_problem {
   rs_material material;
   rs_core core;
@@ -70,6 +81,11 @@ typedef struct rs_problem {
    * the spin field of the last layer's speed (rs_reel_result.at_speed_*). */
   rs_recipe speed;         /* m/s against roll radius, winding.speed (zeroed: 0) */
   int centrifugal;         /* 1: centrifugal load on (needs material.density) */
+  /* Entrained air: each layer's film widens the roll, so the reel decides the number of
+   * layers as it winds: up to n_layers, until the outer radius reaches final_radius or,
+   * when web_length > 0, until that much web is wound. */
+  rs_air_spec air;
+  double web_length;       /* m, the roll's size as a length (0: final_radius) */
 } rs_problem;
 
 RS_END_DECLS

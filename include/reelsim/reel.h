@@ -25,6 +25,13 @@ typedef struct rs_reel_result {
   double *at_speed_sigma_r;     /* Pa, per layer */
   double *at_speed_sigma_theta; /* Pa, per layer */
   double at_speed_core_pressure; /* Pa */
+  /* Entrained air on (problem.air.on; NULL otherwise): the film under each layer as it
+   * survived into the roll at the ambient pressure, and as the final pressure compresses
+   * it (radius then includes the compressed films); the web wound, at the radii it went
+   * on at (m). */
+  double *air_film_entrained;   /* m, per layer */
+  double *air_film;             /* m, per layer, in the roll at rest */
+  double air_wound_length;      /* m */
   long increments, cvode_steps, rhs_evals;
   long full_integrations;    /* increments integrated from the core (numerics.reuse) */
   double wall_seconds;
@@ -99,6 +106,11 @@ typedef struct rs_reel_sizes {
   double wound_length; /* m */
   int has_mass;        /* 1 when material.density is given */
   double mass;         /* kg per metre of width (0 when has_mass is 0) */
+  /* Entrained air (problem.air.on): the wound length is then the web's as it went on. */
+  int has_air;         /* 1 when the reel has entrained air (the rest 0 otherwise) */
+  double air_thickness;                      /* m, the films in the reel summed */
+  double air_film_min, air_film_max;         /* m, the films in the reel (compressed) */
+  double air_entrained_min, air_entrained_max; /* m, the films as they went on */
 } rs_reel_sizes;
 
 void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_reel_sizes *out);
@@ -130,10 +142,13 @@ rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
  * call the library through a foreign-function interface (the Python package): they stay
  * right when fields are added. rs_reel_result_layers: n_layers (0 for NULL).
  * rs_reel_result_array: the per-layer array called `name` ("radius", "wound_on_tension",
- * "web_tension", "nip_load", "sigma_r", "sigma_theta"; owned by the result) with its
- * length in *n (may be NULL); NULL and *n = 0 for an unknown name or a NULL result.
- * rs_reel_result_scalar: "core_pressure", "core_radius", "wall_seconds"; NaN for an
- * unknown name or a NULL result. rs_reel_result_finite: rs_reel_summary_finite of the
+ * "web_tension", "nip_load", "sigma_r", "sigma_theta"; with entrained air "air_film",
+ * "air_film_entrained"; with the centrifugal load "at_speed_sigma_r",
+ * "at_speed_sigma_theta"; owned by the result) with its length in *n (may be NULL); NULL
+ * and *n = 0 for an unknown name, an effect the problem did not have, or a NULL result.
+ * rs_reel_result_scalar: "core_pressure", "core_radius", "wall_seconds",
+ * "at_speed_core_pressure", "air_wound_length"; NaN for an unknown name, an effect the
+ * problem did not have, or a NULL result. rs_reel_result_finite: rs_reel_summary_finite of the
  * result's summary (1 when every figure a user reads is a number; else 0, *what naming
  * the first that is not). */
 int rs_reel_result_layers(const rs_reel_result *res);

@@ -73,6 +73,13 @@ typedef struct rs_roll_params {
   rs_reuse reuse;          /* 0 = RS_REUSE_ON */
   rs_load_placement placement; /* 0 = RS_LOAD_BENEATH */
   rs_correction correction; /* 0 = RS_CORRECTION_ON */
+  /* Entrained air (docs/roll-model.md, "Entrained air"): air_film[j] (m) is the film under
+   * layer j, at node j (r_c + j t), entrained at the ambient pressure air_pressure (Pa,
+   * absolute); the stack law and the film in series, rs_air_series_modulus. Read at every
+   * increment: the caller fills entry j before winding layer j (max_layers + 1 entries).
+   * NULL: no air, the stack law alone. */
+  const double *air_film;
+  double air_pressure;
 } rs_roll_params;
 
 typedef struct rs_roll_stats {
@@ -103,7 +110,8 @@ const double *rs_roll_sigma_theta(const rs_roll *roll);
 double rs_roll_layer_sigma_r(const rs_roll *roll, int j);
 double rs_roll_core_pressure(const rs_roll *roll);         /* Pa, compression positive */
 /* Tangent radial modulus E_r (Pa) at the outermost loaded interface: under the outermost
- * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL). */
+ * layer (RS_LOAD_BENEATH; the core for one layer), at its outer face (RS_LOAD_HAKIEL); with
+ * air films, the film there in series. */
 double rs_roll_surface_modulus(const rs_roll *roll);
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats);
 

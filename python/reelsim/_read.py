@@ -42,4 +42,10 @@ def read(path):
                       core_pressure=float(f["final/core_pressure"][()]),
                       wall_seconds=float(f.attrs.get("wall_seconds", np.nan)),
                       web_tension=arr("layers/web_tension"), nip_load=arr("layers/nip_load"),
-                      title=_text(f.attrs.get("title", "")))
+                      title=_text(f.attrs.get("title", "")),
+                      air_film=arr("layers/air_film"),
+                      air_film_entrained=arr("layers/air_film_entrained"),
+                      at_speed_sigma_r=arr("final_at_speed/sigma_r"),
+                      at_speed_sigma_theta=arr("final_at_speed/sigma_theta"),
+                      at_speed_core_pressure=float(f["final_at_speed/core_pressure"][()])
+                      if "final_at_speed/core_pressure" in f else float("nan"))

@@ -20,6 +20,15 @@ class Result:
     core_pressure     Pa, pressure on the core
     wall_seconds      s, wall-clock time of the winding
     title             the scene's title
+
+    Winding at speed (empty arrays, NaN, when the scene did not call for the effect):
+    air_film              m, entrained air film under each layer in the wound reel
+                          (compressed by the final pressure; /layers/air_film)
+    air_film_entrained    m, the film as it went on (/layers/air_film_entrained)
+    at_speed_sigma_r      Pa, radial stress with the roll spinning (centrifugal load;
+                          /final_at_speed/sigma_r; sigma_r is then the roll at rest)
+    at_speed_sigma_theta  Pa, hoop stress with the roll spinning
+    at_speed_core_pressure  Pa, core pressure with the roll spinning
     """
 
     radius: np.ndarray
@@ -32,6 +41,11 @@ class Result:
     web_tension: np.ndarray = field(default_factory=lambda: np.empty(0))
     nip_load: np.ndarray = field(default_factory=lambda: np.empty(0))
     title: str = ""
+    air_film: np.ndarray = field(default_factory=lambda: np.empty(0))
+    air_film_entrained: np.ndarray = field(default_factory=lambda: np.empty(0))
+    at_speed_sigma_r: np.ndarray = field(default_factory=lambda: np.empty(0))
+    at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
+    at_speed_core_pressure: float = float("nan")
 
     @property
     def layers(self):

@@ -15,7 +15,8 @@ from . import _lib
 from ._errors import Error, InputError, SolverError
 from ._result import Result
 
-_ARRAYS = ("radius", "sigma_r", "sigma_theta", "wound_on_tension", "web_tension", "nip_load")
+_ARRAYS = ("radius", "sigma_r", "sigma_theta", "wound_on_tension", "web_tension", "nip_load",
+           "air_film", "air_film_entrained", "at_speed_sigma_r", "at_speed_sigma_theta")
 
 
 def _is_text(scene):
@@ -121,7 +122,12 @@ def run(scene, sets=None, *, name=None):
                       core_pressure=float(_lib.rs_reel_result_scalar(res, b"core_pressure")),
                       wall_seconds=float(_lib.rs_reel_result_scalar(res, b"wall_seconds")),
                       web_tension=a["web_tension"], nip_load=a["nip_load"],
-                      title=_lib.rs_scene_title(sc).decode("utf-8", "replace"))
+                      title=_lib.rs_scene_title(sc).decode("utf-8", "replace"),
+                      air_film=a["air_film"], air_film_entrained=a["air_film_entrained"],
+                      at_speed_sigma_r=a["at_speed_sigma_r"],
+                      at_speed_sigma_theta=a["at_speed_sigma_theta"],
+                      at_speed_core_pressure=float(
+                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")))
     finally:
         _lib.rs_reel_result_destroy(ctypes.byref(res))
         _lib.rs_scene_destroy(ctypes.byref(sc))

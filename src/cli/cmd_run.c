@@ -55,6 +55,11 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("  wound length       %.1f m (the layers' circumferences at mid-thickness)\n",
          z.wound_length);
   if (z.has_mass) printf("  roll mass          %.2f kg per metre of width\n", z.mass);
+  if (z.has_air)
+    printf("  entrained air      %.1f mm of the radius (films %.3g .. %.3g um in the reel, "
+           "%.3g .. %.3g um as wound on)\n",
+           z.air_thickness * 1e3, z.air_film_min * 1e6, z.air_film_max * 1e6,
+           z.air_entrained_min * 1e6, z.air_entrained_max * 1e6);
   cli_fmt_stress(a, sizeof a, s->core_pressure);
   printf("  core pressure      %s\n", a);
   cli_fmt_stress(a, sizeof a, s->peak_pressure);

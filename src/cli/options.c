@@ -142,9 +142,10 @@ const cli_command cli_commands[] = {
      "PNG plots of a run, compare, sweep or study file (needs gnuplot)",
      "Draws PNG plots of a reelsim file with gnuplot into DIR (default: the current\n"
      "directory), named <file name>-<plot>.png: interlayer pressure and hoop stress\n"
-     "against radius (with history stages and defect ranges when the file has them),\n"
-     "the wound-on tension with the recipe, nip pressure and shear profiles when the\n"
-     "file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
+     "against radius (with history stages and defect ranges when the file has them,\n"
+     "and the roll spinning when it has /final_at_speed), the wound-on tension with the\n"
+     "recipe, the air film when the file has /layers/air_film, nip pressure and shear\n"
+     "profiles when the file has /nip/profiles; for a compare file the runs overlaid, one plot each; for a\n"
      "sweep file each figure against the parameter varied, or a heat map over the first\n"
      "two varied, and an optimisation's history (/optimize); for a study file (study.h5)\n"
      "the study's picture, <file name>-study.png.\n",

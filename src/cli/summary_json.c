@@ -72,6 +72,17 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   cli_json_number(j, "final_diameter", z.diameter);
   cli_json_number(j, "wound_length", z.wound_length);
   cli_json_number(j, "roll_mass", z.has_mass ? z.mass : NAN);
+  if (z.has_air) {
+    cli_json_object(j, "air");
+    cli_json_number(j, "thickness", z.air_thickness);
+    cli_json_number(j, "film_min", z.air_film_min);
+    cli_json_number(j, "film_max", z.air_film_max);
+    cli_json_number(j, "entrained_min", z.air_entrained_min);
+    cli_json_number(j, "entrained_max", z.air_entrained_max);
+    cli_json_end(j);
+  } else {
+    cli_json_null(j, "air");
+  }
   cli_json_number(j, "core_pressure", s.core_pressure);
   cli_json_number(j, "peak_pressure", s.peak_pressure);
   cli_json_number(j, "peak_pressure_radius", s.peak_pressure_radius);

@@ -78,6 +78,14 @@ static rs_status write_layers(hid_t loc, const rs_reel_result *res)
   if (st == RS_OK)
     st = rs_h5_write_1d(g, "nip_load", res->nip_load, n, "N/m",
                         "nip load when each layer was wound on (0 without a nip)");
+  if (st == RS_OK && res->air_film)
+    st = rs_h5_write_1d(g, "air_film", res->air_film, n, "m",
+                        "entrained air film under each layer in the wound reel: the film that "
+                        "survived the roughness, compressed by the final pressure (isothermal)");
+  if (st == RS_OK && res->air_film_entrained)
+    st = rs_h5_write_1d(g, "air_film_entrained", res->air_film_entrained, n, "m",
+                        "air film under each layer as it went on, at the ambient pressure (the "
+                        "foil-bearing or nip film less the roughness cut-off)");
   H5Gclose(g);
   return st;
 }

@@ -115,6 +115,10 @@ void plot_run_free(run_data *d)
   free(d->t0);
   free(d->web);
   free(d->nip);
+  free(d->spin_p_kpa);
+  free(d->spin_hoop_mpa);
+  free(d->air_um);
+  free(d->air0_um);
   memset(d, 0, sizeof *d);
 }
 
@@ -130,6 +134,23 @@ static rs_status read_layers(const plot_ctx *c, const char *base, const char *re
   if (k != *n)
     return RS_ERROR(RS_ERR_INPUT, "%s: '%s' has %zu values, /final/radius %zu",
                     rs_reader_path(c->rd), path, k, *n);
+  return RS_OK;
+}
+
+/* read_layers for a dataset only some files have, scaled; *v = NULL when absent */
+static rs_status read_optional(const plot_ctx *c, const char *base, const char *rel,
+                               double scale, double **v, size_t n)
+{
+  char path[PLOT_PATH];
+  *v = NULL;
+  if (!rs_reader_exists(c->rd, plot_at(path, "%s%s", base, rel))) return RS_OK;
+  rs_status st = read_layers(c, base, rel, v, &n);
+  if (st != RS_OK) {
+    free(*v);
+    *v = NULL;
+    return st;
+  }
+  for (size_t j = 0; j < n; ++j) (*v)[j] *= scale;
   return RS_OK;
 }
 
@@ -156,6 +177,13 @@ rs_status plot_run_read(const plot_ctx *c, int i, run_data *d)
   if (st == RS_OK)
     st = rs_reader_read_scalar(c->rd, plot_at(path, "%s/final/core_pressure", d->base),
                                &d->core_kpa);
+  if (st == RS_OK)
+    st = read_optional(c, d->base, "/final_at_speed/sigma_r", -1e-3, &d->spin_p_kpa, d->n);
+  if (st == RS_OK)
+    st = read_optional(c, d->base, "/final_at_speed/sigma_theta", 1e-6, &d->spin_hoop_mpa, d->n);
+  if (st == RS_OK) st = read_optional(c, d->base, "/layers/air_film", 1e6, &d->air_um, d->n);
+  if (st == RS_OK)
+    st = read_optional(c, d->base, "/layers/air_film_entrained", 1e6, &d->air0_um, d->n);
   if (st == RS_OK && !(d->p_kpa = malloc((d->n ? d->n : 1) * sizeof *d->p_kpa)))
     st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) {

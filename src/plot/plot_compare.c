@@ -6,7 +6,7 @@
 
 #include "plot/plot_internal.h"
 
-typedef enum quantity { Q_PRESSURE, Q_HOOP, Q_TENSION } quantity;
+typedef enum quantity { Q_PRESSURE, Q_HOOP, Q_TENSION, Q_AIR } quantity;
 
 static const struct {
   const char *file, *what, *ylabel;
@@ -18,6 +18,8 @@ static const struct {
     [Q_TENSION] = {"tension", "wound-on tension T0 (solid) and web tension of the recipe "
                               "(dashed)",
                    "tension per unit width (N/m)"},
+    [Q_AIR] = {"air", "entrained air film under each layer in the wound reels",
+               "air film (µm)"},
 };
 
 static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
@@ -42,10 +44,20 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
   }
   for (int i = 0; st == RS_OK && i < n; ++i) {
     const run_data *d = &runs[i];
-    const double *y = q == Q_PRESSURE ? d->p_kpa : q == Q_HOOP ? d->hoop_mpa : d->t0;
+    const double *y = q == Q_PRESSURE ? d->p_kpa : q == Q_HOOP ? d->hoop_mpa
+                    : q == Q_AIR    ? d->air_um : d->t0;
+    if (!y) continue; /* Q_AIR: a run without air */
     snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", plot_color(i));
     snprintf(title, sizeof title, "%s: %s", d->name, d->title);
     st = plot_curve(c, d->r_mm, y, d->n, style, title, NULL);
+    /* the centrifugal load: the roll spinning (/final_at_speed), dashed in the run's colour */
+    const double *spin = q == Q_PRESSURE ? d->spin_p_kpa : q == Q_HOOP ? d->spin_hoop_mpa : NULL;
+    if (st == RS_OK && spin) {
+      snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
+               plot_color(i));
+      snprintf(title, sizeof title, "%s spinning (/final_at_speed)", d->name);
+      st = plot_curve(c, d->r_mm, spin, d->n, style, title, NULL);
+    }
     if (st == RS_OK && q == Q_TENSION) {
       snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
                plot_color(i));
@@ -62,5 +74,8 @@ rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n)
   rs_status st = overlay(c, runs, n, Q_PRESSURE);
   if (st == RS_OK) st = overlay(c, runs, n, Q_HOOP);
   if (st == RS_OK) st = overlay(c, runs, n, Q_TENSION);
+  int air = 0;
+  for (int i = 0; i < n; ++i) air |= runs[i].air_um != NULL;
+  if (st == RS_OK && air) st = overlay(c, runs, n, Q_AIR);
   return st;
 }

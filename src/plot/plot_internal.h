@@ -29,6 +29,9 @@ typedef struct run_data {
   double *t0, *web, *nip; /* N/m */
   double core_kpa;    /* core pressure */
   double core_r_mm;   /* core radius, r_1 - t (NaN with fewer than two layers) */
+  /* optional (NULL when the file has none): the winding-at-speed effects */
+  double *spin_p_kpa, *spin_hoop_mpa; /* /final_at_speed: the roll spinning */
+  double *air_um, *air0_um;           /* /layers/air_film, /layers/air_film_entrained (um) */
 } run_data;
 
 rs_status plot_run_read(const plot_ctx *c, int i, run_data *d);

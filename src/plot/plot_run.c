@@ -14,6 +14,8 @@ enum { MAX_STAGES = 5 };
 static const char *const stage_color[MAX_STAGES] = {"#cbc9e2", "#aeabd3", "#9390c4", "#7b6db5",
                                                     "#6a51a3"};
 static const char final_color[] = "#1f77b4";
+/* /final_at_speed (the centrifugal load): the roll spinning, beside /final at rest */
+static const char spin_style[] = "with lines dashtype 2 linewidth 2 linecolor rgb '#ff7f0e'";
 
 /* /history, if there: which stages to draw (up to MAX_STAGES, evenly spread, the final
  * stage left out: it is /final), their layer counts and outer radii, and one stress. */
@@ -144,6 +146,9 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   char style[128];
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
   if (st == RS_OK) st = plot_curve(c, d->r_mm, d->p_kpa, d->n, style, title, NULL);
+  if (st == RS_OK && d->spin_p_kpa)
+    st = plot_curve(c, d->r_mm, d->spin_p_kpa, d->n, spin_style,
+                    "spinning at the last layer's speed (/final at rest)", NULL);
   if (st == RS_OK && isfinite(d->core_r_mm)) {
     snprintf(title, sizeof title, "core pressure %.2f kPa", d->core_kpa);
     snprintf(style, sizeof style, "with points pointtype 7 pointsize 1.6 linecolor rgb '%s'",
@@ -186,6 +191,9 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
   if (st == RS_OK) st = plot_curve(c, d->r_mm, d->hoop_mpa, d->n, style, title, NULL);
+  if (st == RS_OK && d->spin_hoop_mpa)
+    st = plot_curve(c, d->r_mm, d->spin_hoop_mpa, d->n, spin_style,
+                    "spinning at the last layer's speed (/final at rest)", NULL);
   if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
@@ -233,11 +241,38 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
   return st;
 }
 
+/* Entrained air (only when the file has /layers/air_film): the film under each layer as
+ * it went on and as the final pressure compresses it. */
+static rs_status fig_air(plot_ctx *c, const run_data *d)
+{
+  if (!d->air_um) return RS_OK;
+  char *out = plot_path(c, "air");
+  if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  rs_status st = rs_gp_figure(&c->gp, out);
+  free(out);
+  if (st != RS_OK) return st;
+  plot_title(c, d->title, "entrained air film under each layer");
+  axes_radius(c);
+  rs_gp_printf(&c->gp, "set ylabel 'air film (µm)'\nset yrange [0:*]\n");
+  if (d->air0_um)
+    st = plot_curve(c, d->r_mm, d->air0_um, d->n,
+                    "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",
+                    "as wound on (ambient pressure)", NULL);
+  if (st == RS_OK)
+    st = plot_curve(c, d->r_mm, d->air_um, d->n,
+                    "with lines linewidth 2.5 linecolor rgb '#1f77b4'",
+                    "in the wound reel (compressed)", NULL);
+  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  rs_gp_plot_end(&c->gp);
+  return st;
+}
+
 rs_status plot_run_figures(plot_ctx *c, const run_data *d)
 {
   rs_status st = fig_pressure(c, d);
   if (st == RS_OK) st = fig_hoop(c, d);
   if (st == RS_OK) st = fig_tension(c, d);
+  if (st == RS_OK) st = fig_air(c, d);
   if (st == RS_OK) st = plot_storage_figures(c, d); /* only when the file has /storage */
   return st;
 }

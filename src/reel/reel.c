@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "reel/nip_policy.h"
+#include "reel/reel_air.h"
 #include "reel/spin.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
@@ -26,6 +27,8 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->sigma_theta);
   free(res->at_speed_sigma_r);
   free(res->at_speed_sigma_theta);
+  free(res->air_film);
+  free(res->air_film_entrained);
   free(res->stage_layers);
   free(res->stage_radius);
   free(res->stage_sigma_r);
@@ -243,6 +246,10 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   rs_roll_state *snap = NULL;
   int nip_cap = 0, n_prof = 0, next_prof = 0;
   int spin_stop = 0; /* centrifugal load: a layer that cannot stay on the roll */
+  /* entrained air: the films, and whether the roll reached its size before N layers */
+  const int has_air = pb->air.on;
+  rs_reel_air air = {0};
+  int air_end = 0;
   double prof_r[RS_MAX_PROFILES];
   if (!res || !block) {
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
@@ -250,6 +257,11 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   }
   res->core_radius = pb->core.radius;
   if (every > 0 && (st = history_alloc(res, N, per_step, every, &hist_cap))) goto done;
+  if (has_air) {
+    if ((st = rs_reel_air_create(&air, N))) goto done;
+    params.air_film = air.film;
+    params.air_pressure = pb->air.pressure;
+  }
   if ((st = rs_roll_create(&params, &roll))) goto done;
   if ((st = rs_nip_create(&pb->nip, &pb->material, &nip))) goto done;
 
@@ -271,8 +283,10 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
 
   for (int first = 0; first < N;) {
     int m = N - first < per_step ? N - first : per_step, solved = 0, force = 0;
+    /* with air, the real outer radius (films compressed as the roll presses them now) */
+    double R_air = has_air ? rs_reel_air_begin(&air, pb, roll, first) : 0.0;
     if (nip) {
-      const double R = rs_roll_outer_radius(roll);
+      const double R = has_air ? R_air : rs_roll_outer_radius(roll);
       const int want_profile = next_prof < n_prof && R >= prof_r[next_prof];
       if (rs_nip_policy_due(&pol, first) || want_profile) {
         const int n = rs_roll_layers(roll);
@@ -283,7 +297,8 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
          * negative and stopped the run as "slack" (tests/hard/test_hard_nip.c). */
         rs_nip_state ns = {.roll_radius = R,
                            .core_radius = pb->core.radius,
-                           .web_tension = rs_recipe_eval(&pb->tension, rs_roll_layer_radius(roll, first)),
+                           .web_tension = rs_recipe_eval(&pb->tension, has_air ? R + pb->material.caliper
+                                                                               : rs_roll_layer_radius(roll, first)),
                            .nip_load = rs_recipe_eval(&pb->nip.load, R),
                            .surface_modulus = rs_roll_surface_modulus(roll),
                            .surface_pressure = n > 0 ? -rs_roll_layer_sigma_r(roll, n - 1) : 0.0};
@@ -333,15 +348,38 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     }
     for (int b = 0; b < m; ++b) {
       int j = first + b;
-      double r = rs_roll_layer_radius(roll, j);
+      double r = has_air ? R_air + pb->material.caliper : rs_roll_layer_radius(roll, j);
       double Ti = rs_recipe_eval(&pb->tension, r), T0 = Ti;
-      double load = nip ? rs_recipe_eval(&pb->nip.load, r) : 0.0;
+      double load = nip ? rs_recipe_eval(&pb->nip.load, r) : 0.0, film = 0.0;
+      if (has_air) {
+        /* the film this layer brings; the layer nearest the roll's size is the last */
+        film = rs_reel_air_film(pb, R_air, Ti, rs_recipe_eval(&pb->speed, r), load);
+        /* a slack web (Ti = 0, no nip) floats on an unbounded film: past the roll's size
+         * (a recipe at its end) that is the end, before it the run cannot go on */
+        if (!isfinite(film) && rs_reel_air_stop(&air, pb, j, R_air, 0.0)) {
+          m = b;
+          air_end = 1;
+          break;
+        }
+        if (!isfinite(film)) {
+          st = RS_ERROR(RS_ERR_SOLVER,
+                        "entrained air: the film under layer %d of %d (r = %.6g m, web tension "
+                        "%g N/m) is not finite: a slack web floats on the air it carries",
+                        j + 1, N, R_air, Ti);
+          goto done;
+        }
+        if (rs_reel_air_stop(&air, pb, j, R_air, film)) {
+          m = b;
+          air_end = 1;
+          break;
+        }
+      }
       /* the nip's part of T0, as solved or predicted at the radius the layer goes on at
        * (the roll's outer radius then, computed as rs_roll_outer_radius does, so that at a
        * solve the prediction is the solve's NIT bit for bit; r - caliper differs by an ulp,
        * which the slope of NIT turns into 1e-13 N/m) */
       if (nip) {
-        double nit = rs_nip_policy_predict(&pol, rs_roll_layer_radius(roll, j - 1));
+        double nit = rs_nip_policy_predict(&pol, has_air ? R_air : rs_roll_layer_radius(roll, j - 1));
         T0 = Ti + nit;
         /* T0 = 0 exactly (a taper to 0 on a center-surface winder with mu_roll = 0, where
          * T0 = share Ti; mu_roll = 0 on a surface winder) comes out of Ti + NIT with a
@@ -368,6 +406,11 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
         goto done;
       }
       res->radius[j] = r;
+      if (has_air) {
+        rs_reel_air_wound(&air, j, R_air, film, pb->material.caliper);
+        R_air += film + pb->material.caliper;
+        res->radius[j] = R_air;
+      }
       res->web_tension[j] = Ti;
       res->nip_load[j] = load;
       res->wound_on_tension[j] = T0;
@@ -389,6 +432,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
       }
     }
     if (force) continue;
+    if (m == 0) break; /* air: the roll reached its size */
     if ((st = rs_roll_add_layers(roll, m, block))) {
       rs_error_wrap("winding layers %d-%d of %d (r = %.6g m)", first + 1, first + m, N,
                     rs_roll_layer_radius(roll, first + m - 1));
@@ -397,12 +441,14 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     first += m;
     if (hist_cap > 0 && first >= next_stage) {
       history_store(res, roll, N);
+      if (has_air) res->stage_radius[res->n_stages - 1] = R_air;
       next_stage = (first / every + 1) * (long)every;
     }
     if (opts && opts->progress && opts->progress(opts->user, first, N)) {
       st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted after layer %d of %d", first, N);
       goto done;
     }
+    if (air_end) break;
   }
 
 done:
@@ -411,9 +457,20 @@ done:
     history_finish(res, roll, N, hist_cap);
   }
   else if (res) res->n_layers = 0;
-  if (res && pb->centrifugal && (st == RS_OK || spin_stop) && res->n_layers > 0) {
+  if (res && has_air && air.film && res->n_layers > 0) {
+    rs_status ast = rs_reel_air_entrained(&air, res); /* the spin part's stack has them */
+    if (st == RS_OK) st = ast;
+  }
+  if (res && pb->centrifugal && (st == RS_OK || spin_stop) && res->n_layers > 0 &&
+      (!has_air || res->air_film_entrained)) {
     rs_status sst = rs_spin_wound(pb, res, 0);
     if (st == RS_OK) st = sst;
+  }
+  if (res && has_air && res->air_film_entrained) {
+    rs_status ast = rs_reel_air_finish(&air, pb, res);
+    if (st == RS_OK) st = ast;
+    if (res->n_stages > 0 && res->stage_layers[res->n_stages - 1] == res->n_layers)
+      res->stage_radius[res->n_stages - 1] = res->radius[res->n_layers - 1];
   }
   if (st == RS_OK) {
     for (int j = 0; j < res->n_layers; ++j)
@@ -425,6 +482,7 @@ done:
       st = RS_ERROR(RS_ERR_SOLVER, "non-finite core pressure after winding");
   }
   free(block);
+  rs_reel_air_free(&air);
   rs_roll_state_destroy(&snap);
   rs_nip_destroy(&nip);
   rs_roll_destroy(&roll);

@@ -130,6 +130,12 @@ rs_status rs_spin_wound(const rs_problem *pb, rs_reel_result *res, int updates)
   for (int j = 0; j < n; ++j) {
     const double lo = j ? res->sigma_r[j - 1] : -res->core_pressure, hi = res->sigma_r[j];
     Er[j] = rs_radial_modulus(&m->radial, fmax(0.0, -0.5 * (lo + hi)));
+    /* entrained air: the film under the turn in series with its stack, over the turn's
+     * real thickness s[j+1] - s[j] (the caliper and the film) */
+    if (res->air_film_entrained)
+      Er[j] = rs_air_series_modulus(Er[j], m->caliper, res->air_film_entrained[j],
+                                    fmax(0.0, -0.5 * (lo + hi)), pb->air.pressure) *
+              ((s[j + 1] - s[j]) / m->caliper);
   }
   if ((st = spin_coefs(n, s, Er, m->E_theta, nu, tc))) goto done;
   for (int j = 0; j <= n; ++j) Sr[j] = St[j] = 0.0;

@@ -36,8 +36,23 @@ void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_r
     L += 3.14159265358979323846 * (inner + res->radius[j]);
     inner = res->radius[j];
   }
+  /* with entrained air the radii hold the films: the web is what was wound */
+  if (res->air_film) L = res->air_wound_length;
   out->diameter = res->n_layers > 0 ? 2.0 * res->radius[res->n_layers - 1] : 2.0 * inner;
   out->wound_length = L;
   out->has_mass = problem && problem->material.density > 0.0;
   out->mass = out->has_mass ? problem->material.density * problem->material.caliper * L : 0.0;
+  out->has_air = res->air_film != NULL && res->air_film_entrained != NULL;
+  out->air_thickness = out->air_film_min = out->air_film_max = 0.0;
+  out->air_entrained_min = out->air_entrained_max = 0.0;
+  if (!out->has_air || res->n_layers < 1) return;
+  out->air_film_min = out->air_entrained_min = INFINITY;
+  out->air_film_max = out->air_entrained_max = -INFINITY;
+  for (int j = 0; j < res->n_layers; ++j) {
+    out->air_thickness += res->air_film[j];
+    out->air_film_min = fmin(out->air_film_min, res->air_film[j]);
+    out->air_film_max = fmax(out->air_film_max, res->air_film[j]);
+    out->air_entrained_min = fmin(out->air_entrained_min, res->air_film_entrained[j]);
+    out->air_entrained_max = fmax(out->air_entrained_max, res->air_film_entrained[j]);
+  }
 }

@@ -78,6 +78,8 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->shape_e);
   free(roll->shape_h);
   free(roll->lazy_a);
+  free(roll->view_r);
+  free(roll->view_theta);
   free(roll->lazy_b);
   free(roll);
   *rollp = NULL;
@@ -144,6 +146,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->shape_e = calloc(cap + 1, sizeof(double));
   roll->shape_h = calloc(cap + 1, sizeof(double));
   roll->lazy_a = calloc(cap + 1, sizeof(double));
+  roll->view_r = calloc(cap, sizeof(double));
+  roll->view_theta = calloc(cap, sizeof(double));
   roll->lazy_b = calloc(cap + 1, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
@@ -260,8 +264,7 @@ double rs_roll_outer_radius(const rs_roll *roll)
 /* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
 const double *rs_roll_sigma_r(const rs_roll *roll)
 {
-  if (roll->lazy_top > 0) roll_lazy_flush((rs_roll *)roll, 0);
-  return roll->sigma_r;
+  return roll->lazy_top > 0 ? roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
 }
 double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
 {
@@ -269,20 +272,25 @@ double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
 }
 const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
-  if (roll->lazy_top > 0) roll_lazy_flush((rs_roll *)roll, 0);
-  if (roll->hoop_stale) { /* a cache of sigma_r's equilibrium: logically const */
-    rs_roll *r = (rs_roll *)roll;
-    roll_hoop_from_equilibrium(r, r->n);
-    r->hoop_stale = 0;
+  rs_roll *r = (rs_roll *)roll; /* caches of the state: logically const */
+  if (roll->hoop_stale) { /* the turns' equilibrium, from the radial stresses in full */
+    roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+                               roll->p.core_radius, roll->p.caliper, roll->n);
+    r->hoop_stale = 0; /* until the next increment */
+    return roll->sigma_theta;
   }
-  return roll->sigma_theta;
+  return roll->lazy_top > 0 && !roll->shift ? roll_lazy_view_theta(r) : roll->sigma_theta;
 }
 double rs_roll_core_pressure(const rs_roll *roll) { return -roll_lazy_sigma(roll, 0); }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {
   const int node = roll->n - roll->shift; /* the outermost loaded interface */
   double P = node >= 0 && roll->n > 0 ? -roll_lazy_sigma(roll, node) : 0.0;
-  return rs_radial_modulus(&roll->p.radial, P);
+  const double E = rs_radial_modulus(&roll->p.radial, P);
+  /* entrained air: the film at that interface in series (roll_air.c) */
+  return roll->p.air_film && node >= 0 ? rs_air_series_modulus(E, roll->p.caliper, roll->p.air_film[node], P,
+                                                                 roll->p.air_pressure)
+                                       : E;
 }
 
 void rs_roll_get_stats(const rs_roll *roll, rs_roll_stats *stats)

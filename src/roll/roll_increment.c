@@ -309,13 +309,12 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
  * that the loop vectorises; derived only when the hoop stresses are read (the reel reads
  * them at history stages and at the end: a pass over every layer at every increment was
  * 4.5 % of the 6054-layer reel). */
-void roll_hoop_from_equilibrium(rs_roll *roll, int k)
+void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
+                                double rc, double t, int k)
 {
-  const double rc = roll->p.core_radius, t = roll->p.caliper, inv_t = 1.0 / t;
-  const double *restrict sr = roll->sigma_r;
-  double *restrict sth = roll->sigma_theta;
+  const double inv_t = 1.0 / t;
   if (k < 1) return;
-  sth[0] = ((rc + t) * sr[0] - rc * roll->core_sigma) * inv_t;
+  sth[0] = ((rc + t) * sr[0] - rc * core_sigma) * inv_t;
   for (int j = 2; j <= k; ++j)
     sth[j - 1] = ((rc + j * t) * sr[j - 1] - (rc + (j - 1) * t) * sr[j - 2]) * inv_t;
 }

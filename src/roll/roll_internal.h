@@ -7,6 +7,7 @@
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_state.c      saving and restoring a roll's stresses
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
+ *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
@@ -82,6 +83,7 @@ struct rs_roll {
   int lazy_ok;           /* this increment may freeze nodes (one layer: no corrector) */
   double lazy_c;
   double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
+  double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view_*) */
 };
 
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
@@ -95,6 +97,8 @@ static inline double roll_exp_small(double d)
 void roll_lazy_flush(rs_roll *roll, int from);
 void roll_lazy_freeze(rs_roll *roll, int to);
 double roll_lazy_sigma(const rs_roll *roll, int j);
+const double *roll_lazy_view_r(rs_roll *roll);
+const double *roll_lazy_view_theta(rs_roll *roll);
 
 /* roll_ode.c */
 double roll_g2_at(rs_roll *roll, double x, double *dg2);
@@ -106,11 +110,15 @@ void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
+/* roll_air.c */
+void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
+
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);
 
 /* roll_increment.c */
-void roll_hoop_from_equilibrium(rs_roll *roll, int k);
+void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
+                                double rc, double t, int k);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);

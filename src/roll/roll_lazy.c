@@ -9,7 +9,9 @@
  *     eps_j <= a_j + |C| b_j,   b_j = 2 |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
  * (C only grows in magnitude: every increment compresses; the factor 2 covers the curvature
  * of ln E_r(P) over the pressure added), and the search takes the prefix maxima of a and b.
- * So an increment costs work over the nodes from the frontier up, not over the whole roll. */
+ * So an increment costs work over the nodes from the frontier up, not over the whole roll.
+ * Readers get the full values in separate arrays (roll_lazy_view_*): reading never moves
+ * the frontier. */
 #include <math.h>
 
 #include "roll/roll_internal.h"
@@ -46,6 +48,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
   /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
   for (int j = F; j < to; ++j) Pp[j] = roll->P_node[j] * 1.001 + 1.0;
   rs_radial_modulus_n(&roll->p.radial, Pp + F, Ep + F, to - F);
+  if (roll->p.air_film) roll_air_series(roll, Pp, Ep, F, to);
   double pa = F > 0 ? roll->lazy_a[F - 1] : -INFINITY, pb = F > 0 ? roll->lazy_b[F - 1] : 0.0;
   for (int j = F; j < to; ++j) {
     const double dP = Pp[j] - roll->P_node[j];
@@ -73,4 +76,29 @@ double roll_lazy_sigma(const rs_roll *roll, int j)
 {
   const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
   return j < roll->lazy_top ? s + roll->lazy_c * roll->shape_e[j] : s;
+}
+
+/* The stresses in full for a reader, without touching the lazy state (so that reading a
+ * roll never changes how it winds on: a run with history stages or entrained air winds
+ * bit for bit as one without) */
+const double *roll_lazy_view_r(rs_roll *roll)
+{
+  const int F = roll->lazy_top, n = roll->n;
+  const double C = roll->lazy_c, *restrict e = roll->shape_e, *restrict sr = roll->sigma_r;
+  double *restrict v = roll->view_r;
+  const int lazy_end = F - 1 < n ? F - 1 : n; /* layers 0..F-2 sit on lazy nodes 1..F-1 */
+  for (int j = 0; j < lazy_end; ++j) v[j] = sr[j] + C * e[j + 1];
+  for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = sr[j];
+  return v;
+}
+
+const double *roll_lazy_view_theta(rs_roll *roll)
+{
+  const int F = roll->lazy_top, n = roll->n;
+  const double C = roll->lazy_c, *restrict h = roll->shape_h, *restrict st = roll->sigma_theta;
+  double *restrict v = roll->view_theta;
+  const int lazy_end = F - 1 < n ? F - 1 : n;
+  for (int j = 0; j < lazy_end; ++j) v[j] = st[j] + C * h[j + 1];
+  for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = st[j];
+  return v;
 }

@@ -134,29 +134,28 @@ void roll_gather_pressure(rs_roll *roll, int k, const double *add)
     for (int j = F; j <= k; ++j) P[j] += add[j];
 }
 
-/* E_r at the nodes [lo, hi) from P_node, checked: positive and finite */
+/* E_r at the nodes [lo, hi) from P_node, checked: positive and finite; with entrained air
+ * the film at each node in series (roll_air.c) */
 static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
 {
   if (hi <= lo) return RS_OK;
   rs_radial_modulus_n(&roll->p.radial, roll->P_node + lo, roll->Er + lo, hi - lo);
   /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
    * E_r > 0 checked at load; the pressures are finite: roll_commit); a polynomial or a
-   * table can leave its range */
+   * table can leave its range: one vectorised pass, the node looked for only then */
   const rs_radial_kind law = roll->p.radial.law;
-  if (law == RS_RADIAL_LINEAR || law == RS_RADIAL_PFEIFFER) return RS_OK;
-  /* one vectorised pass; the node is looked for only when one is out of range */
-  const double *restrict E = roll->Er;
-  int bad = 0;
-  for (int j = lo; j < hi; ++j) bad |= !(E[j] > 0.0) | !(E[j] < INFINITY);
-  if (!bad) return RS_OK;
-  {
-    for (int j = lo; j < hi; ++j)
-      if (!(roll->Er[j] > 0.0 && roll->Er[j] < INFINITY))
+  if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
+    const double *restrict E = roll->Er;
+    int bad = 0;
+    for (int j = lo; j < hi; ++j) bad |= !(E[j] > 0.0) | !(E[j] < INFINITY);
+    for (int j = lo; bad && j < hi; ++j)
+      if (!(E[j] > 0.0 && E[j] < INFINITY))
         return RS_ERROR(RS_ERR_SOLVER,
                         "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
                         "positive: the radial law is outside its range",
-                        roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+                        E[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
   }
+  if (roll->p.air_film) roll_air_series(roll, roll->P_node, roll->Er, lo, hi);
   return RS_OK;
 }
 

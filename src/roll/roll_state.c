@@ -38,11 +38,10 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *st)
     if (!a || !b) return RS_ERROR(RS_ERR_MEMORY, "cannot save a roll of %d layers", roll->n);
     st->capacity = cap;
   }
-  rs_roll_sigma_r(roll); /* the lazy deep part applied */
   st->n = roll->n;
-  st->core_sigma = roll->core_sigma;
+  st->core_sigma = -rs_roll_core_pressure(roll); /* the lazy deep part applied */
   if (roll->n > 0) { /* an empty roll has no arrays yet: memcpy of NULL is undefined */
-    memcpy(st->sigma_r, roll->sigma_r, (size_t)roll->n * sizeof(double));
+    memcpy(st->sigma_r, rs_roll_sigma_r(roll), (size_t)roll->n * sizeof(double));
     memcpy(st->sigma_theta, rs_roll_sigma_theta(roll), (size_t)roll->n * sizeof(double));
   }
   return RS_OK;

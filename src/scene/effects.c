@@ -3,6 +3,7 @@
 #include <stdio.h>
 
 #include "reelsim/core.h"
+#include "reelsim/material.h"
 #include "reelsim/recipe.h"
 #include "scene/scene_internal.h"
 
@@ -10,6 +11,7 @@ typedef char num_t[48];
 
 static void print_storage(FILE *out, const rs_scene *s);
 static void print_centrifugal(FILE *out, const rs_scene *s);
+static void print_air(FILE *out, const rs_scene *s);
 
 static const char *f(num_t buf, double v)
 {
@@ -122,9 +124,11 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
           f(c, m->nu_rtheta));
   print_radial(out, &m->radial);
   print_core(out, &s->problem.core);
-  fprintf(out, "  - roll: %s -> %s mm, %d layers", f(a, s->problem.core.radius * 1e3),
-          f(b, s->problem.final_radius * 1e3), s->problem.n_layers);
+  fprintf(out, "  - roll: %s -> %s mm, %s%d layers", f(a, s->problem.core.radius * 1e3),
+          f(b, s->problem.final_radius * 1e3), s->problem.air.on ? "up to " : "",
+          s->problem.n_layers);
   if (s->web_length > 0.0) fprintf(out, " (web length %s m)", f(c, s->web_length));
+  if (s->problem.air.on) fprintf(out, "; with the air films the reel stops at the size");
   fprintf(out, "\n");
   print_recipe(out, "tension", &s->problem.tension);
   switch (s->problem.nip.model) {
@@ -172,6 +176,7 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
                    : "  - load placement: hakiel (Hakiel 1987: a new layer's load -T0/s at its "
                      "own outer radius)\n");
   print_centrifugal(out, s);
+  print_air(out, s);
   print_defect_checks(out, s);
   print_storage(out, s);
 }
@@ -229,4 +234,46 @@ static void print_storage(FILE *out, const rs_scene *s)
             m->viscoelastic.n, m->viscoelastic.n == 1 ? "" : "s", f(a, m->viscoelastic.tau[0]),
             f(b, m->viscoelastic.tau[m->viscoelastic.n - 1]), f(c, wt), f(d, wr));
   }
+}
+
+/* Entrained air: listed only when the scene has an `air` block. The films are those the
+ * laws give at the layers' radii without air (the run's own are in its summary and
+ * /layers/air_film); `cut` counts the layers whose film the roughness takes. */
+static void print_air(FILE *out, const rs_scene *s)
+{
+  const rs_problem *p = &s->problem;
+  const rs_air_spec *a = &p->air;
+  if (!a->on) return;
+  num_t x, y, z, w;
+  double lo = INFINITY, hi = -INFINITY;
+  int cut = 0, nip_less = 0;
+  for (int j = 0; j < p->n_layers; ++j) {
+    const double R = p->core.radius + j * p->material.caliper, r = R + p->material.caliper;
+    const double V = rs_recipe_eval(&p->speed, r), Ti = rs_recipe_eval(&p->tension, r);
+    double h0 = rs_air_foil_film(R, 2.0 * V, Ti, a->viscosity);
+    if (p->nip.model != RS_NIP_NONE) {
+      const double hn = rs_air_nip_film(R, a->nip_radius, V, rs_recipe_eval(&p->nip.load, r),
+                                        a->viscosity);
+      nip_less += hn < h0;
+      h0 = fmin(h0, hn);
+    }
+    const double h = rs_air_surviving_film(h0, a->roughness, a->cutoff);
+    cut += h == 0.0;
+    lo = fmin(lo, h);
+    hi = fmax(hi, h);
+  }
+  char range[2 * sizeof(num_t) + 48];
+  if (isfinite(hi)) snprintf(range, sizeof range, "%s .. %s um", f(x, lo * 1e6), f(y, hi * 1e6));
+  else snprintf(range, sizeof range, "%s um .. unbounded (a web tension of 0)", f(x, lo * 1e6));
+  fprintf(out, "  - entrained air: film %s as wound on (Knox-Sweeney foil bearing, U = 2V, "
+               "mu = %s Pa s", range, f(z, a->viscosity));
+  if (p->nip.model != RS_NIP_NONE)
+    fprintf(out, "; the nip's film (roller radius %s mm) is less in %d of %d layers",
+            f(w, a->nip_radius * 1e3), nip_less, p->n_layers);
+  fprintf(out, "), roughness %s um: cut-off %s um %s; trapped air isothermal at %s Pa\n",
+          f(x, a->roughness * 1e6), f(y, a->cutoff * a->roughness * 1e6),
+          cut == 0 ? "does not act" : cut == p->n_layers ? "removes every film" : "acts",
+          f(z, a->pressure));
+  if (cut > 0 && cut < p->n_layers)
+    fprintf(out, "    (no air film in %d of %d layers)\n", cut, p->n_layers);
 }

@@ -1,7 +1,7 @@
 /* Shorthands rewritten into the one form the schema knows:
  *   tension: 350                 -> tension: {law: constant, value: 350}
  *   tension: {table: [...]}      -> tension: {law: table, table: [...]}
- *   centrifugal: true / false    -> centrifugal: {} / no key
+ *   centrifugal: true / false    -> centrifugal: {} / no key (air likewise)
  * (the same for nip.load and winding.speed). The new nodes keep the line and origin of what the user
  * wrote, so `tension: abc` is still reported as winding.tension at its line. */
 #include <string.h>
@@ -104,5 +104,6 @@ rs_status ys_normalize(yn *root)
   if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
     st = normalize_recipe(root, "nip", "load");
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "centrifugal");
+  if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "air");
   return st;
 }

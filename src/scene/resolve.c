@@ -108,6 +108,7 @@ static rs_status resolve_winding(const yn *root, rs_scene *s)
     if (!(web_length > 0.0))
       return ys_fail(root, key, "must be > 0 m (got %g)", web_length);
     s->web_length = web_length;
+    s->problem.web_length = web_length;
     s->problem.final_radius = sqrt(rc * rc + web_length * t / pi);
   } else {
     if (!(final_radius > rc)) {
@@ -117,6 +118,7 @@ static rs_status resolve_winding(const yn *root, rs_scene *s)
       return ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, final_radius);
     }
     s->web_length = 0.0;
+    s->problem.web_length = 0.0;
     s->problem.final_radius = final_radius;
   }
   double layers = round((s->problem.final_radius - rc) / t);

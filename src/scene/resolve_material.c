@@ -139,5 +139,11 @@ rs_status ys_resolve_material(const yn *root, rs_material *m)
   m->nu_rtheta = nu_rtheta;
   m->G_rtheta = G_rtheta;
   m->density = density;
+  if (ys_has(root, "material.roughness")) {
+    const double sigma = ys_num(root, "material.roughness");
+    if (!(sigma >= 0.0 && sigma < INFINITY))
+      return ys_fail(root, "material.roughness", "must be >= 0 m (got %g)", sigma);
+    m->roughness = sigma;
+  }
   return resolve_radial(root, &m->radial);
 }

@@ -1,22 +1,68 @@
-/* Winding at speed (docs/roll-model.md, "Centrifugal load"): winding.speed and the
- * `centrifugal` switch, from the checked tree into the problem. A speed without an effect
- * that uses it winds exactly as at rest. */
+/* Winding at speed (docs/roll-model.md, "Centrifugal load", "Entrained air"):
+ * winding.speed, the `centrifugal` switch and the `air` block, from the checked tree into
+ * the problem. A speed without an effect that uses it winds exactly as at rest. */
 #include <math.h>
 #include <string.h>
 
 #include "reelsim/recipe.h"
 #include "scene/scene_internal.h"
 
+/* air: the entrained film (docs/roll-model.md, "Entrained air"); needs the speed and a
+ * roughness (air.roughness, else material.roughness) */
+static rs_status resolve_air(const yn *root, rs_scene *s)
+{
+  rs_problem *p = &s->problem;
+  memset(&p->air, 0, sizeof p->air);
+  if (!ys_has(root, "air")) return RS_OK;
+  if (!ys_has(root, "winding.speed"))
+    return ys_fail(root, "winding.speed", "required by air: the web speed in m/s");
+  rs_air_spec *a = &p->air;
+  a->viscosity = ys_num(root, "air.viscosity");
+  a->cutoff = ys_num(root, "air.cutoff");
+  a->pressure = ys_num(root, "air.pressure");
+  if (!(a->viscosity > 0.0 && a->viscosity < INFINITY))
+    return ys_fail(root, "air.viscosity", "must be > 0 Pa s (got %g)", a->viscosity);
+  if (!(a->cutoff >= 0.0 && a->cutoff < INFINITY))
+    return ys_fail(root, "air.cutoff", "must be >= 0 roughnesses (got %g)", a->cutoff);
+  if (!(a->pressure > 0.0 && a->pressure < INFINITY))
+    return ys_fail(root, "air.pressure", "must be > 0 Pa, absolute (got %g)", a->pressure);
+  if (ys_has(root, "air.roughness")) {
+    a->roughness = ys_num(root, "air.roughness");
+    if (!(a->roughness >= 0.0 && a->roughness < INFINITY))
+      return ys_fail(root, "air.roughness", "must be >= 0 m (got %g)", a->roughness);
+  } else if (ys_has(root, "material.roughness")) {
+    a->roughness = p->material.roughness;
+  } else {
+    return ys_fail(root, "air.roughness",
+                   "required by air: the combined RMS roughness of the web's faces in m "
+                   "(or give material.roughness)");
+  }
+  if (p->nip.model != RS_NIP_NONE) {
+    if (ys_has(root, "air.nip_radius")) a->nip_radius = ys_num(root, "air.nip_radius");
+    else if (ys_has(root, "nip.drum.radius")) a->nip_radius = p->nip.drum.radius;
+    else
+      return ys_fail(root, "air.nip_radius",
+                     "required by air with a nip: the nip roller's radius in m (or give "
+                     "nip.drum.radius)");
+    if (!(a->nip_radius > 0.0 && a->nip_radius < INFINITY))
+      return ys_fail(root, "air.nip_radius", "must be > 0 m (got %g)", a->nip_radius);
+  }
+  a->on = 1;
+  return RS_OK;
+}
+
 rs_status ys_resolve_speed(const yn *root, rs_scene *s)
 {
   rs_problem *p = &s->problem;
   memset(&p->speed, 0, sizeof p->speed);
   p->centrifugal = 0;
+  rs_status st = RS_OK;
   if (ys_has(root, "winding.speed")) {
-    rs_status st = ys_resolve_recipe(root, "winding.speed", "speed", p->core.radius,
+    st = ys_resolve_recipe(root, "winding.speed", "speed", p->core.radius,
                                      p->final_radius, &p->speed);
     if (st) return st;
   }
+  if ((st = resolve_air(root, s))) return st;
   if (!ys_has(root, "centrifugal")) return RS_OK;
   if (!ys_has(root, "winding.speed"))
     return ys_fail(root, "winding.speed", "required by centrifugal: the web speed in m/s");

@@ -90,6 +90,7 @@ static const ys_field material_fields[] = {
     OPT("hygroscopic", &v_hygroscopic),
     OPT("viscoelastic", &v_viscoelastic),
     OPT("model", &v_name), /* a shipped model these keys change (models.c); gone once inlined */
+    OPT("roughness", &v_float),
     END};
 static const ys_value v_material = MAP(material_fields);
 
@@ -190,6 +191,12 @@ static const ys_value v_output = MAP(output_fields);
 /* ---- winding at speed (docs/roll-model.md, "Centrifugal load") ------------------------ */
 static const ys_field centrifugal_fields[] = {END};
 static const ys_value v_centrifugal = MAP(centrifugal_fields);
+/* entrained air (docs/roll-model.md, "Entrained air"): air at 20 C, the sea-level atmosphere */
+static const ys_field air_fields[] = {
+    DEF("viscosity", &v_float, "1.8e-5"), OPT("roughness", &v_float),
+    DEF("cutoff", &v_float, "3"),         DEF("pressure", &v_float, "101325"),
+    OPT("nip_radius", &v_float),          END};
+static const ys_value v_air = MAP(air_fields);
 
 /* ---- the scene ------------------------------------------------------------------------ */
 static const ys_value v_title = STRING(0, 511);
@@ -201,6 +208,7 @@ static const ys_field scene_fields[] = {
     OPT("nip", &v_nip),
     OPT("storage", &v_storage),
     OPT("centrifugal", &v_centrifugal),
+    OPT("air", &v_air),
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
     END};

@@ -51,3 +51,32 @@ def test_read_refuses(reelsim, tmp_path):
         f["runs/x"] = np.zeros(3)
     with pytest.raises(reelsim.InputError, match=r"not a reelsim run file \(no /layers/radius\)"):
         reelsim.read(other)
+
+
+def test_speed_effects_round_trip(reelsim, tmp_path):
+    """Entrained air and the centrifugal load: run and read give the same films and the
+    same spinning profile, the file's datasets; a scene without them has empty ones."""
+    text = ("material: {caliper: 70e-6, E_theta: 3.5e9, density: 800, "
+            "radial: {law: pfeiffer, K1: 5e3, K2: 60}}\ncore: {radius: 0.0762}\n"
+            "winding: {final_radius: 0.1, tension: 350, speed: 20}\n"
+            "centrifugal: {}\nair: {roughness: 0.5e-6}\n")
+    path = tmp_path / "speed.yaml"
+    path.write_text(text)
+    out = tmp_path / "speed.h5"
+    cli_run(str(path), out)
+    a, b = reelsim.run(str(path)), reelsim.read(out)
+    with h5py.File(out, "r") as f:
+        for k, p in {"air_film": "layers/air_film",
+                     "air_film_entrained": "layers/air_film_entrained",
+                     "at_speed_sigma_r": "final_at_speed/sigma_r",
+                     "at_speed_sigma_theta": "final_at_speed/sigma_theta"}.items():
+            assert np.array_equal(getattr(a, k), f[p][()]), k
+            assert np.array_equal(getattr(b, k), f[p][()]), k
+        assert a.at_speed_core_pressure == f["final_at_speed/core_pressure"][()]
+    assert a.layers == b.layers and a.air_film.shape == (a.layers,)
+    assert np.all(a.air_film > 0) and np.all(a.air_film <= a.air_film_entrained)
+    # the radius holds the compressed films: r_c + sum (t + h)
+    assert np.isclose(a.radius[-1], 0.0762 + np.sum(70e-6 + a.air_film), rtol=1e-12)
+    plain = reelsim.run(text.replace("centrifugal: {}\nair: {roughness: 0.5e-6}\n", ""))
+    assert plain.air_film.size == 0 and plain.at_speed_sigma_r.size == 0
+    assert np.isnan(plain.at_speed_core_pressure)

@@ -1,1 +1,1 @@
-rs_test(test_roll_lazy unit SOURCES unit/test_roll_lazy.c CASES layer_reads_match_full matches_reuse_none flush_midway_is_harmless)
+rs_test(test_roll_lazy unit SOURCES unit/test_roll_lazy.c CASES layer_reads_match_full matches_reuse_none reads_change_nothing)
