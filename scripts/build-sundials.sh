@@ -49,7 +49,6 @@ fi
 work="$(mktemp -d "${TMPDIR:-/tmp}/reelsim-sundials.XXXXXX")" || note "mktemp failed"
 trap 'rm -rf "$work"' EXIT
 log="$work/log"
-echo "setup: building an optimised CVODE from Debian's source of sundials $version (once; log in $cache/sundials-build.log)" >&2
 fail() {
   cp "$log" "$cache/sundials-build.log" 2>/dev/null || true
   note "$1; see $cache/sundials-build.log"
@@ -69,8 +68,11 @@ Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
 EOF
 APT_OPTS=(-q -o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$apt"
           -o "Dir::State::Lists=$apt/lists" -o "Dir::Cache=$apt/cache"
-          -o "APT::Sandbox::User=$(id -un)")
-apt-get "${APT_OPTS[@]}" update >> "$log" 2>&1 || fail "apt-get update of a deb-src list failed (offline?)"
+          -o "APT::Sandbox::User=$(id -un)" -o "Acquire::http::Timeout=15" -o "Acquire::Retries=1")
+# apt-get update reports an unreachable archive as a warning: look for the Sources index.
+apt-get "${APT_OPTS[@]}" update >> "$log" 2>&1 &&
+  compgen -G "$apt/lists/*Sources*" > /dev/null ||
+  fail "no deb-src index from deb.debian.org (offline?)"
 (cd "$work/src" && apt-get "${APT_OPTS[@]}" source "sundials=$version") >> "$log" 2>&1 ||
   fail "apt-get source sundials=$version failed (no such source version?)"
 srcdir="$(find "$work/src" -mindepth 1 -maxdepth 1 -type d -name 'sundials-*' | head -n 1)"
@@ -80,6 +82,7 @@ got="$(dpkg-parsechangelog -l "$srcdir/debian/changelog" -S Version 2>> "$log")"
   fail "cannot read the source's debian/changelog"
 [ "$got" = "$version" ] || fail "the source is sundials $got, the installed libsundials-dev is $version"
 
+echo "setup: building an optimised CVODE from Debian's source of sundials $version (once; log in $cache/sundials-build.log)" >&2
 build="$work/build"
 cmake -S "$srcdir" -B "$build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_C_FLAGS="-fcommon" -DCMAKE_C_FLAGS_RELEASE="-O2" \
