@@ -23,11 +23,11 @@ note() { echo "setup: $* (using the system's libsundials)" >&2; exit 1; }
 command -v dpkg-query >/dev/null 2>&1 || note "no dpkg-query: not a Debian system"
 version="$(dpkg-query -W -f='${Version}' libsundials-dev 2>/dev/null)" ||
   note "libsundials-dev is not installed"
-cache="${XDG_CACHE_HOME:-$HOME/.cache}/reelsim"
+cache="${XDG_CACHE_HOME:-${HOME:-/nonexistent}/.cache}/reelsim"
 prefix="$cache/sundials-$version-O2"
 # Everything that makes the build: a different recipe is rebuilt.
 CFLAGS_OPT="-O2 -fcommon"
-recipe="reelsim sundials $version; cflags $CFLAGS_OPT -fPIC; static; cvode nvecserial sunmatrixdense sunlinsoldense; $(cc --version 2>/dev/null | head -n 1)"
+recipe="reelsim sundials $version; cflags $CFLAGS_OPT -fPIC; static; cvode nvecserial sunmatrixdense sunlinsoldense; $(cc --version 2>/dev/null | head -n 1 || true)"
 stamp="$prefix/reelsim-stamp"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$recipe" ]; then
   echo "$prefix"
