@@ -23,7 +23,8 @@ note() { echo "setup: $* (using the system's libsundials)" >&2; exit 1; }
 command -v dpkg-query >/dev/null 2>&1 || note "no dpkg-query: not a Debian system"
 version="$(dpkg-query -W -f='${Version}' libsundials-dev 2>/dev/null)" ||
   note "libsundials-dev is not installed"
-cache="${XDG_CACHE_HOME:-${HOME:-/nonexistent}/.cache}/reelsim"
+[ -n "${XDG_CACHE_HOME:-}${HOME:-}" ] || note "neither XDG_CACHE_HOME nor HOME is set (no cache folder)"
+cache="${XDG_CACHE_HOME:-$HOME/.cache}/reelsim"
 prefix="$cache/sundials-$version-O2"
 # Everything that makes the build: a different recipe is rebuilt.
 CFLAGS_OPT="-O2 -fcommon"
