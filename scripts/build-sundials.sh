@@ -26,9 +26,8 @@ version="$(dpkg-query -W -f='${Version}' libsundials-dev 2>/dev/null)" ||
 [ -n "${XDG_CACHE_HOME:-}${HOME:-}" ] || note "neither XDG_CACHE_HOME nor HOME is set (no cache folder)"
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/reelsim"
 prefix="$cache/sundials-$version-O2"
-# Everything that makes the build: a different recipe is rebuilt.
-CFLAGS_OPT="-O2 -fcommon"
-recipe="reelsim sundials $version; cflags $CFLAGS_OPT -fPIC; static; cvode nvecserial sunmatrixdense sunlinsoldense; $(cc --version 2>/dev/null | head -n 1 || true)"
+# Everything that makes the build (the cmake line below): a different recipe is rebuilt.
+recipe="reelsim sundials $version; cflags -O2 -fcommon -fPIC; static; cvode nvecserial sunmatrixdense sunlinsoldense; $(cc --version 2>/dev/null | head -n 1 || true)"
 stamp="$prefix/reelsim-stamp"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$recipe" ]; then
   echo "$prefix"
