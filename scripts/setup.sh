@@ -19,9 +19,19 @@ if [ -n "$missing" ]; then
   $SUDO apt-get install -y -q --no-install-recommends $missing
 fi
 
+# An optimised CVODE built from Debian's own source of the installed libsundials-dev
+# (scripts/build-sundials.sh; bookworm's is compiled without optimisation), cached under
+# ~/.cache/reelsim and linked statically into libreelsim. RS_SYSTEM_SUNDIALS=1, or any
+# failure (offline, no deb-src), builds against the system's libsundials instead.
+SUNDIALS_ROOT=""
+if [ "${RS_SYSTEM_SUNDIALS:-0}" != 1 ]; then
+  SUNDIALS_ROOT="$(bash scripts/build-sundials.sh)" || SUNDIALS_ROOT=""
+fi
+
 BUILD_DIR="${RS_BUILD_DIR:-build}"
 # A developer/CI build: warnings are errors, and AVX2 where this machine has it (a plain
 # `cmake -S . -B b` is the portable build a user of the library gets).
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="${RS_BUILD_TYPE:-RelWithDebInfo}" \
-  -DREELSIM_DEVELOPER=ON -DREELSIM_SIMD=ON ${RS_CMAKE_ARGS:-} >/dev/null
+  -DREELSIM_DEVELOPER=ON -DREELSIM_SIMD=ON -DREELSIM_SUNDIALS_ROOT="$SUNDIALS_ROOT" \
+  ${RS_CMAKE_ARGS:-} >/dev/null
 cmake --build "$BUILD_DIR" -j "$(nproc)"
