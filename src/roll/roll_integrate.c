@@ -86,6 +86,9 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
  * every 16, 32 or 64 increments gives the same steps within 0.5 % (docs/performance.md). */
 enum { RS_REUSE_REFRESH = 32 };
 
+/* the start-node search's block of nodes (roll_reuse_start) */
+enum { RS_SCAN_BLOCK = 64 };
+
 /* The node to start the integration of an increment onto k from, keeping the reference's
  * (w, L) below it, or -1: from the core, as a new reference.
  *
@@ -113,28 +116,60 @@ static int roll_reuse_start(rs_roll *roll)
   /* below the top of the last integration, so the new one (one node higher) has length */
   const int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
-  double *restrict pe = roll->scan_eps, *restrict pl = roll->scan_L;
-  /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and the
-   * prefix maxima of L are the scan's that froze them (L there is the reference's) */
+  const double Ls = L[n - roll->shift], tol = roll->p.rtol;
+  /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and scan_L
+   * holds the prefix maxima of L (L there is fixed until the next reference) */
   const int F = roll->lazy_top < top + 1 ? roll->lazy_top : top + 1;
   const double aC = fabs(roll->lazy_c), *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b;
-  double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
-  for (int j = F; j <= top; ++j) {
-    const double e = fabs(Er[j] - Eref[j]) / Eref[j];
-    me = e > me ? e : me;
-    ml = L[j] > ml ? L[j] : ml;
-    pe[j] = me;
-    pl[j] = ml;
+  const double *restrict pl = roll->scan_L;
+  int lo = -1;
+  if (F > 0 && (la[F - 1] + aC * lb[F - 1]) * exp(pl[F - 1] - Ls) > tol) {
+    int hi = F - 1; /* E(lo) <= tol < E(hi), all lazy: bisection on the stored bounds */
+    while (hi - lo > 1) {
+      const int mid = lo + (hi - lo) / 2;
+      if ((la[mid] + aC * lb[mid]) * exp(pl[mid] - Ls) <= tol)
+        lo = mid;
+      else
+        hi = mid;
+    }
+    return lo >= 1 ? lo : -1;
   }
-  const double Ls = L[n - roll->shift], tol = roll->p.rtol;
-  int lo = -1, hi = top + 1; /* E(lo) <= tol < E(hi) */
-  while (hi - lo > 1) {
-    const int mid = lo + (hi - lo) / 2;
-    const double eps = mid < F ? la[mid] + aC * lb[mid] : pe[mid];
-    if (eps * exp(pl[mid] - Ls) <= tol)
-      lo = mid;
-    else
-      hi = mid;
+  /* from F up: every node's drift (a vectorised pass), then the running maxima a block at a
+   * time, E only at each block's end, and node by node inside the block where it first
+   * exceeds tol: the answer of a bisection over the prefix maxima (E grows with s0), without
+   * a chain of dependent max operations through every node */
+  double *restrict eps = roll->scan_eps;
+  for (int j = F; j <= top; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
+  double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
+  lo = F - 1;
+  for (int b0 = F; b0 <= top; b0 += RS_SCAN_BLOCK) {
+    const int b1 = b0 + RS_SCAN_BLOCK - 1 < top ? b0 + RS_SCAN_BLOCK - 1 : top;
+    double e4[4] = {me, me, me, me}, l4[4] = {ml, ml, ml, ml};
+    int j = b0;
+    for (; j + 3 <= b1; j += 4)
+      for (int q = 0; q < 4; ++q) {
+        e4[q] = eps[j + q] > e4[q] ? eps[j + q] : e4[q];
+        l4[q] = L[j + q] > l4[q] ? L[j + q] : l4[q];
+      }
+    for (; j <= b1; ++j) {
+      e4[0] = eps[j] > e4[0] ? eps[j] : e4[0];
+      l4[0] = L[j] > l4[0] ? L[j] : l4[0];
+    }
+    const double be = fmax(fmax(e4[0], e4[1]), fmax(e4[2], e4[3]));
+    const double bl = fmax(fmax(l4[0], l4[1]), fmax(l4[2], l4[3]));
+    if (be * exp(bl - Ls) <= tol) { /* the whole block qualifies */
+      me = be;
+      ml = bl;
+      lo = b1;
+      continue;
+    }
+    for (j = b0; j <= b1; ++j) { /* the first node past tol is in this block */
+      me = eps[j] > me ? eps[j] : me;
+      ml = L[j] > ml ? L[j] : ml;
+      if (me * exp(ml - Ls) > tol) break;
+      lo = j;
+    }
+    break;
   }
   return lo >= 1 ? lo : -1; /* node 0 alone saves nothing: start a new reference */
 }

@@ -61,8 +61,8 @@ struct rs_roll {
   /* Reuse of the deep solution (roll_reuse_start): the last integration from the core is
    * the reference; below the node an integration starts from, (w, L) stay the reference's */
   double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
-  double *scan_eps;     /* [cap + 1] max over nodes 0..j of |E_r / Er_ref - 1| */
-  double *scan_L;       /* [cap + 1] max over nodes 0..j of L */
+  double *scan_eps;     /* [cap + 1] |E_r / Er_ref - 1| at the nodes the search looks at */
+  double *scan_L;       /* [cap + 1] max over nodes 0..j of L, kept below the lazy frontier */
   int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
   int ref_age;          /* integrations since the reference */
   int start;            /* node the last integration started from (0: the core) */

@@ -50,6 +50,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
   rs_radial_modulus_n(&roll->p.radial, Pp + F, Ep + F, to - F);
   if (roll->p.air_film) roll_air_series(roll, Pp, Ep, F, to);
   double pa = F > 0 ? roll->lazy_a[F - 1] : -INFINITY, pb = F > 0 ? roll->lazy_b[F - 1] : 0.0;
+  double pl = F > 0 ? roll->scan_L[F - 1] : -INFINITY; /* and the prefix maxima of L */
   for (int j = F; j < to; ++j) {
     const double dP = Pp[j] - roll->P_node[j];
     double kappa = fabs(Ep[j] - E[j]) / (E[j] * dP); /* d ln E / dP to 1e-3 */
@@ -60,6 +61,8 @@ void roll_lazy_freeze(rs_roll *roll, int to)
     pb = b > pb ? b : pb;
     roll->lazy_a[j] = pa;
     roll->lazy_b[j] = pb;
+    pl = roll->L[j] > pl ? roll->L[j] : pl;
+    roll->scan_L[j] = pl;
   }
   if (C != 0.0) {
     double *restrict sr = roll->sigma_r;
