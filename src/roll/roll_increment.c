@@ -126,7 +126,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
    * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   const int j0 = roll->start;
-  const int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
+  int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
   roll_decays(L, dsr, lo, bottom);
   if (j0 == 0) { /* a reference: keep its shape (the nodes below the block) */
     memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
@@ -136,6 +136,16 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  if (j0 == 0 && !mean && roll->lazy_ok && roll->last_start > 2 && roll->lazy_top == 0) {
+    /* a reference's increment is -S times its own shape everywhere below the block: the
+     * nodes well below where the last partial integration started can take it lazily at
+     * once (their drift is zero now: the modulus was just integrated), so the next
+     * increment does not gather, evaluate and scan the whole roll again */
+    const int Fr = roll->last_start - 1 < bottom - 1 ? roll->last_start - 1 : bottom - 1;
+    roll_lazy_freeze(roll, Fr);
+    roll->deep_lo = lo = Fr;
+    roll->c_deep = -S;
+  }
   if (lo > 0 && dsr[lo] > 1e-280) {
     /* the shape above the start follows this integration, in the reference's scale (so that
      * a later increment may start higher and still read its deep part as c x shape); not

@@ -263,6 +263,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
   } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
     roll->ref_top = j0;
     roll->ref_age++;
+    roll->last_start = j0;
     /* below the start the increment is c x the reference's shape (roll_block_increment):
      * those nodes can wait (roll_lazy.c) */
     if (roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)

@@ -66,6 +66,8 @@ struct rs_roll {
   int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
   int ref_age;          /* integrations since the reference */
   int start;            /* node the last integration started from (0: the core) */
+  int last_start;       /* the last start above the core (where a reference's increment
+                           may be kept lazy from: roll_block_increment) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
    * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
    * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is

@@ -6,9 +6,11 @@
  * with C the sum of the increments' c since the nodes were frozen. The start-node search
  * (roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
  * the pressure added since freezing, -dC e_j, it is at most
- *     eps_j <= a_j + |C| b_j,   b_j = 2 |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
- * (C only grows in magnitude: every increment compresses; the factor 2 covers the curvature
- * of ln E_r(P) over the pressure added), and the search takes the prefix maxima of a and b.
+ *     eps_j ~ a_j + |C| b_j,   b_j = |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
+ * (C only grows in magnitude: every increment compresses; ln E_r is concave in P for the
+ * stack laws, so the first-order change of ln E_r is an upper bound of it, and the relative
+ * change exceeds that by (b dC)^2 / 2, negligible at the drifts the search accepts), and
+ * the search takes the prefix maxima of a and b.
  * So an increment costs work over the nodes from the frontier up, not over the whole roll.
  * Readers get the full values in separate arrays (roll_lazy_view_*): reading never moves
  * the frontier. */
@@ -55,7 +57,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
     const double dP = Pp[j] - roll->P_node[j];
     double kappa = fabs(Ep[j] - E[j]) / (E[j] * dP); /* d ln E / dP to 1e-3 */
     if (!isfinite(kappa)) kappa = INFINITY;
-    const double b = 2.0 * kappa * e[j];
+    const double b = kappa * e[j];
     const double a = fabs(E[j] - Eref[j]) / Eref[j] - aC * b;
     pa = a > pa ? a : pa;
     pb = b > pb ? b : pb;
