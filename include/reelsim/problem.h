@@ -63,6 +63,8 @@ typedef struct rs_air_spec {
   double cutoff;           /* the film kept is max(0, h0 - cutoff roughness) (default 3) */
   double pressure;         /* Pa, absolute ambient pressure (default 101325) */
   double nip_radius;       /* m, the nip roller's radius (a problem with a nip) */
+  int moving_surfaces;     /* U = moving_surfaces x V in the foil law: 2 (web and roll, default)
+                              or 1 (one surface: TopWeb's convention) */
 } rs_air_spec;
 
 typedef struct rs_problem {

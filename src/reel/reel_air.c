@@ -30,12 +30,13 @@ void rs_reel_air_free(rs_reel_air *air)
 }
 
 /* The web wraps the roll at its tension Ti (the span's: the film forms before the web
- * meets the roll, upstream of any nip), web and roll surface both at V, so U = 2V. A nip
+ * meets the roll, upstream of any nip), web and roll surface both at V, so U = 2V (or V:
+ * air.moving_surfaces). A nip
  * rolls on the roll at the same V: its film, if thinner, is what goes in. */
 double rs_reel_air_film(const rs_problem *pb, double R, double Ti, double V, double w)
 {
   const rs_air_spec *a = &pb->air;
-  double h = Ti > 0.0 ? rs_air_foil_film(R, 2.0 * V, Ti, a->viscosity) : INFINITY;
+  double h = Ti > 0.0 ? rs_air_foil_film(R, a->moving_surfaces * V, Ti, a->viscosity) : INFINITY;
   if (pb->nip.model != RS_NIP_NONE)
     h = fmin(h, rs_air_nip_film(R, a->nip_radius, V, w, a->viscosity));
   if (!(V > 0.0)) h = 0.0;

@@ -250,7 +250,7 @@ static void print_air(FILE *out, const rs_scene *s)
   for (int j = 0; j < p->n_layers; ++j) {
     const double R = p->core.radius + j * p->material.caliper, r = R + p->material.caliper;
     const double V = rs_recipe_eval(&p->speed, r), Ti = rs_recipe_eval(&p->tension, r);
-    double h0 = rs_air_foil_film(R, 2.0 * V, Ti, a->viscosity);
+    double h0 = rs_air_foil_film(R, a->moving_surfaces * V, Ti, a->viscosity);
     if (p->nip.model != RS_NIP_NONE) {
       const double hn = rs_air_nip_film(R, a->nip_radius, V, rs_recipe_eval(&p->nip.load, r),
                                         a->viscosity);

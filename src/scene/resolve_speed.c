@@ -20,6 +20,12 @@ static rs_status resolve_air(const yn *root, rs_scene *s)
   a->viscosity = ys_num(root, "air.viscosity");
   a->cutoff = ys_num(root, "air.cutoff");
   a->pressure = ys_num(root, "air.pressure");
+  const long long surfaces = ys_int(root, "air.moving_surfaces");
+  a->moving_surfaces = surfaces == 1 ? 1 : 2;
+  if (surfaces != 1 && surfaces != 2)
+    return ys_fail(root, "air.moving_surfaces",
+                   "must be 2 (web and roll surface both carry air in: U = 2V) or 1 (U = V) "
+                   "(got %lld)", surfaces);
   if (!(a->viscosity > 0.0 && a->viscosity < INFINITY))
     return ys_fail(root, "air.viscosity", "must be > 0 Pa s (got %g)", a->viscosity);
   if (!(a->cutoff >= 0.0 && a->cutoff < INFINITY))

@@ -195,7 +195,7 @@ static const ys_value v_centrifugal = MAP(centrifugal_fields);
 static const ys_field air_fields[] = {
     DEF("viscosity", &v_float, "1.8e-5"), OPT("roughness", &v_float),
     DEF("cutoff", &v_float, "3"),         DEF("pressure", &v_float, "101325"),
-    OPT("nip_radius", &v_float),          END};
+    OPT("nip_radius", &v_float),          DEF("moving_surfaces", &v_int, "2"), END};
 static const ys_value v_air = MAP(air_fields);
 
 /* ---- the scene ------------------------------------------------------------------------ */

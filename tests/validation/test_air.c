@@ -234,8 +234,8 @@ static void topweb(void)
   CHECK_LT(fabs(D / 0.6607 - 1.0), 0.03);
   rs_reel_result_destroy(&res);
   /* TopWeb's figure (and the issue's 667 mm for the foil law alone) count one surface's
-   * speed, U = V: the same law with mu / 2 (6 (mu/2) 2V = 6 mu V) */
-  const double D1 = topweb_diameter("air.viscosity=0.9e-5", &res);
+   * speed, U = V: air.moving_surfaces = 1 */
+  const double D1 = topweb_diameter("air.moving_surfaces=1", &res);
   const double D1_foil = foil_only_diameter(0.075, 100e-6, 3000.0, 1.8e-5, V, 150.0);
   CHECK_LOG("diameter with air, U = V (mm)", D1 * 1e3);
   CHECK_LOG("foil law alone, uncompressed, U = V (mm)", D1_foil * 1e3);
@@ -254,6 +254,9 @@ static void refused(void)
   const char *t2 = MAT "winding: {final_radius: 0.12, tension: 350}\nair: {roughness: 1e-6}\n";
   CHECK(rs_scene_load_text("air.yaml", t2, strlen(t2), 0, NULL, &sc) == RS_ERR_INPUT);
   CHECK(strstr(rs_error_message(), "winding.speed") != NULL);
+  const char *t_ms = MAT "winding: {final_radius: 0.12, tension: 350, speed: 10}\nair: {roughness: 1e-6, moving_surfaces: 3}\n";
+  CHECK(rs_scene_load_text("air.yaml", t_ms, strlen(t_ms), 0, NULL, &sc) == RS_ERR_INPUT);
+  CHECK(strstr(rs_error_message(), "air.moving_surfaces") != NULL);
   const char *t3 = "material: {caliper: 70e-6, E_theta: 3.5e9, roughness: 2e-7, radial: {law: linear, E_r: 1e6}}\n"
                    "core: {radius: 0.0762}\nwinding: {final_radius: 0.1, tension: 350, speed: 10}\nair: true\n";
   sc = load(t3, 0, NULL);
