@@ -146,15 +146,16 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->shape_e = calloc(cap + 1, sizeof(double));
   roll->shape_h = calloc(cap + 1, sizeof(double));
   roll->lazy_a = calloc(cap + 1, sizeof(double));
+  roll->lazy_b = calloc(cap + 1, sizeof(double));
   roll->view_r = calloc(cap, sizeof(double));
   roll->view_theta = calloc(cap, sizeof(double));
-  roll->lazy_b = calloc(cap + 1, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
-      !roll->scan_L || !roll->shape_e || !roll->shape_h) {
+      !roll->scan_L || !roll->shape_e || !roll->shape_h || !roll->lazy_a || !roll->lazy_b ||
+      !roll->view_r || !roll->view_theta) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
