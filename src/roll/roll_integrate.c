@@ -178,9 +178,9 @@ static int roll_reuse_start(rs_roll *roll)
  * integral of w: CVODE's local errors in L add up along an integration, with one sign on a
  * roll (the solution's derivatives keep their signs), instead of dying out, and so does
  * the integral of the errors it leaves in w, which relax at the Riccati rate 2 (1 + w):
- * an error dw left by a step adds ~dw / (2 (1 + w)) to every L above it. The estimates of each step (CVodeGetEstLocalErrors)
- * are summed into C, and the stored L is L - C: C grows linearly across a step, and the w
- * part enters after the step that left it. A step of order below 4 (the start-up after a
+ * an error dw left by a step adds ~dw / (2 (1 + w)) to every L above it. The estimates of
+ * each step (CVodeGetEstLocalErrors) are summed into C, and the stored L is L - C: C grows
+ * linearly across a step, and the w part enters after the step that left it. A step of order below 4 (the start-up after a
  * restart, a few steps long) leaves its w estimate out: BDF's low-order estimates are
  * several times the error a step actually leaves in a strongly damped component (measured:
  * with them the hoop stress next to the core was worse than uncorrected; from order 4 on
