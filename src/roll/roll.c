@@ -151,6 +151,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->view_theta = calloc(cap, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
+  roll->lazy_allowed = roll_lazy_allowed(&roll->p);
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
@@ -218,7 +219,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   const int k_old = roll->n, k = roll->n + m;
   const int top = k - roll->shift; /* the highest node the increment loads */
   /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
-  roll->lazy_ok = m == 1;
+  roll->lazy_ok = m == 1 && roll->lazy_allowed;
   if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */

@@ -127,24 +127,31 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   const int j0 = roll->start;
   int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
+  /* an increment computed node by node from the core adds to the stored values of nodes
+   * that are lazy: their drift bound would not see it, so they are brought up to date */
+  if (lo == 0 && roll->lazy_top > 0) roll_lazy_flush(roll, 0);
   roll_decays(L, dsr, lo, bottom);
-  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block) */
+  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block, and its bottom
+                  * node, e = 1 there: a later start there still reads the shape) */
     memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
+    roll->shape_e[bottom] = 1.0;
     if (!shift)
-      for (int j = 0; j < bottom; ++j) roll->shape_h[j] = dsr[j] * (1.0 + w[j]);
-    roll->shape_top = bottom - 1;
+      for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+    roll->shape_top = bottom;
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
-  if (j0 == 0 && !mean && roll->lazy_ok && roll->last_start > 2 && roll->lazy_top == 0) {
+  if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
+      roll->last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
      * nodes well below where the last partial integration started can take it lazily at
      * once (their drift is zero now: the modulus was just integrated), so the next
      * increment does not gather, evaluate and scan the whole roll again */
-    const int Fr = roll->last_start - 1 < bottom - 1 ? roll->last_start - 1 : bottom - 1;
-    roll_lazy_freeze(roll, Fr);
-    roll->deep_lo = lo = Fr;
-    roll->c_deep = -S;
+    roll_lazy_freeze(roll, roll->last_start - 1);
+    if (roll->lazy_top > 0) {
+      roll->deep_lo = lo = roll->lazy_top;
+      roll->c_deep = -S;
+    }
   }
   if (lo > 0 && dsr[lo] > 1e-280) {
     /* the shape above the start follows this integration, in the reference's scale (so that
@@ -153,9 +160,12 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     const double scale = roll->shape_e[lo] / dsr[lo];
     if (scale < 1e200) {
       for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
+      roll->shape_e[bottom] = scale;
       if (!shift)
-        for (int j = lo; j < bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-      roll->shape_top = bottom - 1;
+        for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+      roll->shape_top = bottom;
+    } else {
+      roll->shape_top = lo; /* above it the shape is stale */
     }
   }
   if (mean) {

@@ -316,7 +316,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
   if (!from_core) {
     /* (w, L) above the start now come from this modulus: it is what later increments'
      * drift is measured against there, and they may start as high as this one's top */
-    memcpy(roll->Er_ref + first, roll->Er + first, (size_t)(k - first + 1) * sizeof(double));
+    memcpy(roll->Er_ref + first + 1, roll->Er + first + 1, (size_t)(k - first) * sizeof(double));
     roll->ref_top = k;
   }
   long nfe = 0;

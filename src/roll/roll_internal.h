@@ -83,6 +83,8 @@ struct rs_roll {
    * stresses being stored + lazy_c x shape (e, and h for Hakiel's hoop stress) */
   int lazy_top;
   int lazy_ok;           /* this increment may freeze nodes (one layer: no corrector) */
+  int lazy_limit;        /* nodes below it existed when lazy_c last started from 0 */
+  int lazy_allowed;      /* the law's ln E_r is concave: the lazy part's bound holds */
   double lazy_c;
   double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
   double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view_*) */
@@ -101,6 +103,7 @@ void roll_lazy_freeze(rs_roll *roll, int to);
 double roll_lazy_sigma(const rs_roll *roll, int j);
 const double *roll_lazy_view_r(rs_roll *roll);
 const double *roll_lazy_view_theta(rs_roll *roll);
+int roll_lazy_allowed(const rs_roll_params *p);
 
 /* roll_ode.c */
 double roll_g2_at(rs_roll *roll, double x, double *dg2);

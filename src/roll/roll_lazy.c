@@ -43,6 +43,12 @@ void roll_lazy_flush(rs_roll *roll, int from)
 void roll_lazy_freeze(rs_roll *roll, int to)
 {
   const int F = roll->lazy_top;
+  /* C sums the increments since it was last 0. A node wound after that was above some of
+   * them: c e_j of those is no stress (e_j = exp(L_j - shape_L) grows up the roll, by
+   * orders of magnitude on a very soft web) and stored = true - C e_j would cancel
+   * catastrophically. So only nodes that existed when C started are frozen. */
+  if (F == 0 && roll->lazy_c == 0.0) roll->lazy_limit = roll->n;
+  if (to > roll->lazy_limit) to = roll->lazy_limit;
   if (to <= F) return;
   const double C = roll->lazy_c, aC = fabs(C);
   const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
@@ -106,4 +112,31 @@ const double *roll_lazy_view_theta(rs_roll *roll)
   for (int j = 0; j < lazy_end; ++j) v[j] = st[j] + C * h[j + 1];
   for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = st[j];
   return v;
+}
+
+/* Whether the lazy deep part may be used: when ln E_r(P) is concave over P >= 0, the drift
+ * a lazy node's first-order bound predicts from its slope when frozen bounds the change of
+ * ln E_r to come. Pfeiffer's and a constant law are concave; a polynomial or a table is
+ * checked on a logarithmic grid of pressures from 1 Pa to 1 GPa (the slopes of ln E_r
+ * between grid points must not rise). A law that is not (a table flat below its first
+ * point, then steep: slope 0 when frozen, a jump later) keeps every node explicit. The
+ * stack law's alone, also with air films (their series compliance falls with P: there the
+ * bound is an estimate, like the rest of the criterion), so that a roll whose films are all
+ * cut off winds as one without air, bit for bit. */
+int roll_lazy_allowed(const rs_roll_params *p)
+{
+  if (p->radial.law == RS_RADIAL_LINEAR || p->radial.law == RS_RADIAL_PFEIFFER) return 1;
+  enum { NG = 400 };
+  double lnE[NG], P[NG];
+  for (int i = 0; i < NG; ++i) {
+    P[i] = pow(10.0, 9.0 * i / (NG - 1));
+    lnE[i] = log(rs_radial_modulus(&p->radial, P[i]));
+  }
+  for (int i = 1; i + 1 < NG; ++i) {
+    /* the slope falls (or stays) from one interval to the next */
+    const double s0 = (lnE[i] - lnE[i - 1]) / (P[i] - P[i - 1]);
+    const double s1 = (lnE[i + 1] - lnE[i]) / (P[i + 1] - P[i]);
+    if (!(s1 <= s0 * (1.0 + 1e-9) + 1e-300)) return 0;
+  }
+  return 1;
 }

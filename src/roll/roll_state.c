@@ -55,6 +55,7 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
   roll->n = st->n;
   roll->lazy_top = 0; /* the state holds the stresses in full */
   roll->lazy_c = 0.0;
+  roll->last_start = 0; /* the starts of the roll wound since do not apply */
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
   if (st->n > 0) { /* the state of an empty roll has no arrays */
     memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));

@@ -1,1 +1,1 @@
-rs_test(test_roll_lazy unit SOURCES unit/test_roll_lazy.c CASES layer_reads_match_full matches_reuse_none reads_change_nothing)
+rs_test(test_roll_lazy unit SOURCES unit/test_roll_lazy.c CASES layer_reads_match_full matches_reuse_none reads_change_nothing flat_then_steep very_soft_web restore_to_empty)

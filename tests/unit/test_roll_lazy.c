@@ -10,7 +10,15 @@
  *                           stress of Hakiel's placement too
  *   reads_change_nothing    reading the full profiles every 100 layers leaves the winding
  *                           bit for bit as it was (the readers get copies; the lazy state is
- *                           untouched: history stages and entrained air read every so often) */
+ *                           untouched: history stages and entrained air read every so often)
+ *   flat_then_steep         a table law flat below its first point and steep above it (ln E_r
+ *                           not concave: a node frozen on the flat part would see no drift
+ *                           coming): within rtol of reuse: none (was 5e-3 off)
+ *   very_soft_web           g ~ 700, g t / r ~ 7: nodes wound after the lazy scale started
+ *                           are not frozen (stored = true - C e_j cancelled: 90 % off); the
+ *                           profile within the reuse's own error of reuse: none
+ *   restore_to_empty        rewinding to an empty roll and winding again (a heap overflow
+ *                           once) gives the fresh roll's stresses within the reuse error */
 #include <math.h>
 #include <string.h>
 
@@ -101,7 +109,85 @@ static void reads_change_nothing(void)
   rs_roll_destroy(&b);
 }
 
+/* the largest |a - b| over the core and every layer, over the largest |b| */
+static double profile_difference(const rs_roll *a, const rs_roll *b, int n)
+{
+  double d = fabs(rs_roll_core_pressure(a) - rs_roll_core_pressure(b));
+  double m = fabs(rs_roll_core_pressure(b));
+  const double *sa = rs_roll_sigma_r(a), *sb = rs_roll_sigma_r(b);
+  for (int j = 0; j < n; ++j) {
+    d = fmax(d, fabs(sa[j] - sb[j]));
+    m = fmax(m, fabs(sb[j]));
+  }
+  return d / m;
+}
+
+static void flat_then_steep(void)
+{
+  const int n = 1000;
+  rs_roll *r[2] = {NULL, NULL};
+  for (int v = 0; v < 2; ++v) {
+    rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, n);
+    p.radial.law = RS_RADIAL_TABLE;
+    p.radial.n_points = 4;
+    const double P[] = {3e5, 3.06e5, 4.5e5, 9e5}, E[] = {3e6, 3.01e6, 3e7, 6e7};
+    memcpy(p.radial.P, P, sizeof P);
+    memcpy(p.radial.E, E, sizeof E);
+    CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
+    p.rtol = 3e-5;
+    p.reuse = v ? RS_REUSE_OFF : RS_REUSE_ON;
+    CHECK(rs_roll_create(&p, &r[v]) == RS_OK);
+    if (!r[v] || !wind_to(r[v], n)) goto out;
+  }
+  CHECK_LOG("profile difference, reuse against none", profile_difference(r[0], r[1], n));
+  CHECK_LT(profile_difference(r[0], r[1], n), 1e-4);
+out:
+  rs_roll_destroy(&r[0]);
+  rs_roll_destroy(&r[1]);
+}
+
+static void very_soft_web(void)
+{
+  const int n = 900;
+  const double T = 100.0;
+  rs_roll *r[2] = {NULL, NULL};
+  for (int v = 0; v < 2; ++v) {
+    rs_roll_params p = pfeiffer_params(0.01, 1e-4, 4.9e9, 1e4, 1, INFINITY, n);
+    p.rtol = 3e-5;
+    p.reuse = v ? RS_REUSE_OFF : RS_REUSE_ON;
+    CHECK(rs_roll_create(&p, &r[v]) == RS_OK);
+    if (!r[v]) goto out;
+    for (int k = 0; k < n; ++k) CHECK(rs_roll_add_layers(r[v], 1, &T) == RS_OK);
+  }
+  CHECK_LOG("profile difference, reuse against none", profile_difference(r[0], r[1], n));
+  CHECK_LT(profile_difference(r[0], r[1], n), 2e-2); /* the reuse's own error here: 4e-3 */
+out:
+  rs_roll_destroy(&r[0]);
+  rs_roll_destroy(&r[1]);
+}
+
+static void restore_to_empty(void)
+{
+  rs_roll *a = newsprint(RS_REUSE_ON, RS_LOAD_BENEATH), *b = newsprint(RS_REUSE_ON, RS_LOAD_BENEATH);
+  rs_roll_state *st = NULL;
+  CHECK(rs_roll_state_create(&st) == RS_OK);
+  if (!a || !b || !st) goto out;
+  CHECK(rs_roll_save(a, st) == RS_OK); /* the empty roll */
+  CHECK(wind_to(a, N));
+  CHECK(rs_roll_restore(a, st) == RS_OK);
+  CHECK(rs_roll_layers(a) == 0);
+  CHECK(wind_to(a, N) && wind_to(b, N));
+  CHECK_LT(profile_difference(a, b, N), 2e-5);
+out:
+  rs_roll_state_destroy(&st);
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
 static const check_case cases[] = {{"layer_reads_match_full", layer_reads_match_full},
                                    {"matches_reuse_none", matches_reuse_none},
-                                   {"reads_change_nothing", reads_change_nothing}};
+                                   {"reads_change_nothing", reads_change_nothing},
+                                   {"flat_then_steep", flat_then_steep},
+                                   {"very_soft_web", very_soft_web},
+                                   {"restore_to_empty", restore_to_empty}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
