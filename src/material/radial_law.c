@@ -111,6 +111,14 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
   case RS_RADIAL_HAKIEL: { /* Horner over the nodes: a plain loop that vectorises */
     const int m = law->n_coef;
     const double *C = law->C;
+    if (m == 3) { /* the usual quadratic, in one pass */
+      const double c0 = C[0], c1 = C[1], c2 = C[2];
+      for (int i = 0; i < n; ++i) {
+        const double p = P[i] > 0.0 ? P[i] : 0.0;
+        E[i] = c0 + p * (c1 + p * c2);
+      }
+      return;
+    }
     for (int i = 0; i < n; ++i) E[i] = C[m - 1];
     for (int c = m - 2; c >= 0; --c) {
       const double Cc = C[c];

@@ -24,11 +24,14 @@ static inline double roll_exp_step(double d)
  * product is 0: no subnormals. */
 static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
-  for (int j = lo; j < top; ++j) e[j] = roll_exp_small(L[j] - L[j + 1]);
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing there, and far below 1 or negative for d < -0.03): exp() there */
   int bad = 0;
-  for (int j = lo; j < top; ++j) bad |= (e[j] <= 0.9705) | (e[j] >= 1.0304);
+  for (int j = lo; j < top; ++j) {
+    const double v = roll_exp_small(L[j] - L[j + 1]);
+    bad |= (v <= 0.9705) | (v >= 1.0304);
+    e[j] = v;
+  }
   if (bad)
     for (int j = lo; j < top; ++j)
       if (!(e[j] > 0.9705 && e[j] < 1.0304)) e[j] = roll_exp_step(L[j] - L[j + 1]);
