@@ -57,20 +57,25 @@ void roll_lazy_freeze(rs_roll *roll, int to)
   for (int j = F; j < to; ++j) Pp[j] = roll->P_node[j] * 1.001 + 1.0;
   rs_radial_modulus_n(&roll->p.radial, Pp + F, Ep + F, to - F);
   if (roll->p.air_film) roll_air_series(roll, Pp, Ep, F, to);
-  double pa = F > 0 ? roll->lazy_a[F - 1] : -INFINITY, pb = F > 0 ? roll->lazy_b[F - 1] : 0.0;
-  double pl = F > 0 ? roll->scan_L[F - 1] : -INFINITY; /* and the prefix maxima of L */
+  /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
+   * the three running maxima side by side */
+  double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
+  const double *restrict P = roll->P_node, *restrict L = roll->L;
   for (int j = F; j < to; ++j) {
-    const double dP = Pp[j] - roll->P_node[j];
-    double kappa = fabs(Ep[j] - E[j]) / (E[j] * dP); /* d ln E / dP to 1e-3 */
-    if (!isfinite(kappa)) kappa = INFINITY;
+    const double kappa = fabs(Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])); /* d ln E / dP to 1e-3 */
     const double b = kappa * e[j];
-    const double a = fabs(E[j] - Eref[j]) / Eref[j] - aC * b;
-    pa = a > pa ? a : pa;
-    pb = b > pb ? b : pb;
-    roll->lazy_a[j] = pa;
-    roll->lazy_b[j] = pb;
-    pl = roll->L[j] > pl ? roll->L[j] : pl;
-    roll->scan_L[j] = pl;
+    lb[j] = b == b ? b : INFINITY; /* a NaN slope bounds nothing */
+    la[j] = fabs(E[j] - Eref[j]) / Eref[j] - aC * lb[j];
+  }
+  double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
+  double pl = F > 0 ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
+  for (int j = F; j < to; ++j) {
+    pa = la[j] > pa ? la[j] : pa;
+    pb = lb[j] > pb ? lb[j] : pb;
+    pl = L[j] > pl ? L[j] : pl;
+    la[j] = pa;
+    lb[j] = pb;
+    sl[j] = pl;
   }
   if (C != 0.0) {
     double *restrict sr = roll->sigma_r;
