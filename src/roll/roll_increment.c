@@ -273,49 +273,32 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
 {
   const int k_old = roll->n, k = roll->n + m;
   const double t = roll->p.caliper;
-  rs_status st = roll_check_increment(roll, roll->dsr, roll->shift ? roll->dsr : roll->dsh, k);
+  const double *restrict ds = roll->dsr, *restrict dh = roll->dsh;
+  rs_status st = roll_check_increment(roll, ds, roll->shift ? ds : dh, k);
   if (st) return st;
-  if (roll->shift) { /* the radial stresses; the hoop stresses follow from them */
-    const int lo = roll->deep_lo;
-    const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict ds = roll->dsr;
-    double *restrict sr = roll->sigma_r;
-    int j = 1;
-    if (lo > 0 && roll->lazy_top > 0) { /* the lazy nodes take c in their common scale */
-      roll->lazy_c += c;
-      j = roll->lazy_top;
-    } else {
-      roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
-    }
-    for (; j < lo; ++j) sr[j - 1] += c * se[j];
-    for (j = lo > 1 ? lo : 1; j <= k_old; ++j) sr[j - 1] += ds[j];
-    for (j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
+  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment):
+   * the lazy nodes take it in their common scale */
+  const int lo = roll->deep_lo;
+  const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
+  int j0 = 1;
+  if (lo > 0 && roll->lazy_top > 0) {
+    roll->lazy_c += c;
+    j0 = roll->lazy_top;
+  } else {
+    roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
+  }
+  const int j1 = lo > 1 ? lo : 1;
+  for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
+  for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
+  for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
+  if (roll->shift) { /* the hoop stresses follow from the radial ones */
     roll->hoop_stale = 1; /* derived when asked for: rs_roll_sigma_theta */
     return RS_OK;
   }
-  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment) */
-  const int lo = roll->deep_lo;
-  const double c = roll->c_deep;
-  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
-  double *restrict sr = roll->sigma_r, *restrict st_ = roll->sigma_theta;
-  int j = 1;
-  if (lo > 0 && roll->lazy_top > 0) { /* the lazy nodes take c in their common scale */
-    roll->lazy_c += c;
-    j = roll->lazy_top;
-  } else {
-    roll->core_sigma += lo > 0 ? c * se[0] : roll->dsr[0];
-  }
-  for (; j < lo; ++j) {
-    sr[j - 1] += c * se[j];
-    st_[j - 1] += c * sh[j];
-  }
-  for (j = lo > 1 ? lo : 1; j <= k_old; ++j) {
-    sr[j - 1] += roll->dsr[j];
-    st_[j - 1] += roll->dsh[j];
-  }
-  for (j = k_old + 1; j <= k; ++j) {
-    roll->sigma_r[j - 1] = roll->dsr[j];
-    roll->sigma_theta[j - 1] = T0[j - k_old - 1] / t + roll->dsh[j];
-  }
+  for (int j = j0; j < lo; ++j) sth[j - 1] += c * sh[j];
+  for (int j = j1; j <= k_old; ++j) sth[j - 1] += dh[j];
+  for (int j = k_old + 1; j <= k; ++j) sth[j - 1] = T0[j - k_old - 1] / t + dh[j];
   return RS_OK;
 }
 

@@ -18,21 +18,28 @@
 
 #include "roll/roll_internal.h"
 
+/* stored += scale x shape over the nodes [lo, hi) (node 0: the core; Hakiel's placement
+ * also the hoop stresses): how nodes leave (scale C) and join (scale -C) the lazy zone */
+static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale)
+{
+  const double *restrict e = roll->shape_e;
+  double *restrict sr = roll->sigma_r;
+  if (lo == 0) roll->core_sigma += scale * e[0];
+  for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += scale * e[j];
+  if (!roll->shift) {
+    const double *restrict h = roll->shape_h;
+    double *restrict sth = roll->sigma_theta;
+    for (int j = lo > 1 ? lo : 1; j < hi; ++j) sth[j - 1] += scale * h[j];
+  }
+}
+
 /* Nodes [from, F) back to explicit stresses (their true values); F = from. */
 void roll_lazy_flush(rs_roll *roll, int from)
 {
   const int F = roll->lazy_top;
   if (from < 0) from = 0;
   if (from >= F) return;
-  const double C = roll->lazy_c, *restrict e = roll->shape_e;
-  double *restrict sr = roll->sigma_r;
-  if (from == 0) roll->core_sigma += C * e[0];
-  for (int j = from > 1 ? from : 1; j < F; ++j) sr[j - 1] += C * e[j];
-  if (!roll->shift) {
-    const double *restrict h = roll->shape_h;
-    double *restrict sth = roll->sigma_theta;
-    for (int j = from > 1 ? from : 1; j < F; ++j) sth[j - 1] += C * h[j];
-  }
+  roll_lazy_shift(roll, from, F, roll->lazy_c);
   roll->lazy_top = from;
   if (from == 0) roll->lazy_c = 0.0;
 }
@@ -77,13 +84,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
     lb[j] = pb;
     sl[j] = pl;
   }
-  if (C != 0.0) {
-    double *restrict sr = roll->sigma_r;
-    if (F == 0) roll->core_sigma -= C * e[0];
-    for (int j = F > 1 ? F : 1; j < to; ++j) sr[j - 1] -= C * e[j];
-    if (!roll->shift)
-      for (int j = F > 1 ? F : 1; j < to; ++j) roll->sigma_theta[j - 1] -= C * roll->shape_h[j];
-  }
+  if (C != 0.0) roll_lazy_shift(roll, F, to, -C);
   roll->lazy_top = to;
 }
 
@@ -97,26 +98,25 @@ double roll_lazy_sigma(const rs_roll *roll, int j)
 /* The stresses in full for a reader, without touching the lazy state (so that reading a
  * roll never changes how it winds on: a run with history stages or entrained air winds
  * bit for bit as one without) */
-const double *roll_lazy_view_r(rs_roll *roll)
+static const double *roll_lazy_view(const rs_roll *roll, const double *restrict stored,
+                                    const double *restrict shape, double *restrict v)
 {
   const int F = roll->lazy_top, n = roll->n;
-  const double C = roll->lazy_c, *restrict e = roll->shape_e, *restrict sr = roll->sigma_r;
-  double *restrict v = roll->view_r;
+  const double C = roll->lazy_c;
   const int lazy_end = F - 1 < n ? F - 1 : n; /* layers 0..F-2 sit on lazy nodes 1..F-1 */
-  for (int j = 0; j < lazy_end; ++j) v[j] = sr[j] + C * e[j + 1];
-  for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = sr[j];
+  for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + C * shape[j + 1];
+  for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = stored[j];
   return v;
+}
+
+const double *roll_lazy_view_r(rs_roll *roll)
+{
+  return roll_lazy_view(roll, roll->sigma_r, roll->shape_e, roll->view_r);
 }
 
 const double *roll_lazy_view_theta(rs_roll *roll)
 {
-  const int F = roll->lazy_top, n = roll->n;
-  const double C = roll->lazy_c, *restrict h = roll->shape_h, *restrict st = roll->sigma_theta;
-  double *restrict v = roll->view_theta;
-  const int lazy_end = F - 1 < n ? F - 1 : n;
-  for (int j = 0; j < lazy_end; ++j) v[j] = st[j] + C * h[j + 1];
-  for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = st[j];
-  return v;
+  return roll_lazy_view(roll, roll->sigma_theta, roll->shape_h, roll->view_theta);
 }
 
 /* Whether the lazy deep part may be used: when ln E_r(P) is concave over P >= 0, the drift
