@@ -15,6 +15,15 @@ static inline double roll_exp_step(double d)
   return fabs(d) >= 0.03 ? exp(d) : roll_exp_small(d);
 }
 
+/* e[lo..hi) *= s, what falls below 1e-290 cleared (a plain loop: it vectorises) */
+static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double v = e[j] * s;
+    e[j] = v > 1e-290 ? v : 0.0;
+  }
+}
+
 /* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
  * down, of the one-layer decays exp(L_j - L_{j+1}) (roll_exp_step: the Taylor sums in a
  * plain loop that vectorises, exp() where a decay is large). A running product is a chain
@@ -71,19 +80,10 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
   /* scale each segment by the product of those above it (e[b3] = p3, ...), and clear what
    * fell below 1e-290 */
   const double s2 = p3, s1 = s2 * p2, s0 = s1 * p1;
-  for (int j = b3; j < top; ++j) e[j] = e[j] > 1e-290 ? e[j] : 0.0;
-  for (int j = b2; j < b3; ++j) {
-    const double v = e[j] * s2;
-    e[j] = v > 1e-290 ? v : 0.0;
-  }
-  for (int j = b1; j < b2; ++j) {
-    const double v = e[j] * s1;
-    e[j] = v > 1e-290 ? v : 0.0;
-  }
-  for (int j = b0; j < b1; ++j) {
-    const double v = e[j] * s0;
-    e[j] = v > 1e-290 ? v : 0.0;
-  }
+  roll_scale_clear(e, b3, top, 1.0);
+  roll_scale_clear(e, b2, b3, s2);
+  roll_scale_clear(e, b1, b2, s1);
+  roll_scale_clear(e, b0, b1, s0);
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
