@@ -74,9 +74,10 @@ missing_dir)
   ;;
 interrupted)
   set -m   # job control: the background run gets SIGINT like a foreground one would
-  # a run of several seconds: a constant modulus lets every increment reuse the deep
+  # a run of ten seconds or more (59,500 layers at rtol 1e-9), so that the signal lands
+  # mid-run even on a fast machine; a constant modulus lets every increment reuse the deep
   # solution (numerics.reuse), so that is off here
-  "$bin" compare "$sc/small.yaml" "$sc/small.yaml" --set winding.final_radius=1.2 \
+  "$bin" compare "$sc/small.yaml" "$sc/small.yaml" --set winding.final_radius=6 \
     --set numerics.rtol=1e-9 --set numerics.reuse=none -o "$w/cmp.h5" > "$tmp/log" 2>&1 &
   pid=$!
   sleep 1

@@ -11,12 +11,12 @@ set -u
 set -m   # job control: the background run gets SIGINT like a foreground one would
 bin="$1"; scene="$2"; sig="${3:-INT}"; want="${4:-130}"; keep="${5:-}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-# a reel long enough (minutes) that the signal lands mid-run: 20,000 layers, each increment
-# integrated from the core at rtol 1e-9 (the defaults wind it in under a second)
+# a reel long enough (13 s on the 2-core machine) that the signal lands mid-run even where runs
+# are faster: 41,800 layers, each increment integrated from the core at rtol 1e-9
 if [ "$keep" = study ]; then
   "$bin" study "$scene" --set winding.final_radius=1.5 -o "$tmp/out/study" > "$tmp/log" 2>&1 &
 else
-  "$bin" run "$scene" --set winding.final_radius=1.5 --set numerics.reuse=none \
+  "$bin" run "$scene" --set winding.final_radius=3 --set numerics.reuse=none \
     --set numerics.rtol=1e-9 -o "$tmp/out.h5" $keep > "$tmp/log" 2>&1 &
 fi
 pid=$!
