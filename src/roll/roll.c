@@ -180,9 +180,11 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (CVodeInit(roll->cvode, roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
   if (CVodeWFtolerances(roll->cvode, roll_ewt) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
-  /* Newton with the exact 2 x 2 Jacobian (src/roll/vector2.c) */
+  /* the corrector equations solved exactly (src/roll/vector2.c): roll_rhs is
+   * (g^2(x) - 1 - 2w - w^2, w), quadratic in w with g^2 independent of the state */
   roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, roll_jac, roll);
   if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) goto cvode_fail;
+  rs_roll_newton2_set_quadratic(roll->NLS, -2.0, -1.0);
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
   /* CVODE keeps its step (and its order) while the step it could take is within a band of

@@ -37,7 +37,7 @@ struct rs_roll {
    * the epoch it belongs to, and ln g^2 and its slopes at the two ends */
   int hj;
   unsigned long long hepoch;
-  double hy0, hy1, hm0, hm1;
+  double hy0, hy1, hm0, hm1, hg0; /* hg0 = e^hy0 = g^2 at the interval's lower node */
   /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
    * its end all look at the same x */
   double gx, g2x, dg2x;

@@ -148,6 +148,8 @@ typedef struct newton2 {
   SUNMatrix unused;           /* see rs_roll_newton2_attach */
   rs_roll_jac2_fn jac;
   void *user;
+  int quadratic;              /* f = (a(t) + p w + q w^2, b(t) + w): the exact corrector */
+  double p, q;
   N_Vector res, delta;
   int maxiters, curiter;
   long niters, nconvfails; /* in the last solve */
@@ -165,6 +167,47 @@ static SUNNonlinearSolver_Type newton2_type(SUNNonlinearSolver S)
 static int newton2_initialize(SUNNonlinearSolver S)
 {
   NEWTON2(S)->niters = NEWTON2(S)->nconvfails = 0;
+  return SUN_NLS_SUCCESS;
+}
+
+/* The corrector equation solved exactly for a right-hand side of the form
+ *     f(t, w, L) = (a(t) + p w + q w^2,  b(t) + w)
+ * (the roll's Riccati pair: p = -2, q = -1, a = g^2(t) - 1, b = 0). One residual R = F(ycor)
+ * at the initial guess, whose f carries a(t) and b(t); a correction d from there gives
+ *     F_w = R_w + B d_w + A d_w^2,   B = 1 - gamma (p + 2 q w),   A = -gamma q,
+ *     F_L = R_L + d_L - gamma d_w,
+ * so d_w is the root of the quadratic next to 0 (in the form without cancellation) and
+ * d_L = gamma d_w - R_L: the BDF step's own solution, where Newton would take two
+ * iterations and CVODE's convergence test to come within a tenth of the error estimate of
+ * it. No real root (a step far too long for the equation): a recoverable failure, CVODE
+ * retries with a shorter step. CVODE's convergence test is never called here, so CVODE
+ * forms the correction's norm for its error test itself (cvNls: acnrmcur stays false). */
+int rs_roll_corrector_quadratic(double gamma, double p, double q, double w, const double R[2],
+                                double d[2])
+{
+  const double A = -gamma * q, B = 1.0 - gamma * (p + 2.0 * q * w);
+  const double disc = B * B - 4.0 * A * R[0];
+  const double den = B + copysign(sqrt(disc), B);
+  if (!(disc >= 0.0) || !(den != 0.0) || !isfinite(den)) return 1;
+  d[0] = -2.0 * R[0] / den;
+  d[1] = gamma * d[0] - R[1];
+  return 0;
+}
+
+static int newton2_solve_exact(newton2 *c, const sunrealtype *yp, sunrealtype *yc,
+                               const sunrealtype *r, double gamma, void *mem, N_Vector ycor)
+{
+  c->curiter = 0;
+  int flag = c->sys(ycor, c->res, mem);
+  if (flag != SUN_NLS_SUCCESS) return flag;
+  double d[2];
+  if (rs_roll_corrector_quadratic(gamma, c->p, c->q, yp[0] + yc[0], r, d) != 0) {
+    c->nconvfails = 1;
+    return SUN_NLS_CONV_RECVR;
+  }
+  yc[0] += d[0];
+  yc[1] += d[1];
+  c->niters = 1;
   return SUN_NLS_SUCCESS;
 }
 
@@ -195,6 +238,7 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
     flag = c->lsetup(SUNFALSE, &jcur, mem);
     if (flag != SUN_NLS_SUCCESS) return flag;
   }
+  if (c->quadratic) return newton2_solve_exact(c, yp, yc, r, gamma, mem, ycor);
   for (c->curiter = 0;;) {
     flag = c->sys(ycor, c->res, mem);
     if (flag != SUN_NLS_SUCCESS) break; /* CVODE's code: < 0 fatal, > 0 recoverable */
@@ -378,6 +422,14 @@ int rs_roll_newton2_attach(SUNNonlinearSolver S)
       CVodeSetLinearSolver(c->cvode, c->setup_only, c->unused) != CV_SUCCESS)
     return -1;
   return CVodeSetLinSysFn(c->cvode, setup_only_system) == CV_SUCCESS ? 0 : -1;
+}
+
+void rs_roll_newton2_set_quadratic(SUNNonlinearSolver S, double p, double q)
+{
+  newton2 *c = NEWTON2(S);
+  c->quadratic = 1;
+  c->p = p;
+  c->q = q;
 }
 
 long rs_roll_newton2_jacobians(SUNNonlinearSolver S)

@@ -29,6 +29,16 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
  * takes two iterations where one does (measured: 2.1 right-hand sides a step against
  * 1.6). 0, or -1 if CVODE refuses. */
 int rs_roll_newton2_attach(SUNNonlinearSolver S);
+/* Declares the right-hand side to be f(t, w, L) = (a(t) + p w + q w^2, b(t) + w): the
+ * solver then solves each corrector equation exactly (a quadratic in w, one right-hand
+ * side a step) instead of by Newton's method, and forms no Jacobian. */
+void rs_roll_newton2_set_quadratic(SUNNonlinearSolver S, double p, double q);
+/* The corrector equation's exact solution for such a right-hand side: from the residual
+ * R = F(ycor) at the current correction, with w the state's first component there, the
+ * further correction d that makes F zero (the root next to 0). 0, or 1 if there is no
+ * real root (the step is too long for the equation). */
+int rs_roll_corrector_quadratic(double gamma, double p, double q, double w, const double R[2],
+                                double d[2]);
 /* Jacobians formed so far (one per Newton iteration) */
 long rs_roll_newton2_jacobians(SUNNonlinearSolver S);
 

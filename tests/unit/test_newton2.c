@@ -1,5 +1,6 @@
 /* The roll engine's 2-component CVODE machinery (src/roll/vector2.c) on its own: Newton
- * with the exact 2 x 2 Jacobian as CVODE's nonlinear solver, the straight-line vector
+ * with the exact 2 x 2 Jacobian as CVODE's nonlinear solver, the corrector solved exactly
+ * for a right-hand side quadratic in w (what the engine uses), the straight-line vector
  * operations, on the engine's Riccati pair with a constant g,
  * whose solution is closed form:
  *     w' = g^2 - 1 - 2w - w^2,  L' = w;   u = 1 + w:  u' = g^2 - u^2,
@@ -12,8 +13,10 @@
 #include "check.h"
 #include "roll/vector2.h"
 
+/* w' = g2 - 1 + p w + q w^2, L' = w: the engine's pair (p = -2, q = -1), or with q = +1
+ * the tangent, whose implicit steps can have no solution */
 typedef struct riccati {
-  double g2;
+  double g2, p, q;
 } riccati;
 
 static int rhs(sunrealtype x, N_Vector yv, N_Vector fv, void *user)
@@ -22,7 +25,7 @@ static int rhs(sunrealtype x, N_Vector yv, N_Vector fv, void *user)
   const riccati *p = user;
   const sunrealtype *y = N_VGetArrayPointer(yv);
   sunrealtype *f = N_VGetArrayPointer(fv);
-  f[0] = p->g2 - 1.0 - 2.0 * y[0] - y[0] * y[0];
+  f[0] = p->g2 - 1.0 + p->p * y[0] + p->q * y[0] * y[0];
   f[1] = y[0];
   return 0;
 }
@@ -30,8 +33,8 @@ static int rhs(sunrealtype x, N_Vector yv, N_Vector fv, void *user)
 static int jac2(double x, const double y[2], double J[2][2], void *user)
 {
   (void)x;
-  (void)user;
-  J[0][0] = -(2.0 + 2.0 * y[0]);
+  const riccati *p = user;
+  J[0][0] = p->p + 2.0 * p->q * y[0];
   J[0][1] = 0.0;
   J[1][0] = 1.0;
   J[1][1] = 0.0;
@@ -40,14 +43,17 @@ static int jac2(double x, const double y[2], double J[2][2], void *user)
 
 typedef struct run {
   double w, L;
-  long steps, nls_iters, jacobians, rhs, setups;
+  long steps, nls_iters, jacobians, rhs, setups, conv_fails;
 } run;
 
-/* integrates from x = 0 (w = w0, L = 0) to x1 the way the roll engine sets CVODE up */
-static run integrate_with(double g, double w0, double x1, double rtol, int setup_only)
+enum { NEWTON_ALONE = 0, NEWTON = 1, EXACT = 2 }; /* how the solver is set up */
+
+/* integrates from x = 0 (w = w0, L = 0) to x1 the way the roll engine sets CVODE up (mode
+ * EXACT), or with Newton's iterations (NEWTON; NEWTON_ALONE: no linear solver beside it);
+ * h0 > 0: the first step */
+static run integrate_eq(riccati p, double w0, double x1, double rtol, int mode, double h0)
 {
-  run out = {NAN, NAN, 0, 0, 0, 0, 0};
-  riccati p = {g * g};
+  run out = {NAN, NAN, 0, 0, 0, 0, 0, 0};
   SUNContext ctx = NULL;
   CHECK(SUNContext_Create(NULL, &ctx) == 0);
   N_Vector y = N_VNew_Serial(2, ctx);
@@ -59,10 +65,12 @@ static run integrate_with(double g, double w0, double x1, double rtol, int setup
   CHECK(CVodeSStolerances(cv, rtol, rtol * 1e-2) == CV_SUCCESS);
   CHECK(CVodeSetUserData(cv, &p) == CV_SUCCESS);
   SUNNonlinearSolver nls = rs_roll_newton2_create(ctx, y, cv, jac2, &p);
-  if (setup_only)
+  if (mode != NEWTON_ALONE)
     CHECK(nls && rs_roll_newton2_attach(nls) == 0);
   else /* the Newton solver alone, no linear solver beside it */
     CHECK(nls && CVodeSetNonlinearSolver(cv, nls) == CV_SUCCESS);
+  if (mode == EXACT) rs_roll_newton2_set_quadratic(nls, p.p, p.q);
+  if (h0 > 0.0) CHECK(CVodeSetInitStep(cv, h0) == CV_SUCCESS);
   CHECK(CVodeSetMaxNumSteps(cv, 100000) == CV_SUCCESS);
   sunrealtype t = 0.0;
   if (CVode(cv, x1, y, &t, CV_NORMAL) == CV_SUCCESS) {
@@ -72,8 +80,9 @@ static run integrate_with(double g, double w0, double x1, double rtol, int setup
   CVodeGetNumSteps(cv, &out.steps);
   CVodeGetNumNonlinSolvIters(cv, &out.nls_iters);
   CVodeGetNumRhsEvals(cv, &out.rhs);
+  CVodeGetNumNonlinSolvConvFails(cv, &out.conv_fails);
   out.jacobians = rs_roll_newton2_jacobians(nls);
-  if (setup_only) CVodeGetNumLinSolvSetups(cv, &out.setups);
+  if (mode != NEWTON_ALONE) CVodeGetNumLinSolvSetups(cv, &out.setups);
   CVodeFree(&cv);
   SUNNonlinSolFree(nls);
   N_VDestroy(y);
@@ -81,26 +90,122 @@ static run integrate_with(double g, double w0, double x1, double rtol, int setup
   return out;
 }
 
+static run integrate_with(double g, double w0, double x1, double rtol, int mode, double h0)
+{
+  return integrate_eq((riccati){g * g, -2.0, -1.0}, w0, x1, rtol, mode, h0);
+}
+
 static run integrate(double g, double w0, double x1, double rtol)
 {
-  return integrate_with(g, w0, x1, rtol, 1);
+  return integrate_with(g, w0, x1, rtol, NEWTON, 0.0);
 }
 
 /* (w, L) at x1 from w(0) = w0, L(0) = 0 at tolerance rtol against the closed form, to tol */
-static void check_closed_form(double g, double w0, double x1, double rtol, double tol)
+static void check_closed_form(double g, double w0, double x1, double rtol, double tol, int mode)
 {
   const double c = atanh((1.0 + w0) / g);
-  run r = integrate(g, w0, x1, rtol);
+  run r = integrate_with(g, w0, x1, rtol, mode, 0.0);
   CHECK_CLOSE(r.w, g * tanh(g * x1 + c) - 1.0, tol);
   CHECK_CLOSE(r.L, log(cosh(g * x1 + c) / cosh(c)) - x1, tol);
 }
 
 /* a mild case: w relaxes from 0 to g - 1 = 4 */
-static void riccati_g5(void) { check_closed_form(5.0, 0.0, 1.0, 1e-10, 1e-8); }
+static void riccati_g5(void) { check_closed_form(5.0, 0.0, 1.0, 1e-10, 1e-8, NEWTON); }
 
 /* stiff: g = 700 (the engine's hard case), w from 0 to 699 over a boundary layer of
  * width 1/(2g) in x, then constant */
-static void riccati_g700(void) { check_closed_form(700.0, 0.0, 0.05, 1e-9, 1e-7); }
+static void riccati_g700(void) { check_closed_form(700.0, 0.0, 0.05, 1e-9, 1e-7, NEWTON); }
+
+/* The exact corrector on the same two cases, and at a loose tolerance, where a wrong root
+ * or an error test fed a stale norm would show (CVODE forms the correction's norm itself
+ * when its convergence test is not called) */
+static void exact_riccati_g5(void)
+{
+  check_closed_form(5.0, 0.0, 1.0, 1e-10, 1e-8, EXACT);
+  check_closed_form(5.0, 0.0, 1.0, 1e-5, 1e-3, EXACT);
+}
+static void exact_riccati_g700(void)
+{
+  check_closed_form(700.0, 0.0, 0.05, 1e-9, 1e-7, EXACT);
+  check_closed_form(700.0, 0.0, 0.05, 1e-5, 1e-3, EXACT);
+}
+
+/* Exact: one right-hand side per solve (CVODE counts one iteration per solve), no Jacobian;
+ * the results those of Newton's iterations to within the tolerance (Newton stops within a
+ * tenth of the error estimate of the exact root) */
+static void exact_one_rhs_per_step(void)
+{
+  run e = integrate_with(700.0, 0.0, 0.05, 1e-8, EXACT, 0.0);
+  run n = integrate_with(700.0, 0.0, 0.05, 1e-8, NEWTON, 0.0);
+  CHECK_LOG("steps, exact", e.steps);
+  CHECK_LOG("steps, Newton", n.steps);
+  CHECK_LOG("rhs per step, exact", (double)e.rhs / e.steps);
+  CHECK_LOG("rhs per step, Newton", (double)n.rhs / n.steps);
+  CHECK(e.steps > 10);
+  CHECK(e.jacobians == 0);
+  CHECK(e.nls_iters >= e.steps && e.nls_iters <= e.steps + e.conv_fails + 20);
+  CHECK_LT((double)e.rhs / e.steps, 1.35);
+  CHECK_LT((double)e.rhs / e.steps, (double)n.rhs / n.steps);
+  CHECK_CLOSE(e.w, n.w, 1e-6);
+  CHECK_CLOSE(e.L, n.L, 1e-6);
+}
+
+/* The corrector's root against the residual formed from its definition: for random gamma,
+ * predictor, history term c and (p, q) of both signs, F(d) = d + c - gamma f(ypred + d)
+ * with f = (a + p w + q w^2, b + w) is zero at the correction returned, to rounding of the
+ * terms; where the quadratic has no real root it says so (and that happens) */
+static void corrector_solves_residual(void)
+{
+  unsigned long long s = 12345;
+  int solved = 0, refused = 0;
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    double u[8];
+    for (int k = 0; k < 8; ++k) { /* xorshift: uniform in [0, 1) */
+      s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+      u[k] = (double)(s >> 11) / 9007199254740992.0;
+    }
+    const double gamma = pow(10.0, -4.0 + 4.0 * u[0]), p = -4.0 + 8.0 * u[1];
+    const double q = u[2] < 0.5 ? -1.0 : 0.5, a = pow(10.0, 6.0 * u[3]), b = u[4] - 0.5;
+    const double yp[2] = {-1.0 + 100.0 * u[5], 10.0 * u[6]}, c[2] = {50.0 * (u[7] - 0.5), 1.0};
+    /* F at d = 0, then at the root */
+    double f0 = a + p * yp[0] + q * yp[0] * yp[0], f1 = b + yp[0];
+    const double R[2] = {c[0] - gamma * f0, c[1] - gamma * f1};
+    double d[2];
+    if (rs_roll_corrector_quadratic(gamma, p, q, yp[0], R, d) != 0) {
+      ++refused;
+      continue;
+    }
+    ++solved;
+    const double w = yp[0] + d[0];
+    f0 = a + p * w + q * w * w;
+    f1 = b + w;
+    const double F0 = d[0] + c[0] - gamma * f0, F1 = d[1] + c[1] - gamma * f1;
+    /* rounding scale: the largest term each residual sums */
+    const double s0 = fabs(d[0]) + fabs(c[0]) + gamma * (fabs(a) + fabs(p * w) + fabs(q * w * w));
+    const double s1 = fabs(d[1]) + fabs(c[1]) + gamma * (fabs(b) + fabs(w));
+    worst = fmax(worst, fmax(fabs(F0) / s0, fabs(F1) / s1));
+  }
+  CHECK_LOG("roots found", solved);
+  CHECK_LOG("no real root", refused);
+  CHECK_LOG("worst residual / its terms", worst);
+  CHECK(solved > 10000 && refused > 0);
+  CHECK_LT(worst, 1e-13);
+}
+
+/* w' = 1 + w^2 from w(0) = 0: w = tan x, L = -ln cos x. A first step of 0.6: backward
+ * Euler's w1 = h (1 + w1^2) has no real root for h > 1/2, so the solver reports a
+ * recoverable failure, CVODE shortens the step, and the integration meets the closed form
+ * (also the exact corrector with q = +1, the other sign) */
+static void exact_no_root_recovers(void)
+{
+  const double x1 = 1.2;
+  run r = integrate_eq((riccati){2.0, 0.0, 1.0}, 0.0, x1, 1e-9, EXACT, 0.6);
+  CHECK_LOG("corrector failures", r.conv_fails);
+  CHECK(r.conv_fails > 0);
+  CHECK_CLOSE(r.w, tan(x1), 1e-6);
+  CHECK_CLOSE(r.L, -log(cos(x1)), 1e-6);
+}
 
 /* The counters CVODE reads from the solver are per solve (CVODE adds them up: a
  * cumulative count made its total grow quadratically), one exact Jacobian per Newton
@@ -130,7 +235,8 @@ static void one_jacobian_per_iteration(void)
 static void setup_only_honoured(void)
 {
   const double g = 700.0, x1 = 0.5, rtol = 1e-8, c = atanh(1.0 / g);
-  run with = integrate_with(g, 0.0, x1, rtol, 1), without = integrate_with(g, 0.0, x1, rtol, 0);
+  run with = integrate_with(g, 0.0, x1, rtol, NEWTON, 0.0);
+  run without = integrate_with(g, 0.0, x1, rtol, NEWTON_ALONE, 0.0);
   CHECK_LOG("steps, setup-only solver attached", with.steps);
   CHECK_LOG("setups CVODE asked for", with.setups);
   CHECK_LOG("rhs per step, attached", (double)with.rhs / with.steps);
@@ -146,6 +252,11 @@ static const check_case cases[] = {
     {"riccati_g700", riccati_g700},
     {"one_jacobian_per_iteration", one_jacobian_per_iteration},
     {"setup_only_honoured", setup_only_honoured},
+    {"corrector_solves_residual", corrector_solves_residual},
+    {"exact_riccati_g5", exact_riccati_g5},
+    {"exact_riccati_g700", exact_riccati_g700},
+    {"exact_one_rhs_per_step", exact_one_rhs_per_step},
+    {"exact_no_root_recovers", exact_no_root_recovers},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
