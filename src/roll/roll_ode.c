@@ -7,11 +7,28 @@
 
 #include "roll/roll_internal.h"
 
+/* ln g^2 at node j, formed when first needed in an epoch. A neighbour's value is usually
+ * there already (an interval needs nodes j-1..j+2, and the steps move up the roll): then
+ *     ln g_j^2 = ln g_k^2 + ln(E_k / E_j) = ln g_k^2 + 2 atanh(z),  z = (E_k - E_j)/(E_k + E_j),
+ * by the series to z^9 (relative error below z^10 / 11 < 1e-19 for |z| < 0.015, a 3 %
+ * change of the modulus between layers): five multiply-adds and a division where log()
+ * costs ~20 ns; log() otherwise. */
 static inline double roll_lg2(rs_roll *roll, int j)
 {
   if (roll->lg2_epoch[j] != roll->epoch) {
-    roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
-    roll->lg2_epoch[j] = roll->epoch;
+    const unsigned long long ep = roll->epoch;
+    const int k = j > 0 && roll->lg2_epoch[j - 1] == ep ? j - 1
+                  : j + 1 < roll->nodes_in_use && roll->lg2_epoch[j + 1] == ep ? j + 1
+                                                                              : -1;
+    const double z = k >= 0 ? (roll->Er[k] - roll->Er[j]) / (roll->Er[k] + roll->Er[j]) : 1.0;
+    if (fabs(z) < 0.015) {
+      const double z2 = z * z;
+      roll->lg2[j] = roll->lg2[k] +
+                     2.0 * z * (1.0 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 * (1.0 / 9)))));
+    } else {
+      roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
+    }
+    roll->lg2_epoch[j] = ep;
   }
   return roll->lg2[j];
 }
