@@ -3,6 +3,7 @@
  * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
  * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "roll/roll_internal.h"
@@ -146,8 +147,8 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
     const double *restrict E = roll->Er;
-    int bad = 0;
-    for (int j = lo; j < hi; ++j) bad |= !(E[j] > 0.0) | !(E[j] < INFINITY);
+    int64_t bad = 0; /* a double's width: the OR stays in the vector registers */
+    for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
     for (int j = lo; bad && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return RS_ERROR(RS_ERR_SOLVER,
