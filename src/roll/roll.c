@@ -231,6 +231,8 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
   if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
     st = roll_commit_frozen(roll, m, T0, total);
+  } else if (m == 1) { /* roll_block_increment and roll_commit, fused where it can */
+    st = roll_add_one(roll, T0[0]);
   } else {
     const int correct = m > 1;
     roll_block_increment(roll, k_old, m, T0, correct ? roll->P_mean : NULL);

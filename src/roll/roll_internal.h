@@ -5,6 +5,7 @@
  *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
  *                     interpolation inside each step; the reuse of the deep solution)
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
+ *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
  *   roll_air.c        entrained air: the film under each layer in series with the stack
@@ -122,10 +123,20 @@ void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, in
 rs_status roll_integrate(rs_roll *roll, int k);
 
 /* roll_increment.c */
+typedef struct roll_segments {
+  int count;            /* 4, or 0: the products are final (a short range) */
+  int b[5];             /* segment g is the nodes [b[g], b[g + 1]) */
+  double s[4];          /* its scale: the product of the segments above it */
+  double M[4];          /* its largest unscaled product */
+} roll_segments;
+void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
 void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+/* roll_layer.c */
+rs_status roll_add_one(rs_roll *roll, double T0);
 
 #endif
