@@ -134,16 +134,17 @@ static int roll_reuse_start(rs_roll *roll)
     }
     return lo >= 1 ? lo : -1;
   }
-  /* from F up: every node's drift (a vectorised pass), then the running maxima a block at a
-   * time, E only at each block's end, and node by node inside the block where it first
+  /* from F up, a block at a time: the block's drifts (a vectorised pass), then their running
+   * maxima, E only at each block's end, and node by node inside the block where it first
    * exceeds tol: the answer of a bisection over the prefix maxima (E grows with s0), without
-   * a chain of dependent max operations through every node */
+   * a chain of dependent max operations through every node. The start is usually a block or
+   * two above F: the drifts of the nodes above it are not formed */
   double *restrict eps = roll->scan_eps;
-  for (int j = F; j <= top; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
   double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
   lo = F - 1;
   for (int b0 = F; b0 <= top; b0 += RS_SCAN_BLOCK) {
     const int b1 = b0 + RS_SCAN_BLOCK - 1 < top ? b0 + RS_SCAN_BLOCK - 1 : top;
+    for (int j = b0; j <= b1; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
     double e4[4] = {me, me, me, me}, l4[4] = {ml, ml, ml, ml};
     int j = b0;
     for (; j + 3 <= b1; j += 4)
