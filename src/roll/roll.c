@@ -223,8 +223,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  roll_gather_pressure(roll, top, NULL);
-  rs_status st = roll_set_modulus(roll, top);
+  rs_status st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
   if (st) return st;
 

@@ -114,6 +114,7 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
 void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
+rs_status roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_air.c */

@@ -168,6 +168,38 @@ rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
   return roll_modulus_range(roll, lo, hi);
 }
 
+/* roll_gather_pressure (nothing added) and roll_set_modulus in one pass over the nodes
+ * (rs_radial_modulus_stress_n: P_node and E_r from the stresses, checked as it goes): the
+ * predictor's modulus, at the pressures before the increment */
+rs_status roll_set_modulus_stress(rs_roll *roll, int k)
+{
+  const rs_radial_law *law = &roll->p.radial;
+  double *restrict P = roll->P_node, *restrict E = roll->Er;
+  const int n = roll->n < k ? roll->n : k, F = roll->lazy_top;
+  int bad = -1;
+  if (F == 0) bad = rs_radial_modulus_stress_n(law, &roll->core_sigma, P, E, 1);
+  const int j1 = F > 1 ? F : 1, j2 = n + 1 > F ? n + 1 : F;
+  if (bad < 0 && j1 <= n) {
+    const int b = rs_radial_modulus_stress_n(law, roll->sigma_r + j1 - 1, P + j1, E + j1, n + 1 - j1);
+    if (b >= 0) bad = j1 + b;
+  }
+  if (bad < 0 && j2 <= k) { /* the layers being wound carry none yet */
+    for (int j = j2; j <= k; ++j) P[j] = 0.0;
+    rs_radial_modulus_n(law, P + j2, E + j2, k + 1 - j2);
+    for (int j = j2; bad < 0 && j <= k; ++j)
+      if (!(E[j] > 0.0 && E[j] < INFINITY)) bad = j;
+  }
+  if (bad >= 0)
+    return RS_ERROR(RS_ERR_SOLVER,
+                    "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
+                    "positive: the radial law is outside its range",
+                    E[bad], roll->p.core_radius + bad * roll->p.caliper, P[bad]);
+  if (roll->p.air_film && F <= k) roll_air_series(roll, P, E, F, k + 1);
+  roll->epoch++;
+  roll->nodes_in_use = k + 1;
+  return RS_OK;
+}
+
 /* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees
  * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
 rs_status roll_set_modulus(rs_roll *roll, int k)
