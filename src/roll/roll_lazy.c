@@ -44,6 +44,22 @@ void roll_lazy_flush(rs_roll *roll, int from)
   if (from == 0) roll->lazy_c = 0.0;
 }
 
+/* each node's a_j and b_j (the drift bound's, before the prefix maxima) from its modulus E,
+ * the reference's Eref, and Ep at the pressure Pp a little above P: a loop over arrays
+ * passed as such, that vectorises (two divisions a node) */
+static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P,
+                             const double *restrict Pp, const double *restrict E,
+                             const double *restrict Ep, const double *restrict Eref,
+                             const double *restrict e, double *restrict la, double *restrict lb)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double kappa = fabs(Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])); /* d ln E / dP to 1e-3 */
+    const double b = kappa * e[j], bb = b == b ? b : INFINITY; /* a NaN slope bounds nothing */
+    lb[j] = bb;
+    la[j] = fabs(E[j] - Eref[j]) / Eref[j] - aC * bb;
+  }
+}
+
 /* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
  * current, and the reference's shape covers them. Uses dsr and dsh as scratch (free
  * between an integration's start and its increment). */
@@ -68,12 +84,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
    * the three running maxima side by side */
   double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
   const double *restrict P = roll->P_node, *restrict L = roll->L;
-  for (int j = F; j < to; ++j) {
-    const double kappa = fabs(Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])); /* d ln E / dP to 1e-3 */
-    const double b = kappa * e[j];
-    lb[j] = b == b ? b : INFINITY; /* a NaN slope bounds nothing */
-    la[j] = fabs(E[j] - Eref[j]) / Eref[j] - aC * lb[j];
-  }
+  roll_lazy_bounds(F, to, aC, P, Pp, E, Ep, Eref, e, la, lb);
   double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
   double pl = F > 0 ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
   for (int j = F; j < to; ++j) {
