@@ -50,18 +50,28 @@ static void roll_quintic_make(const roll_jet *a, const roll_jet *b, roll_quintic
   roll_quintic_coef(a->L, h * a->w, hh * a->dw, b->L, h * b->w, hh * b->dw, q->cL);
 }
 
-/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises) */
+/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises);
+ * with correct, L less the accumulated error's correction C0 + (x - a) slope
+ * (roll_correction), in the same pass */
 static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
-                              double *restrict L, int n)
+                              double *restrict L, int n, int correct, double C0, double slope)
 {
   const double a = q->a, inv_h = q->inv_h;
   const double w0 = q->cw[0], w1 = q->cw[1], w2 = q->cw[2], w3 = q->cw[3], w4 = q->cw[4], w5 = q->cw[5];
   const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
-  for (int i = 0; i < n; ++i) {
-    const double s = (x[i] - a) * inv_h;
-    w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
-    L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-  }
+  if (correct)
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+      L[i] = Lq - (C0 + (x[i] - a) * slope);
+    }
+  else
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+      L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+    }
 }
 
 /* The first step: BDF starts at order 1 (backward Euler), local error h^2 |w''| / 2, so
@@ -300,12 +310,9 @@ rs_status roll_integrate(rs_roll *roll, int k)
       if (last > k) last = k;
       while (last > next && xn[last] > tret) --last;
       while (last < k && xn[last + 1] <= tret) ++last;
-      roll_quintic_fill(&q, xn + next, roll->w + next, roll->L + next, last - next + 1);
-      if (correct) {
-        const double xa = prev.x, slope = (corr.C - C0) / (tret - xa);
-        double *restrict Lc = roll->L;
-        for (int j = next; j <= last; ++j) Lc[j] -= C0 + (xn[j] - xa) * slope;
-      }
+      const double slope = correct ? (corr.C - C0) / (tret - prev.x) : 0.0;
+      roll_quintic_fill(&q, xn + next, roll->w + next, roll->L + next, last - next + 1, correct,
+                        C0, slope);
       next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;
