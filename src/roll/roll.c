@@ -65,6 +65,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->lg2);
   free(roll->lg2_epoch);
   free(roll->w);
+  free(roll->wstep);
   free(roll->L);
   free(roll->xnode);
   free(roll->block_share);
@@ -220,6 +221,8 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   const int top = k - roll->shift; /* the highest node the increment loads */
   /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
   roll->lazy_ok = m == 1 && roll->lazy_allowed;
+  /* a block, or Hakiel's hoop stresses, read w at every node: w stored node by node */
+  roll->w_lazy = m == 1 && roll->shift;
   if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */

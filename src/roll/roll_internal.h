@@ -21,6 +21,13 @@
 
 enum { RS_CVODE_MSG_LEN = 512 };
 
+/* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
+ * [lo, hi]: w there is evaluated when read */
+typedef struct roll_wstep {
+  double a, inv_h, c[6];
+  int lo, hi;
+} roll_wstep;
+
 struct rs_roll {
   rs_roll_params p;
   double kc;            /* core condition r y'/y at r_c */
@@ -45,6 +52,13 @@ struct rs_roll {
   unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
   double *w, *L;        /* (w, ln y) at the nodes */
+  /* With one layer wound and its load beneath it only a start node reads w: the last
+   * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
+   * an integration evaluates the nodes at and below its start before it overwrites the
+   * rest (roll_integrate.c) */
+  roll_wstep *wstep;
+  int wstep_n, wstep_cap;
+  int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
   double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
   double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
