@@ -39,6 +39,12 @@ double rs_radial_modulus(const rs_radial_law *law, double P);
 /* The same at n pressures: E[i] = E_r(P[i]) (one dispatch on the law for the whole array,
  * so that the loops vectorise; the roll engine evaluates every layer at every increment). */
 void rs_radial_modulus_n(const rs_radial_law *law, const double *P, double *E, int n);
+/* The same at the pressures of n radial stresses sigma (Pa, compression negative), with the
+ * check a stack needs: P[i] = -sigma[i], E[i] = E_r(P[i]), in one pass over the arrays for
+ * the linear, Pfeiffer and quadratic laws. Returns the first i whose E[i] is not positive
+ * and finite (the law outside its range), or -1 when all are. */
+int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *sigma, double *P, double *E,
+                               int n);
 
 /* A Prony series of the web's relaxation (storage creep, docs/storage.md): term i relaxes
  * the fraction w_i of a modulus with relaxation time tau_i,

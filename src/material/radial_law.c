@@ -1,6 +1,7 @@
 /* Radial (stack) modulus laws E_r(P): the tangent modulus of the wound stack in the
  * radial direction at interlayer pressure P (Pa, compression positive). */
 #include <math.h>
+#include <stdint.h>
 
 #include "util/bracket.h"
 
@@ -130,6 +131,39 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
     for (int i = 0; i < n; ++i) E[i] = rs_radial_modulus(law, P[i]);
     return;
   }
+}
+
+/* rs_radial_modulus_n at P = -sigma, checked. The check's flag is as wide as a double's
+ * compare mask, so that it stays in the vector registers; the loops are the same
+ * operations as rs_radial_modulus_n's, so the same moduli bit for bit. */
+int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict sigma,
+                               double *restrict P, double *restrict E, int n)
+{
+  int64_t bad = 0;
+  if (law->law == RS_RADIAL_PFEIFFER) {
+    const double K1 = law->K1, K2 = law->K2;
+    for (int i = 0; i < n; ++i) {
+      const double p = -sigma[i], v = pfeiffer_modulus(K1, K2, p);
+      P[i] = p;
+      E[i] = v;
+      bad |= (int64_t)!(v > 0.0) | (int64_t)!(v < INFINITY);
+    }
+  } else if (law->law == RS_RADIAL_HAKIEL && law->n_coef == 3) {
+    const double c0 = law->C[0], c1 = law->C[1], c2 = law->C[2];
+    for (int i = 0; i < n; ++i) {
+      const double p = -sigma[i], q = p > 0.0 ? p : 0.0, v = c0 + q * (c1 + q * c2);
+      P[i] = p;
+      E[i] = v;
+      bad |= (int64_t)!(v > 0.0) | (int64_t)!(v < INFINITY);
+    }
+  } else {
+    for (int i = 0; i < n; ++i) P[i] = -sigma[i];
+    rs_radial_modulus_n(law, P, E, n);
+    for (int i = 0; i < n; ++i) bad |= (int64_t)!(E[i] > 0.0) | (int64_t)!(E[i] < INFINITY);
+  }
+  for (int i = 0; bad && i < n; ++i)
+    if (!(E[i] > 0.0 && E[i] < INFINITY)) return i;
+  return -1;
 }
 
 /* E_r(P), Pa:

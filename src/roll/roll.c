@@ -65,6 +65,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->lg2);
   free(roll->lg2_epoch);
   free(roll->w);
+  free(roll->wstep);
   free(roll->L);
   free(roll->xnode);
   free(roll->block_share);
@@ -222,17 +223,20 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   const int top = k - roll->shift; /* the highest node the increment loads */
   /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
   roll->lazy_ok = m == 1 && roll->lazy_allowed;
+  /* a block, or Hakiel's hoop stresses, read w at every node: w stored node by node */
+  roll->w_lazy = m == 1 && roll->shift;
   if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  roll_gather_pressure(roll, top, NULL);
-  rs_status st = roll_set_modulus(roll, top);
+  rs_status st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
   if (st) return st;
 
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
   if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
     st = roll_commit_frozen(roll, m, T0, total);
+  } else if (m == 1) { /* roll_block_increment and roll_commit, fused where it can */
+    st = roll_add_one(roll, T0[0]);
   } else {
     const int correct = m > 1;
     roll_block_increment(roll, k_old, m, T0, correct ? roll->P_mean : NULL);

@@ -2,6 +2,7 @@
  * one-layer decays down the roll, and its commit to the roll's stresses (both lumping
  * schemes, both load placements; docs/roll-model.md). */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "roll/roll_internal.h"
@@ -29,17 +30,23 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * plain loop that vectorises, exp() where a decay is large). A running product is a chain
  * of dependent multiplications (its latency, not its flops, set the time: a sixth of a
  * 100,000-layer film's run), so a long range is cut into four segments whose products run
- * side by side, each then scaled by the product of the segments above it. Below 1e-290 the
- * product is 0: no subnormals. */
-static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
+ * side by side, each then to be scaled by the product of the segments above it: left in e
+ * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
+ * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
+ * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
+void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
+                     roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
-   * increasing there, and far below 1 or negative for d < -0.03): exp() there */
-  int bad = 0;
+   * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
+   * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
+   * operations, not five) and the pass that follows at the sums, as it always did. The flag
+   * is a compare mask as wide as a double, so that the OR stays in the vector registers */
+  int64_t bad = 0;
   for (int j = lo; j < top; ++j) {
-    const double v = roll_exp_small(L[j] - L[j + 1]);
-    bad |= (v <= 0.9705) | (v >= 1.0304);
-    e[j] = v;
+    const double d = L[j] - L[j + 1];
+    bad |= -(int64_t)(fabs(d) >= 0.0299);
+    e[j] = roll_exp_small(d);
   }
   if (bad)
     for (int j = lo; j < top; ++j)
@@ -51,14 +58,18 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
       p = p > 1e-290 ? p * e[j] : 0.0;
       e[j] = p;
     }
+    seg->count = 0;
     return;
   }
   /* segments [b0, b1), [b1, b2), [b2, b3), [b3, top): the top one takes the remainder. The
-   * chains test for underflow every 64 factors only (off the chain's critical path) */
+   * chains test for underflow every 64 factors only (off the chain's critical path); the
+   * largest product of each (a NaN is not one: it ends as 0) bounds the increment there */
   const int q = n / 4, b0 = lo, b1 = lo + q, b2 = lo + 2 * q, b3 = lo + 3 * q;
   double p0 = 1.0, p1 = 1.0, p2 = 1.0, p3 = 1.0;
+  double M0 = 0.0, M1 = 0.0, M2 = 0.0, M3 = 0.0;
   for (int j = top - 1; j >= b3 + q; --j) {
     p3 = p3 > 1e-290 ? p3 * e[j] : 0.0;
+    M3 = p3 > M3 ? p3 : M3;
     e[j] = p3;
   }
   for (int i = q - 1; i >= 0; --i) {
@@ -70,6 +81,10 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
     e[b1 + i] = p1;
     e[b2 + i] = p2;
     e[b3 + i] = p3;
+    M0 = p0 > M0 ? p0 : M0;
+    M1 = p1 > M1 ? p1 : M1;
+    M2 = p2 > M2 ? p2 : M2;
+    M3 = p3 > M3 ? p3 : M3;
     if ((i & 63) == 0) {
       p0 = p0 > 1e-290 ? p0 : 0.0;
       p1 = p1 > 1e-290 ? p1 : 0.0;
@@ -77,13 +92,18 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
       p3 = p3 > 1e-290 ? p3 : 0.0;
     }
   }
-  /* scale each segment by the product of those above it (e[b3] = p3, ...), and clear what
-   * fell below 1e-290 */
-  const double s2 = p3, s1 = s2 * p2, s0 = s1 * p1;
-  roll_scale_clear(e, b3, top, 1.0);
-  roll_scale_clear(e, b2, b3, s2);
-  roll_scale_clear(e, b1, b2, s1);
-  roll_scale_clear(e, b0, b1, s0);
+  /* each segment is scaled by the product of those above it (e[b3] = p3, ...) */
+  *seg = (roll_segments){4, {b0, b1, b2, b3, top}, {0.0, 0.0, p3, 1.0}, {M0, M1, M2, M3}};
+  seg->s[1] = seg->s[2] * p2;
+  seg->s[0] = seg->s[1] * p1;
+}
+
+/* roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared */
+static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
+{
+  roll_segments seg;
+  roll_decays_raw(L, e, lo, top, &seg);
+  for (int g = seg.count - 1; g >= 0; --g) roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).

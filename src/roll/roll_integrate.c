@@ -2,6 +2,7 @@
  * nodes inside each step filled by quintic Hermite interpolation, and the reuse of the deep
  * solution of an earlier integration from the core (docs/roll-model.md). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "roll/roll_internal.h"
@@ -50,18 +51,83 @@ static void roll_quintic_make(const roll_jet *a, const roll_jet *b, roll_quintic
   roll_quintic_coef(a->L, h * a->w, hh * a->dw, b->L, h * b->w, hh * b->dw, q->cL);
 }
 
-/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises) */
+/* w at the n nodes x[0..n) inside the step of quintic c (a plain loop: it vectorises) */
+static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const double *restrict x,
+                                double *restrict w, int n)
+{
+  const double w0 = c[0], w1 = c[1], w2 = c[2], w3 = c[3], w4 = c[4], w5 = c[5];
+  for (int i = 0; i < n; ++i) {
+    const double s = (x[i] - a) * inv_h;
+    w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+  }
+}
+
+/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises);
+ * with correct, L less the accumulated error's correction C0 + (x - a) slope
+ * (roll_correction), in the same pass. With w NULL, L alone (w kept as the step's quintic:
+ * roll_wstep_keep). */
 static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
-                              double *restrict L, int n)
+                              double *restrict L, int n, int correct, double C0, double slope)
 {
   const double a = q->a, inv_h = q->inv_h;
   const double w0 = q->cw[0], w1 = q->cw[1], w2 = q->cw[2], w3 = q->cw[3], w4 = q->cw[4], w5 = q->cw[5];
   const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
-  for (int i = 0; i < n; ++i) {
-    const double s = (x[i] - a) * inv_h;
-    w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
-    L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+  if (!w && correct)
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+      L[i] = Lq - (C0 + (x[i] - a) * slope);
+    }
+  else if (!w)
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+    }
+  else if (correct)
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+      L[i] = Lq - (C0 + (x[i] - a) * slope);
+    }
+  else
+    for (int i = 0; i < n; ++i) {
+      const double s = (x[i] - a) * inv_h;
+      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
+      L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+    }
+}
+
+/* Keeps the step's quintic of w for its nodes [lo, hi] (roll->wstep); 0 when it cannot
+ * (out of memory: then the caller stores w node by node) */
+static int roll_wstep_keep(rs_roll *roll, const roll_quintic *q, int lo, int hi)
+{
+  if (roll->wstep_n == roll->wstep_cap) {
+    const int cap = 2 * roll->wstep_cap + 64;
+    roll_wstep *s = realloc(roll->wstep, (size_t)cap * sizeof *s);
+    if (!s) return 0;
+    roll->wstep = s;
+    roll->wstep_cap = cap;
   }
+  roll_wstep *s = &roll->wstep[roll->wstep_n++];
+  s->a = q->a;
+  s->inv_h = q->inv_h;
+  memcpy(s->c, q->cw, sizeof s->c);
+  s->lo = lo;
+  s->hi = hi;
+  return 1;
+}
+
+/* w stored at the kept steps' nodes up to node hi (those above are about to be overwritten),
+ * by the same operations as the fill: the steps are then dropped */
+static void roll_wstep_store(rs_roll *roll, int hi)
+{
+  for (int i = 0; i < roll->wstep_n && roll->wstep[i].lo <= hi; ++i) {
+    const roll_wstep *s = &roll->wstep[i];
+    const int b = s->hi < hi ? s->hi : hi;
+    roll_quintic_fill_w(s->a, s->inv_h, s->c, roll->xnode + s->lo, roll->w + s->lo, b - s->lo + 1);
+  }
+  roll->wstep_n = 0;
 }
 
 /* The first step: BDF starts at order 1 (backward Euler), local error h^2 |w''| / 2, so
@@ -134,16 +200,17 @@ static int roll_reuse_start(rs_roll *roll)
     }
     return lo >= 1 ? lo : -1;
   }
-  /* from F up: every node's drift (a vectorised pass), then the running maxima a block at a
-   * time, E only at each block's end, and node by node inside the block where it first
+  /* from F up, a block at a time: the block's drifts (a vectorised pass), then their running
+   * maxima, E only at each block's end, and node by node inside the block where it first
    * exceeds tol: the answer of a bisection over the prefix maxima (E grows with s0), without
-   * a chain of dependent max operations through every node */
+   * a chain of dependent max operations through every node. The start is usually a block or
+   * two above F: the drifts of the nodes above it are not formed */
   double *restrict eps = roll->scan_eps;
-  for (int j = F; j <= top; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
   double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
   lo = F - 1;
   for (int b0 = F; b0 <= top; b0 += RS_SCAN_BLOCK) {
     const int b1 = b0 + RS_SCAN_BLOCK - 1 < top ? b0 + RS_SCAN_BLOCK - 1 : top;
+    for (int j = b0; j <= b1; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
     double e4[4] = {me, me, me, me}, l4[4] = {ml, ml, ml, ml};
     int j = b0;
     for (; j + 3 <= b1; j += 4)
@@ -216,6 +283,7 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, double w, do
 rs_status roll_integrate(rs_roll *roll, int k)
 {
   if (k == 0) { /* the first layer's load on the core: nothing to integrate */
+    roll->wstep_n = 0;
     roll->w[0] = roll->kc;
     roll->L[0] = 0.0;
     roll->start = 0;
@@ -238,6 +306,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->w[0] = roll->kc;
     roll->L[0] = 0.0;
   }
+  roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
   /* from the core (0, kc); else the reference's values, whose L carries the reference's
    * origin: every L difference the increment is built from stays consistent */
   y[0] = roll->w[first];
@@ -299,12 +368,11 @@ rs_status roll_integrate(rs_roll *roll, int k)
       if (last > k) last = k;
       while (last > next && xn[last] > tret) --last;
       while (last < k && xn[last + 1] <= tret) ++last;
-      roll_quintic_fill(&q, xn + next, roll->w + next, roll->L + next, last - next + 1);
-      if (correct) {
-        const double xa = prev.x, slope = (corr.C - C0) / (tret - xa);
-        double *restrict Lc = roll->L;
-        for (int j = next; j <= last; ++j) Lc[j] -= C0 + (xn[j] - xa) * slope;
-      }
+      const double slope = correct ? (corr.C - C0) / (tret - prev.x) : 0.0;
+      /* w kept as the step's quintic where only a start node will read it (node k: exact) */
+      const int keep = roll->w_lazy && roll_wstep_keep(roll, &q, next, last < k ? last : k - 1);
+      roll_quintic_fill(&q, xn + next, keep ? NULL : roll->w + next, roll->L + next,
+                        last - next + 1, correct, C0, slope);
       next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;

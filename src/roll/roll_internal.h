@@ -5,6 +5,7 @@
  *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
  *                     interpolation inside each step; the reuse of the deep solution)
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
+ *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
  *   roll_air.c        entrained air: the film under each layer in series with the stack
@@ -19,6 +20,13 @@
 #include "reelsim/roll.h"
 
 enum { RS_CVODE_MSG_LEN = 512 };
+
+/* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
+ * [lo, hi]: w there is evaluated when read */
+typedef struct roll_wstep {
+  double a, inv_h, c[6];
+  int lo, hi;
+} roll_wstep;
 
 struct rs_roll {
   rs_roll_params p;
@@ -44,6 +52,13 @@ struct rs_roll {
   unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
   double *w, *L;        /* (w, ln y) at the nodes */
+  /* With one layer wound and its load beneath it only a start node reads w: the last
+   * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
+   * an integration evaluates the nodes at and below its start before it overwrites the
+   * rest (roll_integrate.c) */
+  roll_wstep *wstep;
+  int wstep_n, wstep_cap;
+  int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
   double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
   double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
@@ -113,6 +128,7 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
 void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
+rs_status roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_air.c */
@@ -122,10 +138,20 @@ void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, in
 rs_status roll_integrate(rs_roll *roll, int k);
 
 /* roll_increment.c */
+typedef struct roll_segments {
+  int count;            /* 4, or 0: the products are final (a short range) */
+  int b[5];             /* segment g is the nodes [b[g], b[g + 1]) */
+  double s[4];          /* its scale: the product of the segments above it */
+  double M[4];          /* its largest unscaled product */
+} roll_segments;
+void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
 void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+/* roll_layer.c */
+rs_status roll_add_one(rs_roll *roll, double T0);
 
 #endif

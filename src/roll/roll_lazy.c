@@ -44,6 +44,25 @@ void roll_lazy_flush(rs_roll *roll, int from)
   if (from == 0) roll->lazy_c = 0.0;
 }
 
+/* each node's a_j and b_j (the drift bound's, before the prefix maxima) from its modulus E,
+ * the reference's Eref, and Ep at the pressure Pp a little above P: a loop over arrays
+ * passed as such, that vectorises (two divisions a node) */
+static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P,
+                             const double *restrict Pp, const double *restrict E,
+                             const double *restrict Ep, const double *restrict Eref,
+                             const double *restrict e, double *restrict la, double *restrict lb)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double kappa = fabs(Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])); /* d ln E / dP to 1e-3 */
+    const double b = kappa * e[j], bb = b == b ? b : INFINITY; /* a NaN slope bounds nothing */
+    lb[j] = bb;
+    la[j] = fabs(E[j] - Eref[j]) / Eref[j] - aC * bb;
+  }
+}
+
+/* roll_lazy_freeze's block of nodes: its ten arrays' blocks fit the first-level cache */
+enum { RS_FREEZE_BLOCK = 256 };
+
 /* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
  * current, and the reference's shape covers them. Uses dsr and dsh as scratch (free
  * between an integration's start and its increment). */
@@ -60,29 +79,30 @@ void roll_lazy_freeze(rs_roll *roll, int to)
   const double C = roll->lazy_c, aC = fabs(C);
   const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
   double *restrict Pp = roll->dsr, *restrict Ep = roll->dsh;
-  /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
-  for (int j = F; j < to; ++j) Pp[j] = roll->P_node[j] * 1.001 + 1.0;
-  rs_radial_modulus_n(&roll->p.radial, Pp + F, Ep + F, to - F);
-  if (roll->p.air_film) roll_air_series(roll, Pp, Ep, F, to);
-  /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
-   * the three running maxima side by side */
   double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
   const double *restrict P = roll->P_node, *restrict L = roll->L;
-  for (int j = F; j < to; ++j) {
-    const double kappa = fabs(Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])); /* d ln E / dP to 1e-3 */
-    const double b = kappa * e[j];
-    lb[j] = b == b ? b : INFINITY; /* a NaN slope bounds nothing */
-    la[j] = fabs(E[j] - Eref[j]) / Eref[j] - aC * lb[j];
-  }
   double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
   double pl = F > 0 ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
-  for (int j = F; j < to; ++j) {
-    pa = la[j] > pa ? la[j] : pa;
-    pb = lb[j] > pb ? lb[j] : pb;
-    pl = L[j] > pl ? L[j] : pl;
-    la[j] = pa;
-    lb[j] = pb;
-    sl[j] = pl;
+  /* a block at a time, so that what one pass writes the next reads from the first-level
+   * cache (at a reference the whole roll freezes: nine arrays of it, streamed once each,
+   * not three times) */
+  for (int b0 = F; b0 < to; b0 += RS_FREEZE_BLOCK) {
+    const int b1 = to - b0 > RS_FREEZE_BLOCK ? b0 + RS_FREEZE_BLOCK : to;
+    /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
+    for (int j = b0; j < b1; ++j) Pp[j] = P[j] * 1.001 + 1.0;
+    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, b1 - b0);
+    if (roll->p.air_film) roll_air_series(roll, Pp, Ep, b0, b1);
+    /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
+     * the three running maxima side by side */
+    roll_lazy_bounds(b0, b1, aC, P, Pp, E, Ep, Eref, e, la, lb);
+    for (int j = b0; j < b1; ++j) {
+      pa = la[j] > pa ? la[j] : pa;
+      pb = lb[j] > pb ? lb[j] : pb;
+      pl = L[j] > pl ? L[j] : pl;
+      la[j] = pa;
+      lb[j] = pb;
+      sl[j] = pl;
+    }
   }
   if (C != 0.0) roll_lazy_shift(roll, F, to, -C);
   roll->lazy_top = to;

@@ -3,6 +3,7 @@
  * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
  * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "roll/roll_internal.h"
@@ -167,8 +168,8 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
     const double *restrict E = roll->Er;
-    int bad = 0;
-    for (int j = lo; j < hi; ++j) bad |= !(E[j] > 0.0) | !(E[j] < INFINITY);
+    int64_t bad = 0; /* a double's width: the OR stays in the vector registers */
+    for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
     for (int j = lo; bad && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return RS_ERROR(RS_ERR_SOLVER,
@@ -180,12 +181,54 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   return RS_OK;
 }
 
+/* P_node and E_r at the nodes [lo, hi), all holding their stresses explicitly (none lazy),
+ * from the stresses in one pass (rs_radial_modulus_stress_n, checked as it goes); the nodes
+ * above the n layers wound (the layers being wound) carry no pressure yet. With entrained
+ * air the film at each node in series (roll_air.c). */
+static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
+{
+  const rs_radial_law *law = &roll->p.radial;
+  double *restrict P = roll->P_node, *restrict E = roll->Er;
+  const int n = roll->n < hi - 1 ? roll->n : hi - 1;
+  if (hi <= lo) return RS_OK;
+  int bad = -1;
+  if (lo == 0) bad = rs_radial_modulus_stress_n(law, &roll->core_sigma, P, E, 1);
+  const int j1 = lo > 1 ? lo : 1, j2 = n + 1 > lo ? n + 1 : lo;
+  if (bad < 0 && j1 <= n) {
+    const int b = rs_radial_modulus_stress_n(law, roll->sigma_r + j1 - 1, P + j1, E + j1, n + 1 - j1);
+    if (b >= 0) bad = j1 + b;
+  }
+  if (bad < 0 && j2 < hi) {
+    for (int j = j2; j < hi; ++j) P[j] = 0.0;
+    rs_radial_modulus_n(law, P + j2, E + j2, hi - j2);
+    for (int j = j2; bad < 0 && j < hi; ++j)
+      if (!(E[j] > 0.0 && E[j] < INFINITY)) bad = j;
+  }
+  if (bad >= 0)
+    return RS_ERROR(RS_ERR_SOLVER,
+                    "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
+                    "positive: the radial law is outside its range",
+                    E[bad], roll->p.core_radius + bad * roll->p.caliper, P[bad]);
+  if (roll->p.air_film) roll_air_series(roll, P, E, lo, hi);
+  return RS_OK;
+}
+
+/* roll_gather_pressure (nothing added) and roll_set_modulus in one pass over the nodes:
+ * the predictor's modulus, at the pressures before the increment */
+rs_status roll_set_modulus_stress(rs_roll *roll, int k)
+{
+  rs_status st = roll_modulus_stress_range(roll, roll->lazy_top, k + 1);
+  if (st) return st;
+  roll->epoch++;
+  roll->nodes_in_use = k + 1;
+  return RS_OK;
+}
+
 /* The pressures and moduli of the nodes [lo, hi) that have just left the lazy zone
  * (roll_integrate, when an integration starts below the frontier): same epoch */
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
 {
-  for (int j = lo; j < hi; ++j) roll->P_node[j] = -roll_lazy_sigma(roll, j);
-  return roll_modulus_range(roll, lo, hi);
+  return roll_modulus_stress_range(roll, lo, hi); /* flushed: none of them lazy */
 }
 
 /* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees

@@ -107,11 +107,42 @@ static void recipes(void)
   CHECK(rs_recipe_prepare(&tab, r0, r1) == RS_ERR_INPUT);
 }
 
+/* rs_radial_modulus_stress_n at n radial stresses: P = -sigma exactly and E_r bit for bit
+ * what the law gives at P (rs_radial_modulus, one pressure at a time), for every law; the
+ * index of the first modulus that is not positive, or -1. */
+static void modulus_of_stresses(void)
+{
+  enum { N = 37 };
+  rs_radial_law laws[] = {
+      {.law = RS_RADIAL_LINEAR, .E_r = 3e6},
+      {.law = RS_RADIAL_PFEIFFER, .K1 = 5e3, .K2 = 60},
+      {.law = RS_RADIAL_HAKIEL, .C = {1.0e6, 60.0, 2.0e-6}, .n_coef = 3},
+      {.law = RS_RADIAL_HAKIEL, .C = {1e5, 20.0, -1e-6, 2e-13}, .n_coef = 4},
+      {.law = RS_RADIAL_TABLE, .n_points = 3, .P = {0, 1e4, 1e6}, .E = {2e5, 3e5, 9e6}},
+  };
+  double sigma[N], P[N], E[N];
+  for (int i = 0; i < N; ++i) sigma[i] = i == 3 ? 25.0 : -1.7e4 * i * i; /* one in tension */
+  for (size_t l = 0; l < sizeof laws / sizeof laws[0]; ++l) {
+    CHECK(rs_radial_law_prepare(&laws[l]) == RS_OK);
+    CHECK(rs_radial_modulus_stress_n(&laws[l], sigma, P, E, N) == -1);
+    int same = 1;
+    for (int i = 0; i < N; ++i)
+      same &= P[i] == -sigma[i] && E[i] == rs_radial_modulus(&laws[l], -sigma[i]);
+    CHECK(same);
+  }
+  /* E_r = 1e6 - P^2 is negative above 1 kPa: the first such stress is at i = 8 */
+  rs_radial_law bad = {.law = RS_RADIAL_HAKIEL, .C = {1e6, 0.0, -1.0}, .n_coef = 3};
+  for (int i = 0; i < N; ++i) sigma[i] = -130.0 * i;
+  CHECK(rs_radial_modulus_stress_n(&bad, sigma, P, E, N) == 8);
+  CHECK(E[7] > 0.0 && !(E[8] > 0.0));
+}
+
 static const check_case cases[] = {
     {"pfeiffer_is_tangent_of_stack_law", pfeiffer_is_tangent_of_stack_law},
     {"hakiel_polynomial", hakiel_polynomial},
     {"table_monotone", table_monotone},
     {"tube_core_is_lame", tube_core_is_lame},
     {"recipes", recipes},
+    {"modulus_of_stresses", modulus_of_stresses},
 };
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }

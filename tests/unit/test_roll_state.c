@@ -49,5 +49,33 @@ static void rewind_is_exact(void)
   rs_roll_destroy(&b);
 }
 
-static const check_case cases[] = {{"rewind_is_exact", rewind_is_exact}};
+/* An increment whose stresses are not finite (a wound-on tension of 1e308 N/m: T0/s
+ * overflows) fails with RS_ERR_SOLVER saying so and leaves the roll's stresses exactly as
+ * they were: the one-layer increment is checked before anything is written
+ * (src/roll/roll_layer.c, roll_commit); then the roll winds on. */
+static void nonfinite_keeps_roll(void)
+{
+  enum { N = 1000 };
+  rs_roll *a = newsprint(N + 2);
+  if (!a) return;
+  wind_more(a, N, 500);
+  static double sr[N], sth[N];
+  memcpy(sr, rs_roll_sigma_r(a), sizeof sr);
+  memcpy(sth, rs_roll_sigma_theta(a), sizeof sth);
+  const double core = rs_roll_core_pressure(a);
+  double T = 1e308;
+  CHECK(rs_roll_add_layers(a, 1, &T) == RS_ERR_SOLVER);
+  CHECK(strstr(rs_error_message(), "non-finite stress increment") != NULL);
+  CHECK(rs_roll_layers(a) == N);
+  CHECK(memcmp(rs_roll_sigma_r(a), sr, sizeof sr) == 0);
+  CHECK(memcmp(rs_roll_sigma_theta(a), sth, sizeof sth) == 0);
+  CHECK(rs_roll_core_pressure(a) == core);
+  wind_more(a, 1, 500);
+  CHECK(rs_roll_layers(a) == N + 1);
+  CHECK(isfinite(rs_roll_core_pressure(a)) && rs_roll_core_pressure(a) > core);
+  rs_roll_destroy(&a);
+}
+
+static const check_case cases[] = {{"rewind_is_exact", rewind_is_exact},
+                                   {"nonfinite_keeps_roll", nonfinite_keeps_roll}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
