@@ -1,0 +1,129 @@
+/* The fused one-layer increment (src/roll/roll_layer.c) and w kept as each step's quintic
+ * (roll->w_lazy, roll_integrate.c) are the two-step path (roll_block_increment then
+ * roll_commit, w stored node by node) operation for operation: a roll wound through
+ * rs_roll_add_layers and a twin wound by the same steps spelled out with the fused path
+ * and the kept quintics switched off must hold the same stresses bit for bit.
+ *
+ *   fused_is_two_step   1500 one-layer increments (the load beneath each layer: the fused
+ *                       path runs for ~all of them once the reused start is 256 nodes
+ *                       deep), then two-layer blocks and one-layer increments in turn,
+ *                       and a rewind (rs_roll_save / rs_roll_restore) mid-run: sigma_r,
+ *                       sigma_theta and the core pressure equal at every 50 layers.
+ *   fused_ran           the comparison is not vacuous: the fused path took increments
+ *                       (deep_lo above 256 nodes below the top, the segments' bounds
+ *                       checked) and w at the nodes was left to the steps' quintics. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "roll/roll_internal.h"
+#include "roll_helpers.h"
+
+enum { N = 1500, MORE = 200 };
+
+static rs_roll *newsprint(void)
+{
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, N + 2 * MORE + 10);
+  p.rtol = 1e-6;
+  p.atol = 0.0;
+  p.placement = RS_LOAD_BENEATH;
+  rs_roll *roll = NULL;
+  CHECK(rs_roll_create(&p, &roll) == RS_OK);
+  return roll;
+}
+
+/* rs_roll_add_layers for one layer, with roll_block_increment + roll_commit in place of
+ * roll_add_one and w stored at every node (w_lazy off) */
+static rs_status add_two_step(rs_roll *roll, double T0)
+{
+  const int k_old = roll->n, k = k_old + 1, top = k - roll->shift;
+  roll->lazy_ok = roll->lazy_allowed;
+  roll->w_lazy = 0;
+  rs_status st = roll_set_modulus_stress(roll, top);
+  if (st == RS_OK) st = roll_integrate(roll, top);
+  if (st) return st;
+  roll_block_increment(roll, k_old, 1, &T0, NULL);
+  st = roll_commit(roll, 1, &T0);
+  if (st) return st;
+  roll->n = k;
+  roll->stats.increments++;
+  return RS_OK;
+}
+
+static int same(rs_roll *a, rs_roll *b)
+{
+  const int n = rs_roll_layers(a);
+  if (n != rs_roll_layers(b)) return 0;
+  if (rs_roll_core_pressure(a) != rs_roll_core_pressure(b)) return 0;
+  if (n == 0) return 1;
+  return memcmp(rs_roll_sigma_r(a), rs_roll_sigma_r(b), (size_t)n * sizeof(double)) == 0 &&
+         memcmp(rs_roll_sigma_theta(a), rs_roll_sigma_theta(b), (size_t)n * sizeof(double)) == 0;
+}
+
+/* winds both: a by the library, b by the two-step path; returns the number of increments
+ * of a that ran the fused path (deep part read from the shape, a start >= 256 below) */
+static int wind_both(rs_roll *a, rs_roll *b, int layers, double T, int *mismatch)
+{
+  int fused = 0;
+  for (int i = 0; i < layers; ++i) {
+    const double Ti = T * (1.0 + 0.3 * sin(0.01 * (rs_roll_layers(a) + i)));
+    const int n = rs_roll_layers(a);
+    if (rs_roll_add_layers(a, 1, &Ti) != RS_OK || add_two_step(b, Ti) != RS_OK) {
+      CHECK(0);
+      return fused;
+    }
+    if (a->start >= 1 && n - a->start >= 256 && a->deep_lo == a->start) ++fused;
+    if ((rs_roll_layers(a) % 50 == 0) && !same(a, b)) ++*mismatch;
+  }
+  return fused;
+}
+
+static int fused_runs;
+static long kept_steps;
+
+static void fused_is_two_step(void)
+{
+  rs_roll *a = newsprint(), *b = newsprint();
+  rs_roll_state *sa = NULL, *sb = NULL;
+  CHECK(rs_roll_state_create(&sa) == RS_OK && rs_roll_state_create(&sb) == RS_OK);
+  if (!a || !b || !sa || !sb) return;
+  int mismatch = 0;
+  fused_runs = wind_both(a, b, N, 400.0, &mismatch);
+  kept_steps = a->wstep_n;
+  CHECK(mismatch == 0);
+  CHECK(same(a, b));
+  /* blocks of two (the two-step path in both, w node by node) between one-layer increments */
+  for (int i = 0; i < 20; ++i) {
+    const double T2[2] = {420.0, 430.0};
+    CHECK(rs_roll_add_layers(a, 2, T2) == RS_OK);
+    CHECK(rs_roll_add_layers(b, 2, T2) == RS_OK);
+    fused_runs += wind_both(a, b, 3, 410.0, &mismatch);
+  }
+  CHECK(mismatch == 0);
+  CHECK(same(a, b));
+  /* a rewind mid-run: the detour's integrations (and the quintics they kept) do not apply */
+  CHECK(rs_roll_save(a, sa) == RS_OK && rs_roll_save(b, sb) == RS_OK);
+  fused_runs += wind_both(a, b, MORE, 600.0, &mismatch);
+  CHECK(rs_roll_restore(a, sa) == RS_OK && rs_roll_restore(b, sb) == RS_OK);
+  CHECK(same(a, b));
+  fused_runs += wind_both(a, b, MORE, 380.0, &mismatch);
+  CHECK(mismatch == 0);
+  CHECK(same(a, b));
+  rs_roll_state_destroy(&sa);
+  rs_roll_state_destroy(&sb);
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
+static void fused_ran(void)
+{
+  fused_is_two_step();
+  printf("fused increments %d, steps kept as quintics %ld\n", fused_runs, kept_steps);
+  CHECK(fused_runs > N / 2);
+  CHECK(kept_steps > 10);
+}
+
+static const check_case cases[] = {{"fused_is_two_step", fused_is_two_step},
+                                   {"fused_ran", fused_ran}};
+
+int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
