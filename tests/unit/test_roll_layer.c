@@ -15,6 +15,15 @@
  *   quadratic_air       the same with Hakiel's quadratic E_r(P) (the other one-pass branch
  *                       of rs_radial_modulus_stress_n) and an entrained air film under
  *                       every layer (roll_air_series in the predictor's modulus).
+ *   nonfinite_same      an increment whose stresses overflow above the reused start (a web
+ *                       stiffer across than along, g < 1, so the decays grow down the roll,
+ *                       and a tension near the largest double) fails as the two-step path
+ *                       does: the same error, naming the same node, and the stresses left
+ *                       bit for bit as they were (the deep part, c x the reference's
+ *                       shape, overflowed unchecked: 653 layers and the core became
+ *                       infinite and the increment returned RS_OK).
+ *   nonfinite_hakiel    the same with Hakiel's placement (the two-step path, and the hoop
+ *                       stresses' shape).
  *   lg2_series          ln g^2 at a node formed from a neighbour's by the atanh series
  *                       (roll_lg2, chained up the roll through thousands of nodes) equals
  *                       log(E_theta / E_r) there: at every node formed in the epoch, every
@@ -171,11 +180,59 @@ static void lg2_series(void)
   rs_roll_destroy(&r);
 }
 
+static void nonfinite_case(rs_load_placement placement)
+{
+  enum { M = 1000 };
+  /* E_r = 20 E_theta (g ~ 0.22): the decays grow down the roll, to ~8 at the core; a
+   * linear law never drifts, so each increment starts just below the top and the deep
+   * part is c x the shape, lazy */
+  rs_roll_params p = linear_params(0.0762, 1e-3, 1e9, 2e10, 1e9, M + 2);
+  p.rtol = 1e-6;
+  p.atol = 0.0;
+  p.placement = placement;
+  rs_roll *a = NULL, *b = NULL;
+  CHECK(rs_roll_create(&p, &a) == RS_OK && rs_roll_create(&p, &b) == RS_OK);
+  if (!a || !b) return;
+  int mismatch = 0;
+  const int fused = wind_both(a, b, M, 500.0, &mismatch);
+  CHECK(mismatch == 0);
+  (void)fused;
+  printf("  start %d deep_lo %d lazy_top %d\n", a->start, a->deep_lo, a->lazy_top);
+  CHECK(a->lazy_top > M / 2 && a->deep_lo > M / 2); /* the deep part lazy, below the start */
+  static double sr[M], sth[M];
+  memcpy(sr, rs_roll_sigma_r(a), sizeof sr);
+  memcpy(sth, rs_roll_sigma_theta(a), sizeof sth);
+  const double core = rs_roll_core_pressure(a);
+  const double T = 1.5e308; /* T0/s finite, T0/s e_j not where e_j > 1.2 */
+  char msg_a[512] = "", msg_b[512] = "";
+  CHECK(rs_roll_add_layers(a, 1, &T) == RS_ERR_SOLVER);
+  snprintf(msg_a, sizeof msg_a, "%s", rs_error_message());
+  CHECK(add_two_step(b, T) == RS_ERR_SOLVER);
+  snprintf(msg_b, sizeof msg_b, "%s", rs_error_message());
+  printf("  library:  %s\n  two-step: %s\n", msg_a, msg_b);
+  CHECK(strstr(msg_a, "non-finite stress increment at the core") != NULL);
+  CHECK(strcmp(msg_a, msg_b) == 0);
+  CHECK(rs_roll_layers(a) == M);
+  CHECK(memcmp(rs_roll_sigma_r(a), sr, sizeof sr) == 0);
+  CHECK(memcmp(rs_roll_sigma_theta(a), sth, sizeof sth) == 0);
+  CHECK(rs_roll_core_pressure(a) == core);
+  const double T1 = 500.0; /* and the roll winds on */
+  CHECK(rs_roll_add_layers(a, 1, &T1) == RS_OK);
+  CHECK(isfinite(rs_roll_core_pressure(a)) && rs_roll_core_pressure(a) > core);
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
+static void nonfinite_same(void) { nonfinite_case(RS_LOAD_BENEATH); }
+static void nonfinite_hakiel(void) { nonfinite_case(RS_LOAD_HAKIEL); }
+
 static void fused_is_two_step(void) { run(0); }
 static void quadratic_air(void) { run(1); }
 
 static const check_case cases[] = {{"fused_is_two_step", fused_is_two_step},
                                    {"quadratic_air", quadratic_air},
+                                   {"nonfinite_same", nonfinite_same},
+                                   {"nonfinite_hakiel", nonfinite_hakiel},
                                    {"lg2_series", lg2_series}};
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
