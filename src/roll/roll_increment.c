@@ -106,6 +106,17 @@ static void roll_decays(const double *restrict L, double *restrict e, int lo, in
   for (int g = seg.count - 1; g >= 0; --g) roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
 }
 
+/* max(m, |shape_e_j|, and with Hakiel's placement |shape_h_j|) over the nodes [lo, hi]
+ * (a NaN gives a NaN: no bound) */
+static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
+{
+  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  for (int j = lo; j <= hi; ++j) m = fabs(se[j]) > m || se[j] != se[j] ? fabs(se[j]) : m;
+  if (!roll->shift)
+    for (int j = lo; j <= hi; ++j) m = fabs(sh[j]) > m || sh[j] != sh[j] ? fabs(sh[j]) : m;
+  return m;
+}
+
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
  * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
  * for Hakiel, the outer radius of the layer beneath it by default), and its sub-increment
@@ -161,6 +172,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     if (!shift)
       for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
     roll->shape_top = bottom;
+    roll->shape_max = roll_shape_bound(roll, 0, bottom, 0.0);
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
@@ -187,6 +199,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
       if (!shift)
         for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
       roll->shape_top = bottom;
+      roll->shape_max = roll_shape_bound(roll, lo, bottom, roll->shape_max);
     } else {
       roll->shape_top = lo; /* above it the shape is stale */
     }
@@ -206,14 +219,26 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
 static rs_status roll_check_increment(const rs_roll *roll, const double *ds, const double *dh, int k)
 {
   /* the nodes below deep_lo are c_deep times the reference's shape, which is finite (its
-   * own increment passed this check): c_deep says for them. Above, x - x is 0 for a finite
-   * x and NaN for an infinite or NaN one: one sum says whether all are finite (four sums,
-   * independent, so that the compiler can vectorise them: a floating-point sum's order is
-   * otherwise fixed) */
+   * own increment passed this check): c_deep and the shape's bound say for them. Above,
+   * x - x is 0 for a finite x and NaN for an infinite or NaN one: one sum says whether all
+   * are finite (four sums, independent, so that the compiler can vectorise them: a
+   * floating-point sum's order is otherwise fixed) */
   const double rc = roll->p.core_radius, t = roll->p.caliper;
   if (!isfinite(roll->c_deep))
     return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
                     rc + k * t);
+  /* below deep_lo, c_deep times the shape: finite where |c_deep| times the shape's bound
+   * is (a tension near the largest double overflows there: the node is looked for) */
+  const int lo = roll->deep_lo;
+  const double c = roll->c_deep;
+  if (lo > 0 && !(fabs(c) * roll->shape_max < INFINITY))
+    for (int j = 0; j < lo; ++j)
+      if (!isfinite(c * roll->shape_e[j]) || (!roll->shift && !isfinite(c * roll->shape_h[j])))
+        return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
+                                 "non-finite stress increment at the core (outer radius %.9g m)",
+                                 rc + k * t)
+                      : RS_ERROR(RS_ERR_SOLVER,
+                                 "non-finite stress increment at r = %.9g m (layer %d)", rc + j * t, j);
   double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
   int j = roll->deep_lo;
   for (; j + 3 <= k; j += 4) {

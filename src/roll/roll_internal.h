@@ -90,6 +90,9 @@ struct rs_roll {
    * two multiplications a node (roll_block_increment, roll_commit). */
   double *shape_e, *shape_h;
   int shape_top;
+  /* a bound on |shape_e| (and |shape_h| with Hakiel's placement) over the shape's nodes:
+   * when |c_deep| times it is finite, so is the increment below deep_lo (roll_commit) */
+  double shape_max;
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h) */
   int deep_lo;
   double c_deep;

@@ -50,7 +50,7 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   roll_decays_raw(roll->L, e, lo, bottom, &seg);
   const double v_lo = e[lo] * seg.s[0], e_lo = v_lo > 1e-290 ? v_lo : 0.0;
   const double c = -S * e_lo / se[lo];
-  int finite = isfinite(c) && seg.count == 4;
+  int finite = isfinite(c) && seg.count == 4 && fabs(c) * roll->shape_max < INFINITY;
   for (int g = 0; finite && g < seg.count; ++g) finite = seg.M[g] * seg.s[g] * S < INFINITY;
   if (!finite) { /* the two-step path: its check names the node */
     roll_block_increment(roll, k_old, 1, &T0, NULL);
@@ -76,6 +76,13 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   if (follow) {
     se[bottom] = scale;
     roll->shape_top = bottom;
+    /* the shape's new values are scale x (e s), each at most scale x M s of its segment */
+    double m = roll->shape_max > scale ? roll->shape_max : scale;
+    for (int g = 0; g < seg.count; ++g) {
+      const double b = scale * (seg.M[g] * seg.s[g]);
+      m = b > m || b != b ? b : m;
+    }
+    roll->shape_max = m;
   } else if (e_lo > 1e-280) {
     roll->shape_top = lo; /* above it the shape is stale */
   }

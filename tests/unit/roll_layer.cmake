@@ -1,0 +1,1 @@
+rs_test(test_roll_layer unit SOURCES unit/test_roll_layer.c CASES fused_is_two_step quadratic_air nonfinite_same nonfinite_hakiel lg2_series)
