@@ -53,12 +53,14 @@ void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int t
       if (!(e[j] > 0.9705 && e[j] < 1.0304)) e[j] = roll_exp_step(L[j] - L[j + 1]);
   const int n = top - lo;
   if (n < 256) {
-    double p = 1.0;
+    double p = 1.0, M = 0.0;
     for (int j = top - 1; j >= lo; --j) {
       p = p > 1e-290 ? p * e[j] : 0.0;
+      M = p > M ? p : M;
       e[j] = p;
     }
     seg->count = 0;
+    seg->M[0] = M;
     return;
   }
   /* segments [b0, b1), [b1, b2), [b2, b3), [b3, top): the top one takes the remainder. The
@@ -98,12 +100,18 @@ void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int t
   seg->s[0] = seg->s[1] * p1;
 }
 
-/* roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared */
-static void roll_decays(const double *restrict L, double *restrict e, int lo, int top)
+/* roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a
+ * bound of the e_j written (the segments' largest products times their scales) */
+static double roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
   roll_segments seg;
   roll_decays_raw(L, e, lo, top, &seg);
-  for (int g = seg.count - 1; g >= 0; --g) roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
+  double bound = seg.count == 0 ? seg.M[0] : 0.0;
+  for (int g = seg.count - 1; g >= 0; --g) {
+    roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
+    bound = fmax(bound, seg.M[g] * seg.s[g]);
+  }
+  return bound;
 }
 
 /* max(m, |shape_e_j|, and with Hakiel's placement |shape_h_j|) over the nodes [lo, hi]
@@ -164,7 +172,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   /* an increment computed node by node from the core adds to the stored values of nodes
    * that are lazy: their drift bound would not see it, so they are brought up to date */
   if (lo == 0 && roll->lazy_top > 0) roll_lazy_flush(roll, 0);
-  roll_decays(L, dsr, lo, bottom);
+  const double e_bound = roll_decays(L, dsr, lo, bottom);
   if (j0 == 0) { /* a reference: keep its shape (the nodes below the block, and its bottom
                   * node, e = 1 there: a later start there still reads the shape) */
     memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
@@ -172,7 +180,8 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     if (!shift)
       for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
     roll->shape_top = bottom;
-    roll->shape_max = roll_shape_bound(roll, 0, bottom, 0.0);
+    /* the decays' own bound where only shape_e counts (a pass over the roll saved) */
+    roll->shape_max = shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
@@ -199,7 +208,8 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
       if (!shift)
         for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
       roll->shape_top = bottom;
-      roll->shape_max = roll_shape_bound(roll, lo, bottom, roll->shape_max);
+      roll->shape_max = shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
+                              : roll_shape_bound(roll, lo, bottom, roll->shape_max);
     } else {
       roll->shape_top = lo; /* above it the shape is stale */
     }
