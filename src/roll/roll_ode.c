@@ -213,15 +213,23 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
   return RS_OK;
 }
 
-/* roll_gather_pressure (nothing added) and roll_set_modulus in one pass over the nodes:
- * the predictor's modulus, at the pressures before the increment */
-rs_status roll_set_modulus_stress(rs_roll *roll, int k)
+/* The moduli of the nodes 0..k are the integration's from now: a new epoch (ln g^2 and the
+ * interpolation's caches are formed again, only where CVODE's steps look: a few nodes per
+ * step, ~1/4 of the nodes of a long roll; a log at every node at every increment was 7 % of
+ * the engine's time) */
+static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
 {
-  rs_status st = roll_modulus_stress_range(roll, roll->lazy_top, k + 1);
   if (st) return st;
   roll->epoch++;
   roll->nodes_in_use = k + 1;
   return RS_OK;
+}
+
+/* roll_gather_pressure (nothing added) and roll_set_modulus in one pass over the nodes:
+ * the predictor's modulus, at the pressures before the increment */
+rs_status roll_set_modulus_stress(rs_roll *roll, int k)
+{
+  return roll_modulus_epoch(roll, k, roll_modulus_stress_range(roll, roll->lazy_top, k + 1));
 }
 
 /* The pressures and moduli of the nodes [lo, hi) that have just left the lazy zone
@@ -235,11 +243,5 @@ rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
  * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
 rs_status roll_set_modulus(rs_roll *roll, int k)
 {
-  rs_status st = roll_modulus_range(roll, roll->lazy_top, k + 1);
-  if (st) return st;
-  /* ln g^2 only where CVODE's steps look (a few nodes per step, ~1/4 of the nodes of a
-   * long roll): a log at every node at every increment was 7 % of the engine's time */
-  roll->epoch++;
-  roll->nodes_in_use = k + 1;
-  return RS_OK;
+  return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy_top, k + 1));
 }
