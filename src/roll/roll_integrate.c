@@ -362,8 +362,8 @@ rs_status roll_integrate(rs_roll *roll, int k)
       roll_quintic q;
       roll_quintic_make(&prev, &cur, &q);
       /* the last node inside the step: r_j = r_c + j t, so j = (e^x - r_c)/t up to rounding,
-       * settled against the stored ln r_j */
-      int last = (int)((exp(tret) - roll->p.core_radius) / roll->p.caliper);
+       * settled against the stored ln r_j (the jet at tret has just formed (e^x - r_c)/t) */
+      int last = (int)roll_layer_coord_at(roll, tret);
       if (last < next) last = next;
       if (last > k) last = k;
       while (last > next && xn[last] > tret) --last;

@@ -48,7 +48,7 @@ struct rs_roll {
   double hy0, hy1, hm0, hm1, hg0; /* hg0 = e^hy0 = g^2 at the interval's lower node */
   /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
    * its end all look at the same x */
-  double gx, g2x, dg2x;
+  double gx, g2x, dg2x, gxi; /* gxi: the layer coordinate (r - r_c)/t at gx */
   unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
   double *w, *L;        /* (w, ln y) at the nodes */
@@ -125,6 +125,7 @@ int roll_lazy_allowed(const rs_roll_params *p);
 
 /* roll_ode.c */
 double roll_g2_at(rs_roll *roll, double x, double *dg2);
+double roll_layer_coord_at(rs_roll *roll, double x);
 int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
 int roll_jac(double x, const double y[2], double J[2][2], void *user);
 int roll_ewt(N_Vector yv, N_Vector ewt, void *user);

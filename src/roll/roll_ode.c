@@ -54,6 +54,7 @@ static inline double roll_radius_at(rs_roll *roll, double x)
 static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
 {
   const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
+  roll->gxi = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
   if (j < 0 || j >= last) {
@@ -81,6 +82,15 @@ static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
   double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
   *dg2 = g2 * dv * r / roll->p.caliper;
   return g2;
+}
+
+/* (r - r_c)/t at x = ln r: the layer coordinate g^2 was last evaluated at when x is that
+ * point (the end of the step just taken: roll_integrate looks for its nodes there), else
+ * from the anchored radius; either way without an exp() */
+double roll_layer_coord_at(rs_roll *roll, double x)
+{
+  if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
+  return (roll_radius_at(roll, x) - roll->p.core_radius) / roll->p.caliper;
 }
 
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
