@@ -62,40 +62,21 @@ static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const
   }
 }
 
-/* (w, L) at the n nodes x[0..n) inside the step (a plain loop over arrays: it vectorises);
- * with correct, L less the accumulated error's correction C0 + (x - a) slope
- * (roll_correction), in the same pass. With w NULL, L alone (w kept as the step's quintic:
- * roll_wstep_keep). */
+/* (w, L) at the n nodes x[0..n) inside the step (plain loops over arrays: they vectorise),
+ * L less the accumulated error's correction C0 + (x - a) slope (roll_correction; 0 and 0
+ * without it, which leaves L bit for bit). With w NULL, L alone (w kept as the step's
+ * quintic: roll_wstep_keep). */
 static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
-                              double *restrict L, int n, int correct, double C0, double slope)
+                              double *restrict L, int n, double C0, double slope)
 {
+  if (w) roll_quintic_fill_w(q->a, q->inv_h, q->cw, x, w, n);
   const double a = q->a, inv_h = q->inv_h;
-  const double w0 = q->cw[0], w1 = q->cw[1], w2 = q->cw[2], w3 = q->cw[3], w4 = q->cw[4], w5 = q->cw[5];
   const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
-  if (!w && correct)
-    for (int i = 0; i < n; ++i) {
-      const double s = (x[i] - a) * inv_h;
-      const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-      L[i] = Lq - (C0 + (x[i] - a) * slope);
-    }
-  else if (!w)
-    for (int i = 0; i < n; ++i) {
-      const double s = (x[i] - a) * inv_h;
-      L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-    }
-  else if (correct)
-    for (int i = 0; i < n; ++i) {
-      const double s = (x[i] - a) * inv_h;
-      const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
-      L[i] = Lq - (C0 + (x[i] - a) * slope);
-    }
-  else
-    for (int i = 0; i < n; ++i) {
-      const double s = (x[i] - a) * inv_h;
-      w[i] = ((((w5 * s + w4) * s + w3) * s + w2) * s + w1) * s + w0;
-      L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-    }
+  for (int i = 0; i < n; ++i) {
+    const double s = (x[i] - a) * inv_h;
+    const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
+    L[i] = Lq - (C0 + (x[i] - a) * slope);
+  }
 }
 
 /* Keeps the step's quintic of w for its nodes [lo, hi] (roll->wstep); 0 when it cannot
@@ -372,7 +353,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
       /* w kept as the step's quintic where only a start node will read it (node k: exact) */
       const int keep = roll->w_lazy && roll_wstep_keep(roll, &q, next, last < k ? last : k - 1);
       roll_quintic_fill(&q, xn + next, keep ? NULL : roll->w + next, roll->L + next,
-                        last - next + 1, correct, C0, slope);
+                        last - next + 1, correct ? C0 : 0.0, slope);
       next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;
