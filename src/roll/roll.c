@@ -238,18 +238,15 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   } else if (m == 1) { /* roll_block_increment and roll_commit, fused where it can */
     st = roll_add_one(roll, T0[0]);
   } else {
-    const int correct = m > 1;
-    roll_block_increment(roll, k_old, m, T0, correct ? roll->P_mean : NULL);
-    if (correct) {
-      /* the corrector: each node's modulus at the mean pressure the m single-layer
-       * increments would have seen there (the pressure before each, averaged over those
-       * that reach the node), from the predictor's sub-increments; integrate again */
-      roll_gather_pressure(roll, top, roll->P_mean);
-      st = roll_set_modulus(roll, top);
-      if (st == RS_OK) st = roll_integrate(roll, top);
-      if (st) return st;
-      roll_block_increment(roll, k_old, m, T0, NULL);
-    }
+    roll_block_increment(roll, k_old, m, T0, roll->P_mean);
+    /* the corrector: each node's modulus at the mean pressure the m single-layer
+     * increments would have seen there (the pressure before each, averaged over those
+     * that reach the node), from the predictor's sub-increments; integrate again */
+    roll_gather_pressure(roll, top, roll->P_mean);
+    st = roll_set_modulus(roll, top);
+    if (st == RS_OK) st = roll_integrate(roll, top);
+    if (st) return st;
+    roll_block_increment(roll, k_old, m, T0, NULL);
     st = roll_commit(roll, m, T0);
   }
   if (st) return st;
