@@ -166,6 +166,15 @@ void roll_gather_pressure(rs_roll *roll, int k, const double *add)
     for (int j = F; j <= k; ++j) P[j] += add[j];
 }
 
+/* the error for node j, whose modulus (roll->Er, at roll->P_node) is not positive and finite */
+static rs_status roll_modulus_refused(const rs_roll *roll, int j)
+{
+  return RS_ERROR(RS_ERR_SOLVER,
+                  "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not positive: "
+                  "the radial law is outside its range",
+                  roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+}
+
 /* E_r at the nodes [lo, hi) from P_node, checked: positive and finite; with entrained air
  * the film at each node in series (roll_air.c) */
 static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
@@ -182,10 +191,7 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
     for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
     for (int j = lo; bad && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
-        return RS_ERROR(RS_ERR_SOLVER,
-                        "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
-                        "positive: the radial law is outside its range",
-                        E[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+        return roll_modulus_refused(roll, j);
   }
   if (roll->p.air_film) roll_air_series(roll, roll->P_node, roll->Er, lo, hi);
   return RS_OK;
@@ -215,10 +221,7 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
       if (!(E[j] > 0.0 && E[j] < INFINITY)) bad = j;
   }
   if (bad >= 0)
-    return RS_ERROR(RS_ERR_SOLVER,
-                    "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not "
-                    "positive: the radial law is outside its range",
-                    E[bad], roll->p.core_radius + bad * roll->p.caliper, P[bad]);
+    return roll_modulus_refused(roll, bad);
   if (roll->p.air_film) roll_air_series(roll, P, E, lo, hi);
   return RS_OK;
 }
