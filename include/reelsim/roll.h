@@ -43,10 +43,14 @@ typedef enum rs_load_placement {
 /* Whether an increment may keep the deep part of an earlier integration from the core
  * where the modulus has barely changed since, and integrate only from there up (the error
  * this adds to an increment is held to rtol x T0/s). docs/roll-model.md, "Reusing the deep
- * solution". */
+ * solution" and "The deep part corrected for the drift" (the default, with one layer per
+ * increment and its load beneath it; otherwise the first-order reuse). */
 typedef enum rs_reuse {
-  RS_REUSE_ON = 0,       /* the default */
-  RS_REUSE_OFF = 1       /* every increment integrated from the core */
+  RS_REUSE_ON = 0,       /* the default: the deep part reused, corrected to first order
+                            for the modulus drift since it was integrated */
+  RS_REUSE_OFF = 1,      /* every increment integrated from the core */
+  RS_REUSE_FIRST_ORDER = 2 /* the deep part reused as it was integrated, its drift held to
+                            the tolerance at first order (the start sinks as it drifts) */
 } rs_reuse;
 
 /* Whether the ln y each integration stores is corrected by the local errors CVODE

@@ -78,6 +78,8 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->scan_L);
   free(roll->shape_e);
   free(roll->shape_h);
+  free(roll->prof_w);
+  free(roll->prof_L);
   free(roll->lazy_a);
   free(roll->view_r);
   free(roll->view_theta);
@@ -105,7 +107,7 @@ static rs_status roll_check_params(const rs_roll_params *p)
     return RS_ERROR(RS_ERR_INPUT, "rtol must lie in (0, 1) (got %g)", p->rtol);
   if (p->lumping != RS_LUMP_CORRECTED && p->lumping != RS_LUMP_FROZEN)
     return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
-  if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF)
+  if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF && p->reuse != RS_REUSE_FIRST_ORDER)
     return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
   if (p->placement != RS_LOAD_BENEATH && p->placement != RS_LOAD_HAKIEL)
     return RS_ERROR(RS_ERR_INPUT, "unknown load placement %d", (int)p->placement);
@@ -146,17 +148,21 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->scan_L = calloc(cap + 1, sizeof(double));
   roll->shape_e = calloc(cap + 1, sizeof(double));
   roll->shape_h = calloc(cap + 1, sizeof(double));
+  roll->prof_w = calloc(cap + 1, sizeof(double));
+  roll->prof_L = calloc(cap + 1, sizeof(double));
   roll->lazy_a = calloc(cap + 1, sizeof(double));
   roll->lazy_b = calloc(cap + 1, sizeof(double));
   roll->view_r = calloc(cap, sizeof(double));
   roll->view_theta = calloc(cap, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
+  roll->prof_top = -1;
   roll->lazy_allowed = roll_lazy_allowed(&roll->p);
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
-      !roll->scan_L || !roll->shape_e || !roll->shape_h || !roll->lazy_a || !roll->lazy_b ||
+      !roll->scan_L || !roll->shape_e || !roll->shape_h || !roll->prof_w || !roll->prof_L ||
+      !roll->lazy_a || !roll->lazy_b ||
       !roll->view_r || !roll->view_theta) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
@@ -225,12 +231,17 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   roll->lazy_ok = m == 1 && roll->lazy_allowed;
   /* a block, or Hakiel's hoop stresses, read w at every node: w stored node by node */
   roll->w_lazy = m == 1 && roll->shift;
+  /* the deep part corrected for the drift (roll_profile.c): one layer and its load beneath */
+  roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
   if (m > 1) roll_lazy_flush(roll, 0);
 
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
   rs_status st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
-  if (st) return st;
+  if (st) {
+    roll_start_release(roll);
+    return st;
+  }
 
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
   if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
@@ -249,6 +260,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     roll_block_increment(roll, k_old, m, T0, NULL);
     st = roll_commit(roll, m, T0);
   }
+  roll_start_release(roll);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;

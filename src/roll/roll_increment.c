@@ -182,9 +182,25 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     roll->shape_top = bottom;
     /* the decays' own bound where only shape_e counts (a pass over the roll saved) */
     roll->shape_max = shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
+    /* the reference's first-order response to the drift to come (roll_profile.c); its own
+     * increment adds -S e below the block */
+    roll->prof_top = -1;
+    if (roll->prof_on && !mean) {
+      roll_wstep_store(roll, bottom);
+      roll_profile_build(roll, bottom);
+      roll->ref_c = -S;
+    }
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  roll->c2_deep = 0.0;
+  if (lo > 0 && lo == j0 && roll->start_C != 0.0) {
+    /* the start was corrected for the drift: below it the increment is c e exp(C (p_L -
+     * p_L(j0))), to first order c (1 - C p_L(j0)) e + c C e p_L (roll_profile.c) */
+    const double c = roll->c_deep, C = roll->start_C;
+    roll->c_deep = c * (1.0 - C * roll->prof_L[lo]);
+    roll->c2_deep = c * C;
+  }
   if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
       roll->last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
@@ -234,16 +250,18 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
    * are finite (four sums, independent, so that the compiler can vectorise them: a
    * floating-point sum's order is otherwise fixed) */
   const double rc = roll->p.core_radius, t = roll->p.caliper;
-  if (!isfinite(roll->c_deep))
+  if (!isfinite(roll->c_deep) || !isfinite(roll->c2_deep))
     return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
                     rc + k * t);
   /* below deep_lo, c_deep times the shape: finite where |c_deep| times the shape's bound
    * is (a tension near the largest double overflows there: the node is looked for) */
   const int lo = roll->deep_lo;
-  const double c = roll->c_deep;
-  if (lo > 0 && !(fabs(c) * roll->shape_max < INFINITY))
+  const double c = roll->c_deep, c2 = roll->c2_deep;
+  if (lo > 0 && !(fabs(c) * roll->shape_max < INFINITY &&
+                  (c2 == 0.0 || fabs(c2) * roll->shape_max * roll->prof_max < INFINITY)))
     for (int j = 0; j < lo; ++j)
-      if (!isfinite(c * roll->shape_e[j]) || (!roll->shift && !isfinite(c * roll->shape_h[j])))
+      if (!isfinite(c * roll->shape_e[j]) || (!roll->shift && !isfinite(c * roll->shape_h[j])) ||
+          (c2 != 0.0 && !isfinite(roll->shape_e[j] * (c + c2 * roll->prof_L[j]))))
         return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                  "non-finite stress increment at the core (outer radius %.9g m)",
                                  rc + k * t)
@@ -334,17 +352,28 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment):
    * the lazy nodes take it in their common scale */
   const int lo = roll->deep_lo;
-  const double c = roll->c_deep, *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  const double c = roll->c_deep, c2 = roll->c2_deep;
+  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h, *restrict pL = roll->prof_L;
   double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
   int j0 = 1;
   if (lo > 0 && roll->lazy_top > 0) {
     roll->lazy_c += c;
+    roll->lazy_c2 += c2;
     j0 = roll->lazy_top;
   } else {
-    roll->core_sigma += lo > 0 ? c * se[0] : ds[0];
+    roll->core_sigma += lo > 0 ? c * se[0] : ds[0]; /* prof_L is 0 at the core */
+  }
+  /* the pressure the reference-valued nodes carry since the reference, -ref_c e (first
+   * order); an increment that was not c x shape below its start ends the profile's use */
+  if (roll->start > 0) {
+    roll->ref_c += c;
+    if (lo == 0) roll->prof_top = -1;
   }
   const int j1 = lo > 1 ? lo : 1;
-  for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
+  if (c2 != 0.0)
+    for (int j = j0; j < lo; ++j) sr[j - 1] += se[j] * (c + c2 * pL[j]);
+  else
+    for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
   if (roll->shift) { /* the hoop stresses follow from the radial ones */

@@ -101,7 +101,7 @@ static int roll_wstep_keep(rs_roll *roll, const roll_quintic *q, int lo, int hi)
 
 /* w stored at the kept steps' nodes up to node hi (those above are about to be overwritten),
  * by the same operations as the fill: the steps are then dropped */
-static void roll_wstep_store(rs_roll *roll, int hi)
+void roll_wstep_store(rs_roll *roll, int hi)
 {
   for (int i = 0; i < roll->wstep_n && roll->wstep[i].lo <= hi; ++i) {
     const roll_wstep *s = &roll->wstep[i];
@@ -126,15 +126,38 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
   return h < cap ? h : cap;
 }
 
-/* Integrations from the core between two references: a reference serves 32 increments.
- * Accuracy does not need a refresh (roll_reuse_start bounds the error whatever the
- * reference's age); cost does: the start node sinks as the modulus drifts, and an
- * integration from the core costs ~150 steps against ~90 from the interior. Refreshing
- * every 16, 32 or 64 increments gives the same steps within 0.5 % (docs/performance.md). */
-enum { RS_REUSE_REFRESH = 32 };
+/* Integrations from the core between two references. Accuracy does not need a refresh
+ * (roll_reuse_start bounds the error whatever the reference's age); cost does: the start
+ * node sinks as the modulus drifts, and an integration from the core costs ~150 steps and
+ * passes over the whole roll against ~30 steps over the nodes above the start. With the
+ * first-order search a reference serves 32 increments (16, 32 or 64 give the same steps
+ * within 0.5 %: docs/performance.md). With the deep part corrected for the drift the start
+ * sinks with the drift's square, so a reference serves longer, the longer the roll (its
+ * cost grows with it): n/200 increments, 32 to 512 (the 100,633-layer film: 4.9 s at 128,
+ * 4.5 s at 256 and 512, 5.5 s at 1024, 14.8 s never; the 6054-layer reel: the same time
+ * from 32 to 128, docs/performance.md). */
+static int roll_refresh_age(const rs_roll *roll)
+{
+  if (!roll->prof_on) return 32;
+  const int a = roll->n / 200;
+  return a < 32 ? 32 : a > 512 ? 512 : a;
+}
 
 /* the start-node search's block of nodes (roll_reuse_start) */
 enum { RS_SCAN_BLOCK = 64 };
+
+/* roll_reuse_start's answer: the start lo, or -1 (node 0 alone saves nothing: a new
+ * reference); a start found with the second-order bound is corrected for the drift, with a
+ * shape to read below it, or it is none */
+static int roll_reuse_found(rs_roll *roll, int lo, int second)
+{
+  if (lo < 1) return -1;
+  if (second) {
+    if (!(roll->shape_e[lo] > 1e-280)) return -1;
+    roll->start_C = roll->ref_c;
+  }
+  return lo;
+}
 
 /* The node to start the integration of an increment onto k from, keeping the reference's
  * (w, L) below it, or -1: from the core, as a new reference.
@@ -157,11 +180,20 @@ enum { RS_SCAN_BLOCK = 64 };
 static int roll_reuse_start(rs_roll *roll)
 {
   const int n = roll->n;
+  roll->start_C = 0.0;
   if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1 ||
-      roll->ref_age >= RS_REUSE_REFRESH)
+      roll->ref_age >= roll_refresh_age(roll))
     return -1;
   /* below the top of the last integration, so the new one (one node higher) has length */
-  const int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
+  int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
+  /* the deep part corrected for the drift (roll_profile.c): a start among the nodes that
+   * still hold the reference's (w, L) and read the reference's shape, the error bound of
+   * second order */
+  const int second = roll->prof_on && roll->prof_top >= 1;
+  if (second) {
+    top = top < roll->prof_top ? top : roll->prof_top;
+    top = top < roll->shape_top ? top : roll->shape_top;
+  }
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
   const double Ls = L[n - roll->shift], tol = roll->p.rtol;
   /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and scan_L
@@ -170,16 +202,16 @@ static int roll_reuse_start(rs_roll *roll)
   const double aC = fabs(roll->lazy_c), *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b;
   const double *restrict pl = roll->scan_L;
   int lo = -1;
-  if (F > 0 && (la[F - 1] + aC * lb[F - 1]) * exp(pl[F - 1] - Ls) > tol) {
+  if (F > 0 && !(roll_profile_bound(la[F - 1] + aC * lb[F - 1], pl[F - 1], Ls, second) <= tol)) {
     int hi = F - 1; /* E(lo) <= tol < E(hi), all lazy: bisection on the stored bounds */
     while (hi - lo > 1) {
       const int mid = lo + (hi - lo) / 2;
-      if ((la[mid] + aC * lb[mid]) * exp(pl[mid] - Ls) <= tol)
+      if (roll_profile_bound(la[mid] + aC * lb[mid], pl[mid], Ls, second) <= tol)
         lo = mid;
       else
         hi = mid;
     }
-    return lo >= 1 ? lo : -1;
+    return roll_reuse_found(roll, lo, second);
   }
   /* from F up, a block at a time: the block's drifts (a vectorised pass), then their running
    * maxima, E only at each block's end, and node by node inside the block where it first
@@ -205,7 +237,7 @@ static int roll_reuse_start(rs_roll *roll)
     }
     const double be = fmax(fmax(e4[0], e4[1]), fmax(e4[2], e4[3]));
     const double bl = fmax(fmax(l4[0], l4[1]), fmax(l4[2], l4[3]));
-    if (be * exp(bl - Ls) <= tol) { /* the whole block qualifies */
+    if (roll_profile_bound(be, bl, Ls, second) <= tol) { /* the whole block qualifies */
       me = be;
       ml = bl;
       lo = b1;
@@ -214,12 +246,12 @@ static int roll_reuse_start(rs_roll *roll)
     for (j = b0; j <= b1; ++j) { /* the first node past tol is in this block */
       me = eps[j] > me ? eps[j] : me;
       ml = L[j] > ml ? L[j] : ml;
-      if (me * exp(ml - Ls) > tol) break;
+      if (!(roll_profile_bound(me, ml, Ls, second) <= tol)) break;
       lo = j;
     }
     break;
   }
-  return lo >= 1 ? lo : -1; /* node 0 alone saves nothing: start a new reference */
+  return roll_reuse_found(roll, lo, second);
 }
 
 /* Correcting the accumulated local error (docs/roll-model.md). L = ln y is the running
@@ -256,6 +288,16 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, double w, do
   if (!isfinite(c->C)) c->C = 0.0; /* an estimate that is not a number corrects nothing */
 }
 
+/* The start node's (w, L) back to the reference's once the increment corrected there is
+ * built and committed (or has failed): a later start there is corrected afresh */
+void roll_start_release(rs_roll *roll)
+{
+  if (roll->start_C == 0.0) return;
+  roll->w[roll->start] = roll->start_ref[0];
+  roll->L[roll->start] = roll->start_ref[1];
+  roll->start_C = 0.0;
+}
+
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
  * roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
  * keeping the reference's values below it.
@@ -268,11 +310,15 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->w[0] = roll->kc;
     roll->L[0] = 0.0;
     roll->start = 0;
+    roll->start_C = 0.0;
+    roll->prof_top = -1;
     roll->stats.full_integrations++;
     return RS_OK;
   }
   const double *xn = roll->xnode, xs = xn[k];
   const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
+  const double start_C = roll->start_C; /* applied below, once nothing can fail before it */
+  roll->start_C = 0.0;
   /* the nodes the integration looks at (from first - 1: the Hermite slopes) leave the lazy
    * zone; a reference needs every node */
   const int need = from_core ? 0 : first - 1, F = roll->lazy_top;
@@ -288,6 +334,16 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->L[0] = 0.0;
   }
   roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
+  if (start_C != 0.0) {
+    roll->start_C = start_C;
+    /* the reference's (w, L) at the start moved by the drift since (roll_profile.c): the
+     * node holds them while the increment is built from this integration, and the
+     * reference's again after (roll_start_release) */
+    roll->start_ref[0] = roll->w[first];
+    roll->start_ref[1] = roll->L[first];
+    roll->w[first] += roll->start_C * roll->prof_w[first];
+    roll->L[first] += roll->start_C * roll->prof_L[first];
+  }
   /* from the core (0, kc); else the reference's values, whose L carries the reference's
    * origin: every L difference the increment is built from stays consistent */
   y[0] = roll->w[first];
@@ -309,9 +365,11 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->ref_top = k;
     roll->ref_age = 0;
     roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
+    roll->prof_top = -1;  /* likewise its profile */
     roll->stats.full_integrations++;
   } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
     roll->ref_top = j0;
+    roll->prof_top = roll->prof_top < j0 ? roll->prof_top : j0; /* still the reference's */
     roll->ref_age++;
     roll->last_start = j0;
     /* below the start the increment is c x the reference's shape (roll_block_increment):

@@ -8,6 +8,7 @@
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
+ *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
  * docs/roll-model.md has the model and the derivations. */
@@ -93,17 +94,32 @@ struct rs_roll {
   /* a bound on |shape_e| (and |shape_h| with Hakiel's placement) over the shape's nodes:
    * when |c_deep| times it is finite, so is the increment below deep_lo (roll_commit) */
   double shape_max;
-  /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h) */
+  /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h), plus, with the
+   * deep part corrected, c2_deep shape_e prof_L */
   int deep_lo;
-  double c_deep;
+  double c_deep, c2_deep;
+  /* The reused deep part corrected to first order for the modulus drift (roll_profile.c;
+   * docs/roll-model.md, "The deep part corrected for the drift"). Nodes 0..prof_top still
+   * hold the reference's (w, L): every integration since the reference started at or
+   * above them. The pressure added there since is -ref_c shape_e (to first order), and the
+   * reference's solution with the modulus moved by it is (w, L) + ref_c (prof_w, prof_L).
+   * prof_top -1: no profile (the start-node search bounds the drift at first order). */
+  int prof_on;           /* the roll corrects its deep part (load beneath, one layer, reuse) */
+  int prof_top;
+  double ref_c;
+  double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
+  double start_ref[2];   /* the reference's (w, L) at that start (roll_start_release) */
+  double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
+  double *prof_w, *prof_L; /* [cap + 1] */
   int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
   /* the lazy deep part (roll_lazy.c): nodes 0..lazy_top-1 hold stored values, their true
-   * stresses being stored + lazy_c x shape (e, and h for Hakiel's hoop stress) */
+   * stresses being stored + lazy_c x shape (e, and h for Hakiel's hoop stress), plus
+   * lazy_c2 x e x prof_L for the radial stress with the deep part corrected */
   int lazy_top;
   int lazy_ok;           /* this increment may freeze nodes (one layer: no corrector) */
   int lazy_limit;        /* nodes below it existed when lazy_c last started from 0 */
   int lazy_allowed;      /* the law's ln E_r is concave: the lazy part's bound holds */
-  double lazy_c;
+  double lazy_c, lazy_c2; /* true = stored + lazy_c e + lazy_c2 e prof_L (sigma_r) */
   double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
   double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view_*) */
 };
@@ -135,11 +151,17 @@ rs_status roll_set_modulus(rs_roll *roll, int k);
 rs_status roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
+/* roll_profile.c */
+void roll_profile_build(rs_roll *roll, int top);
+double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
+
 /* roll_air.c */
 void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
 
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);
+void roll_wstep_store(rs_roll *roll, int hi);
+void roll_start_release(rs_roll *roll);
 
 /* roll_increment.c */
 typedef struct roll_segments {

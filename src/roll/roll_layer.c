@@ -49,8 +49,14 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   roll_segments seg;
   roll_decays_raw(roll->L, e, lo, bottom, &seg);
   const double v_lo = e[lo] * seg.s[0], e_lo = v_lo > 1e-290 ? v_lo : 0.0;
-  const double c = -S * e_lo / se[lo];
-  int finite = isfinite(c) && seg.count == 4 && fabs(c) * roll->shape_max < INFINITY;
+  double c = -S * e_lo / se[lo], c2 = 0.0;
+  if (roll->start_C != 0.0) { /* the start corrected for the drift (roll_block_increment) */
+    c2 = c * roll->start_C;
+    c *= 1.0 - roll->start_C * roll->prof_L[lo];
+  }
+  int finite = isfinite(c) && isfinite(c2) && seg.count == 4 &&
+               fabs(c) * roll->shape_max < INFINITY &&
+               (c2 == 0.0 || fabs(c2) * roll->shape_max * roll->prof_max < INFINITY);
   for (int g = 0; finite && g < seg.count; ++g) finite = seg.M[g] * seg.s[g] * S < INFINITY;
   if (!finite) { /* the two-step path: its check names the node */
     roll_block_increment(roll, k_old, 1, &T0, NULL);
@@ -58,15 +64,24 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   }
   roll->deep_lo = lo;
   roll->c_deep = c;
-  /* below the start: c times the shape (the lazy nodes in their common scale) */
+  roll->c2_deep = c2;
+  roll->ref_c += c;
+  /* below the start: c times the shape, plus c2 times the shape's correction (the lazy
+   * nodes in their common scales) */
   int j0 = 1;
   if (roll->lazy_top > 0) {
     roll->lazy_c += c;
+    roll->lazy_c2 += c2;
     j0 = roll->lazy_top;
   } else {
-    roll->core_sigma += c * se[0];
+    roll->core_sigma += c * se[0]; /* prof_L is 0 at the core */
   }
-  for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
+  if (c2 != 0.0) {
+    const double *restrict pL = roll->prof_L;
+    for (int j = j0; j < lo; ++j) sr[j - 1] += se[j] * (c + c2 * pL[j]);
+  } else {
+    for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
+  }
   /* the shape above the start follows this integration, in the reference's scale, unless
    * that scale would overflow (roll_block_increment) */
   const double scale = e_lo > 1e-280 ? se[lo] / e_lo : 0.0;

@@ -18,14 +18,18 @@
 
 #include "roll/roll_internal.h"
 
-/* stored += scale x shape over the nodes [lo, hi) (node 0: the core; Hakiel's placement
- * also the hoop stresses): how nodes leave (scale C) and join (scale -C) the lazy zone */
-static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale)
+/* stored += scale x shape (+ scale2 x shape x prof_L) over the nodes [lo, hi) (node 0: the
+ * core; Hakiel's placement also the hoop stresses): how nodes leave (scales C, C2) and join
+ * (-C, -C2) the lazy zone */
+static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double scale2)
 {
-  const double *restrict e = roll->shape_e;
+  const double *restrict e = roll->shape_e, *restrict pL = roll->prof_L;
   double *restrict sr = roll->sigma_r;
-  if (lo == 0) roll->core_sigma += scale * e[0];
-  for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += scale * e[j];
+  if (lo == 0) roll->core_sigma += scale * e[0]; /* prof_L is 0 at the core */
+  if (scale2 != 0.0)
+    for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += e[j] * (scale + scale2 * pL[j]);
+  else
+    for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += scale * e[j];
   if (!roll->shift) {
     const double *restrict h = roll->shape_h;
     double *restrict sth = roll->sigma_theta;
@@ -39,9 +43,9 @@ void roll_lazy_flush(rs_roll *roll, int from)
   const int F = roll->lazy_top;
   if (from < 0) from = 0;
   if (from >= F) return;
-  roll_lazy_shift(roll, from, F, roll->lazy_c);
+  roll_lazy_shift(roll, from, F, roll->lazy_c, roll->lazy_c2);
   roll->lazy_top = from;
-  if (from == 0) roll->lazy_c = 0.0;
+  if (from == 0) roll->lazy_c = roll->lazy_c2 = 0.0;
 }
 
 /* each node's a_j and b_j (the drift bound's, before the prefix maxima) from its modulus E,
@@ -104,7 +108,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
       sl[j] = pl;
     }
   }
-  if (C != 0.0) roll_lazy_shift(roll, F, to, -C);
+  if (C != 0.0 || roll->lazy_c2 != 0.0) roll_lazy_shift(roll, F, to, -C, -roll->lazy_c2);
   roll->lazy_top = to;
 }
 
@@ -112,31 +116,36 @@ void roll_lazy_freeze(rs_roll *roll, int to)
 double roll_lazy_sigma(const rs_roll *roll, int j)
 {
   const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
-  return j < roll->lazy_top ? s + roll->lazy_c * roll->shape_e[j] : s;
+  if (j >= roll->lazy_top) return s;
+  return s + roll->shape_e[j] * (roll->lazy_c + roll->lazy_c2 * roll->prof_L[j]);
 }
 
 /* The stresses in full for a reader, without touching the lazy state (so that reading a
  * roll never changes how it winds on: a run with history stages or entrained air winds
  * bit for bit as one without) */
 static const double *roll_lazy_view(const rs_roll *roll, const double *restrict stored,
-                                    const double *restrict shape, double *restrict v)
+                                    const double *restrict shape, double C2,
+                                    double *restrict v)
 {
   const int F = roll->lazy_top, n = roll->n;
-  const double C = roll->lazy_c;
+  const double C = roll->lazy_c, *restrict pL = roll->prof_L;
   const int lazy_end = F - 1 < n ? F - 1 : n; /* layers 0..F-2 sit on lazy nodes 1..F-1 */
-  for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + C * shape[j + 1];
+  if (C2 != 0.0)
+    for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + shape[j + 1] * (C + C2 * pL[j + 1]);
+  else
+    for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + C * shape[j + 1];
   for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = stored[j];
   return v;
 }
 
 const double *roll_lazy_view_r(rs_roll *roll)
 {
-  return roll_lazy_view(roll, roll->sigma_r, roll->shape_e, roll->view_r);
+  return roll_lazy_view(roll, roll->sigma_r, roll->shape_e, roll->lazy_c2, roll->view_r);
 }
 
 const double *roll_lazy_view_theta(rs_roll *roll)
 {
-  return roll_lazy_view(roll, roll->sigma_theta, roll->shape_h, roll->view_theta);
+  return roll_lazy_view(roll, roll->sigma_theta, roll->shape_h, 0.0, roll->view_theta);
 }
 
 /* Whether the lazy deep part may be used: when ln E_r(P) is concave over P >= 0, the drift

@@ -54,7 +54,8 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
                     roll->p.max_layers);
   roll->n = st->n;
   roll->lazy_top = 0; /* the state holds the stresses in full */
-  roll->lazy_c = 0.0;
+  roll->lazy_c = roll->lazy_c2 = 0.0;
+  roll->prof_top = -1; /* the reference's profile no longer applies */
   roll->last_start = 0; /* the starts of the roll wound since do not apply */
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
   if (st->n > 0) { /* the state of an empty roll has no arrays */

@@ -158,7 +158,8 @@ static const ys_field nip_fields[] = {
 static const ys_value v_nip = MAP(nip_fields);
 
 /* ---- numerics and output ------------------------------------------------------------- */
-static const ys_name reuses[] = {{"deep", RS_REUSE_ON}, {"none", RS_REUSE_OFF}, {NULL, 0}};
+static const ys_name reuses[] = {{"deep", RS_REUSE_ON}, {"none", RS_REUSE_OFF},
+                                 {"first-order", RS_REUSE_FIRST_ORDER}, {NULL, 0}};
 static const ys_value v_reuse = ENUM(reuses);
 static const ys_name placements[] = {
     {"beneath", RS_LOAD_BENEATH}, {"hakiel", RS_LOAD_HAKIEL}, {NULL, 0}};

@@ -70,7 +70,7 @@ rs_cli_test(reuse_default 0 [[numerics: 1 layer per step, rtol 1e-6, deep soluti
             check ${CASES}/newsprint-rider.yaml)
 rs_cli_test(reuse_none 0 [[rtol 1e-6, every increment integrated from the core]]
             check ${CASES}/newsprint-rider.yaml --set numerics.reuse=none)
-rs_cli_test(reuse_bad 2 [[--set numerics\.reuse=bogus: unknown value 'bogus' \(expected one of: deep, none\)]]
+rs_cli_test(reuse_bad 2 [[--set numerics\.reuse=bogus: unknown value 'bogus' \(expected one of: deep, none, first-order\)]]
             check ${CASES}/newsprint-rider.yaml --set numerics.reuse=bogus)
 rs_cli_test(set_table_entry 0 [=[table: \[\[0\.0762, 800\], \[0\.3, 320\], \[0\.5, 600\]\]]=]
             check ${CASES}/linerboard-table.yaml --set winding.tension.table[1][1]=320)

@@ -70,11 +70,14 @@ static rs_status add_two_step(rs_roll *roll, double T0)
   const int k_old = roll->n, k = k_old + 1, top = k - roll->shift;
   roll->lazy_ok = roll->lazy_allowed;
   roll->w_lazy = 0;
+  roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
   rs_status st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
-  if (st) return st;
-  roll_block_increment(roll, k_old, 1, &T0, NULL);
-  st = roll_commit(roll, 1, &T0);
+  if (st == RS_OK) {
+    roll_block_increment(roll, k_old, 1, &T0, NULL);
+    st = roll_commit(roll, 1, &T0);
+  }
+  roll_start_release(roll);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;

@@ -1,0 +1,193 @@
+/* The reused deep part corrected to first order for the modulus drift (docs/roll-model.md,
+ * "The deep part corrected for the drift").
+ *
+ * Below an increment's start node the engine keeps the reference's (w, L), integrated with
+ * the modulus E_ref of the reference's time. Since then each increment has added c e_j to
+ * the radial stress there (e the reference's shape, roll_block_increment), so the pressure
+ * is P_ref - C e_j, C = ref_c the sum of those c, and g^2 = E_theta/E_r has moved by
+ *     dg^2_j = -g^2_ref (dE_r/dP / E_ref) (-C e_j) = C beta_j,   beta_j = g^2_ref kappa_j e_j,
+ * kappa = d ln E_r / dP at P_ref (first order in the drift eps = E_r/E_ref - 1). The
+ * reference's solution moves, to first order, by C (p_w, p_L), the solution of the Riccati
+ * pair linearised about it, from the core (where w = kc and L = 0 are fixed):
+ *     p_w' = beta(x) - 2 (1 + w) p_w,    p_L' = p_w,    p_w = p_L = 0 at r_c.
+ * An increment that starts at j0 then starts from (w, L) + C (p_w, p_L) there, and its
+ * part below j0 is c e_j exp(C (p_L,j - p_L,j0)) = c (1 - C p_L,j0) e_j + c C e_j p_L,j to
+ * first order: two scales, so the deep part stays lazy (roll_lazy.c). What is left is
+ * second order in the drift (the curvature of 1/E_r, the Riccati term -p_w^2 C^2, the
+ * pressure the correction itself adds, the exponential's), so the start-node search holds
+ * eps^2 rather than eps to the tolerance (roll_profile_bound), and the start stays near the
+ * surface however many increments the reference serves: the nodes that must be integrated
+ * again at every increment are those the last increment's own drift reaches, not the
+ * ones the drift since the reference does. */
+#include <math.h>
+#include <stdint.h>
+
+#include "roll/roll_internal.h"
+
+/* the profile's block of nodes (its moduli a block at a time) */
+enum { RS_PROFILE_BLOCK = 256 };
+
+/* e^-z and phi_m / h = int_0^1 e^(-z (1 - s)) s^m ds (m = 0, 1, 2): by their Taylor sums
+ * (truncation below z^5/720 relative for |z| < 0.03: a thin layer, z ~ 2 g t / r) when
+ * series != 0, else in closed form */
+static inline void roll_profile_weights(double z, int series, double *q, double phi[3])
+{
+  if (series) {
+    *q = 1.0 - z * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120)))));
+    phi[0] = 1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))));
+    phi[1] = 1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))));
+    phi[2] = 1.0 / 3 - z * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520))));
+  } else {
+    *q = exp(-z);
+    phi[0] = (1.0 - *q) / z;
+    phi[1] = (1.0 - phi[0]) / z;
+    phi[2] = (1.0 - 2.0 * phi[1]) / z;
+  }
+}
+
+/* ln(a / b) for moduli a, b > 0: 2 atanh(z), z = (a - b)/(a + b), by its series to z^9
+ * (relative error below z^10/11 < 1e-19 for |z| < 0.015: neighbouring nodes) when
+ * series != 0, else log() */
+static inline double roll_profile_log_ratio(double a, double b, int series)
+{
+  const double z = (a - b) / (a + b), z2 = z * z;
+  if (!series) return log(a / b);
+  return 2.0 * z * (1.0 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 * (1.0 / 9)))));
+}
+
+/* Layer j's coefficients of the recurrence (roll_profile_build): over the layer and over
+ * its lower half, p_w(end) = Q p_w(start) + Cf. d holds the differences of ln g^2 between
+ * neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. series: the Taylor sums (the
+ * caller has checked that they hold), else the closed forms and exp(). */
+static inline void roll_profile_layer(int j, int top, const double *restrict d,
+                                      const double *restrict u, const double *restrict E,
+                                      const double *restrict w, const double *restrict x,
+                                      double Eth, int series, double *Q, double *Cf, double *Qh,
+                                      double *Cfh)
+{
+  /* the cubics at the middle: v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference
+   * m0 - m1 = (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes) */
+  const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
+  const double um = j > 0 ? 0.5 * (u[j + 1] - u[j - 1]) : u[j + 1] - u[j];
+  const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
+  const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
+  const double g0 = Eth / E[j], g1 = Eth / E[j + 1];
+  const double gm = g0 * (series ? roll_exp_small(dv) : exp(dv));
+  const double b0 = g0 * u[j], b1 = g1 * u[j + 1];
+  const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.125 * (um - up));
+  const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
+  const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
+  double phi[3], phih[3];
+  roll_profile_weights(z, series, Q, phi);
+  roll_profile_weights(0.5 * z, series, Qh, phih);
+  *Cf = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
+  *Cfh = 0.5 * h * (b0 * phih[0] + 0.5 * a1 * phih[1] + 0.25 * a2 * phih[2]);
+}
+
+/* roll_profile_layer's Taylor sums for the layers 1..top-2 (both neighbours' slopes
+ * centred), written out in a loop over arrays passed as such, that vectorises; returns
+ * nonzero when some layer's sums do not hold (the caller does those again) */
+static int64_t roll_profile_inner(int top, const double *restrict d, const double *restrict u,
+                                  const double *restrict E, const double *restrict w,
+                                  const double *restrict x, double Eth, double *restrict Q,
+                                  double *restrict Cf, double *restrict Qh, double *restrict Cfh)
+{
+  int64_t wide = 0; /* as wide as a double's compare mask: the OR stays in vector registers */
+  for (int j = 1; j + 1 < top; ++j) {
+    const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h, zh = 0.5 * z;
+    const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
+    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof_top -1 */
+    const double g0 = Eth / E[j], gm = g0 * roll_exp_small(dv);
+    const double b0 = g0 * u[j], b1 = Eth / E[j + 1] * u[j + 1];
+    const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.0625 * (u[j + 1] - u[j - 1] - u[j + 2] + u[j]));
+    const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
+    Q[j] = 1.0 - z * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120)))));
+    Qh[j] = 1.0 - zh * (1.0 - zh * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120)))));
+    Cf[j] = h * (b0 * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))))) +
+                 a1 * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))))) +
+                 a2 * (1.0 / 3 - z * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520))))));
+    Cfh[j] = 0.5 * h * (b0 * (1.0 - zh * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120))))) +
+                        0.5 * a1 * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120 - zh * (1.0 / 720))))) +
+                        0.25 * a2 * (1.0 / 3 - zh * (1.0 / 12 - zh * (1.0 / 60 - zh * (1.0 / 360 - zh * (1.0 / 2520))))));
+  }
+  return wide;
+}
+
+/* p_w and p_L at the nodes 0..top, from the reference just integrated: its (w, L) and
+ * modulus (Er_ref) at the nodes, the pressures it was integrated with (P_node), its shape
+ * (shape_e, nodes 0..top). The forcing is the derivative of the engine's own g^2(x) =
+ * exp(v(x)), v the Hermite cubic of ln g^2 between the nodes (Catmull-Rom slopes, as
+ * roll_g2_eval's): d g^2 / dC = g^2 u(x), u the same cubic of the nodes' d ln g^2 / dC =
+ * kappa_j e_j. Per layer it is taken quadratic through its values at the nodes and at the
+ * middle (where v and u are the cubics' values, v from the differences of ln g^2 between
+ * neighbours), w constant (the nodes' mean), and the linear equation integrated exactly
+ * for that:
+ *     p_w(j+1) = q p_w(j) + h (beta_0 phi_0 + a_1 phi_1 + a_2 phi_2),
+ * beta(s) = beta_0 + a_1 s/h + a_2 (s/h)^2; p_L by Simpson's rule with p_w at the middle
+ * from the same sums over the half layer. Near the surface, where P and so ln g^2 change by
+ * tens of per cent over a layer, a forcing linear between the nodes was 2 % off. Each
+ * layer's coefficients in a pass that vectorises (the Taylor sums, the layers that need
+ * exp() or log() done again after), then the recurrence, three multiply-adds a node. */
+void roll_profile_build(rs_roll *roll, int top)
+{
+  double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
+  const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
+  const double *restrict E = roll->Er_ref, *restrict P = roll->P_node, Eth = roll->p.E_theta;
+  /* scratch, free at a reference with one layer and its load beneath (until its increment
+   * freezes the deep part: roll_block_increment): u (block_share) and d (scan_eps); the
+   * moduli a little above P, then the coefficients (P_mean, dsh, lazy_a, lazy_b) */
+  double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
+  double *restrict Q = roll->dsh, *restrict Cf = roll->P_mean;
+  double *restrict Qh = roll->lazy_a, *restrict Cfh = roll->lazy_b;
+  for (int b0 = 0; b0 <= top; b0 += RS_PROFILE_BLOCK) {
+    const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
+    double *restrict Pp = roll->P_mean, *restrict Ep = roll->dsh;
+    /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
+    for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
+    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
+    if (roll->p.air_film) roll_air_series(roll, Pp, Ep, b0, b0 + nb);
+    for (int j = b0; j < b0 + nb; ++j) u[j] = (Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])) * e[j];
+  }
+  /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
+  int64_t wide = 0;
+  for (int j = 0; j < top; ++j) {
+    wide |= -(int64_t)(fabs(E[j] - E[j + 1]) >= 0.015 * (E[j] + E[j + 1]));
+    d[j] = roll_profile_log_ratio(E[j], E[j + 1], 1);
+  }
+  for (int j = 0; wide && j < top; ++j)
+    if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1])))
+      d[j] = roll_profile_log_ratio(E[j], E[j + 1], 0);
+  /* the layers inside (their neighbours' slopes both centred) in a loop that vectorises,
+   * the two end layers on their own; then the layers whose Taylor sums do not hold */
+  wide = roll_profile_inner(top, d, u, E, w, x, Eth, Q, Cf, Qh, Cfh);
+  for (int j = 0; j < top; ++j) {
+    const double z = (2.0 + (w[j] + w[j + 1])) * (x[j + 1] - x[j]);
+    const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
+    const int series = fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (dm - dp)) < 0.03;
+    if (j == 0 || j + 1 == top || (wide && !series))
+      roll_profile_layer(j, top, d, u, E, w, x, Eth, series, Q + j, Cf + j, Qh + j, Cfh + j);
+    if (j == 0 && !wide && top > 2) j = top - 2; /* only the last one left */
+  }
+  pw[0] = 0.0;
+  pL[0] = 0.0;
+  double m = 0.0;
+  for (int j = 0; j < top; ++j) {
+    const double mid = Qh[j] * pw[j] + Cfh[j];
+    pw[j + 1] = Q[j] * pw[j] + Cf[j];
+    pL[j + 1] = pL[j] + (x[j + 1] - x[j]) / 6.0 * (pw[j] + 4.0 * mid + pw[j + 1]);
+    m = fabs(pL[j + 1]) > m || pL[j + 1] != pL[j + 1] ? fabs(pL[j + 1]) : m;
+  }
+  roll->prof_max = m;
+  roll->prof_top = isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
+}
+
+/* The start-node search's error bound for a start s0 (roll_reuse_start), in units of T0/s,
+ * from the largest drift eps_max = |E_r/E_ref - 1| of the nodes at and below s0 and their
+ * largest L: at first order eps_max exp(L_max - Ls); with the deep part corrected, the
+ * second order's eps_max^2 exp(L_max - Ls), but only where the drift is small enough for
+ * the series in it to be dominated by that term (eps_max <= 0.1: else no bound). */
+double roll_profile_bound(double eps_max, double L_max, double Ls, int second)
+{
+  if (!second) return eps_max * exp(L_max - Ls);
+  return eps_max <= 0.1 ? eps_max * eps_max * exp(L_max - Ls) : INFINITY;
+}
