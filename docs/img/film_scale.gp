@@ -1,5 +1,5 @@
 # Solver time against layers, log-log (docs/performance.md, "Performance at scale"):
-#   bench/film_scale.sh BUILD before.dat (and after.dat), then
+#   bench/film_scale.sh BUILD before.dat (and after.dat, measured back to back), then
 #   gnuplot -e "before='before.dat'; after='after.dat'" docs/img/film_scale.gp
 set terminal pngcairo size 800,560 font ",11"
 set output 'docs/img/film_scale.png'
@@ -14,7 +14,7 @@ stats after using 1:3 nooutput
 n0 = STATS_min_x
 t0 = STATS_min_y
 f(x) = t0 * (x / n0) ** 1.3
-plot before using 1:3 with linespoints pt 7 title 'before (issue 17)', \
-     after using 1:3 with linespoints pt 5 title 'now', \
+plot before using 1:3 with linespoints pt 7 title 'start of this session (first-order reuse)', \
+     after using 1:3 with linespoints pt 5 title 'now (the deep part corrected for the drift)', \
      f(x) with lines dt 2 lc rgb 'gray' title 'N^{1.3} from the first point (target slope)', \
      3 with lines dt 3 lc rgb 'red' title 'target at 100,633 layers: 3 s'
