@@ -157,6 +157,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->shape_top = -1;
   roll->ref_top = -1;
   roll->prof_top = -1;
+  roll->prof_next = -1;
   roll->lazy_allowed = roll_lazy_allowed(&roll->p);
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||

@@ -185,10 +185,11 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     /* the reference's first-order response to the drift to come (roll_profile.c); its own
      * increment adds -S e below the block */
     roll->prof_top = -1;
+    roll->prof_next = -1;
     if (roll->prof_on && !mean) {
       roll_wstep_store(roll, bottom);
-      roll_profile_build(roll, bottom);
-      roll->ref_c = -S;
+      roll->prof_next = roll_profile_build(roll, bottom);
+      roll->ref_c_next = -S;
     }
   }
   roll->deep_lo = lo;
@@ -317,9 +318,11 @@ rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double tota
     dsh[k] = 0.0;
   }
   roll->deep_lo = 0;
-  roll->c_deep = 0.0;
+  roll->c_deep = roll->c2_deep = 0.0;
   rs_status st = roll_check_increment(roll, dsr, dsh, k);
   if (st) return st;
+  /* node by node on the nodes that held the reference's values: no longer c x shape */
+  roll->prof_top = -1;
   roll->core_sigma += dsr[0];
   for (int j = 1; j <= k; ++j) {
     double ds = dsr[j], hoop = dsh[j];
@@ -364,11 +367,16 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
     roll->core_sigma += lo > 0 ? c * se[0] : ds[0]; /* prof_L is 0 at the core */
   }
   /* the pressure the reference-valued nodes carry since the reference, -ref_c e (first
-   * order); an increment that was not c x shape below its start ends the profile's use */
+   * order): a reference's own increment is -S e below its block (its profile in use from
+   * now); an increment that was not c x shape below its start ends the profile's use */
   if (roll->start > 0) {
     roll->ref_c += c;
     if (lo == 0) roll->prof_top = -1;
+  } else if (roll->prof_next >= 0) {
+    roll->prof_top = roll->prof_next;
+    roll->ref_c = roll->ref_c_next;
   }
+  roll->prof_next = -1;
   const int j1 = lo > 1 ? lo : 1;
   if (c2 != 0.0)
     for (int j = j0; j < lo; ++j) sr[j - 1] += se[j] * (c + c2 * pL[j]);

@@ -138,7 +138,7 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
  * from 32 to 128, docs/performance.md). */
 static int roll_refresh_age(const rs_roll *roll)
 {
-  if (!roll->prof_on) return 32;
+  if (!roll->prof_on || roll->prof_top < 1) return 32; /* the first-order search */
   const int a = roll->n / 200;
   return a < 32 ? 32 : a > 512 ? 512 : a;
 }
@@ -334,6 +334,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->L[0] = 0.0;
   }
   roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
+  roll->start = first; /* before the start is corrected: roll_start_release reads it */
   if (start_C != 0.0) {
     roll->start_C = start_C;
     /* the reference's (w, L) at the start moved by the drift since (roll_profile.c): the
@@ -359,7 +360,6 @@ rs_status roll_integrate(rs_roll *roll, int k)
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
       CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
-  roll->start = first;
   if (from_core) { /* a new reference: nodes 0..k, with the modulus it is integrated with */
     memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
     roll->ref_top = k;

@@ -107,6 +107,9 @@ struct rs_roll {
   int prof_on;           /* the roll corrects its deep part (load beneath, one layer, reuse) */
   int prof_top;
   double ref_c;
+  int prof_next;         /* a reference's profile (its top), in use once its increment is
+                            committed, with ref_c_next its deep scale */
+  double ref_c_next;
   double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
   double start_ref[2];   /* the reference's (w, L) at that start (roll_start_release) */
   double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
@@ -152,7 +155,7 @@ rs_status roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_profile.c */
-void roll_profile_build(rs_roll *roll, int top);
+int roll_profile_build(rs_roll *roll, int top);
 double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
 
 /* roll_air.c */

@@ -57,13 +57,12 @@ static inline double roll_profile_log_ratio(double a, double b, int series)
 
 /* Layer j's coefficients of the recurrence (roll_profile_build): over the layer and over
  * its lower half, p_w(end) = Q p_w(start) + Cf. d holds the differences of ln g^2 between
- * neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. series: the Taylor sums (the
- * caller has checked that they hold), else the closed forms and exp(). */
+ * neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where they hold
+ * (the weights' by z, the exponential's by its argument), else the closed forms, exp(). */
 static inline void roll_profile_layer(int j, int top, const double *restrict d,
                                       const double *restrict u, const double *restrict E,
                                       const double *restrict w, const double *restrict x,
-                                      double Eth, int series, double *Q, double *Cf, double *Qh,
-                                      double *Cfh)
+                                      double Eth, double *Q, double *Cf, double *Qh, double *Cfh)
 {
   /* the cubics at the middle: v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference
    * m0 - m1 = (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes) */
@@ -72,11 +71,12 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
   const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
   const double g0 = Eth / E[j], g1 = Eth / E[j + 1];
-  const double gm = g0 * (series ? roll_exp_small(dv) : exp(dv));
+  const double gm = g0 * (fabs(dv) < 0.03 ? roll_exp_small(dv) : exp(dv));
   const double b0 = g0 * u[j], b1 = g1 * u[j + 1];
   const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.125 * (um - up));
   const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
   const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
+  const int series = fabs(z) < 0.03; /* the closed forms lose z^-2 .. z^-3 below */
   double phi[3], phih[3];
   roll_profile_weights(z, series, Q, phi);
   roll_profile_weights(0.5 * z, series, Qh, phih);
@@ -113,7 +113,8 @@ static int64_t roll_profile_inner(int top, const double *restrict d, const doubl
   return wide;
 }
 
-/* p_w and p_L at the nodes 0..top, from the reference just integrated: its (w, L) and
+/* p_w and p_L at the nodes 0..top (returns top, or -1 if the profile is not finite), from
+ * the reference just integrated: its (w, L) and
  * modulus (Er_ref) at the nodes, the pressures it was integrated with (P_node), its shape
  * (shape_e, nodes 0..top). The forcing is the derivative of the engine's own g^2(x) =
  * exp(v(x)), v the Hermite cubic of ln g^2 between the nodes (Catmull-Rom slopes, as
@@ -128,7 +129,7 @@ static int64_t roll_profile_inner(int top, const double *restrict d, const doubl
  * tens of per cent over a layer, a forcing linear between the nodes was 2 % off. Each
  * layer's coefficients in a pass that vectorises (the Taylor sums, the layers that need
  * exp() or log() done again after), then the recurrence, three multiply-adds a node. */
-void roll_profile_build(rs_roll *roll, int top)
+int roll_profile_build(rs_roll *roll, int top)
 {
   double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
@@ -137,11 +138,11 @@ void roll_profile_build(rs_roll *roll, int top)
    * freezes the deep part: roll_block_increment): u (block_share) and d (scan_eps); the
    * moduli a little above P, then the coefficients (P_mean, dsh, lazy_a, lazy_b) */
   double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
-  double *restrict Q = roll->dsh, *restrict Cf = roll->P_mean;
+  double *Q = roll->dsh, *Cf = roll->P_mean; /* the arrays Pp and Ep were: not restrict */
   double *restrict Qh = roll->lazy_a, *restrict Cfh = roll->lazy_b;
   for (int b0 = 0; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
-    double *restrict Pp = roll->P_mean, *restrict Ep = roll->dsh;
+    double *Pp = roll->P_mean, *Ep = roll->dsh;
     /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
     for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
     rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
@@ -165,7 +166,7 @@ void roll_profile_build(rs_roll *roll, int top)
     const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
     const int series = fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (dm - dp)) < 0.03;
     if (j == 0 || j + 1 == top || (wide && !series))
-      roll_profile_layer(j, top, d, u, E, w, x, Eth, series, Q + j, Cf + j, Qh + j, Cfh + j);
+      roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, Qh + j, Cfh + j);
     if (j == 0 && !wide && top > 2) j = top - 2; /* only the last one left */
   }
   pw[0] = 0.0;
@@ -178,7 +179,7 @@ void roll_profile_build(rs_roll *roll, int top)
     m = fabs(pL[j + 1]) > m || pL[j + 1] != pL[j + 1] ? fabs(pL[j + 1]) : m;
   }
   roll->prof_max = m;
-  roll->prof_top = isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
+  return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
 }
 
 /* The start-node search's error bound for a start s0 (roll_reuse_start), in units of T0/s,

@@ -10,6 +10,13 @@
  *                        correction, and without the correction the difference is the
  *                        correction itself
  *   constant_modulus     a constant E_r never drifts: the profile is 0 at every node
+ *   failed_reference     a reference's increment that overflows (T0 = 1e308 N/m) fails and
+ *                        the roll winds on at once, as a twin that never saw it (its profile
+ *                        and drift scale take effect only once its increment is committed:
+ *                        they did at once, and the next 32 increments failed)
+ *   frozen_block         a frozen-lumped block, added node by node, ends the profile's use;
+ *                        after a one-layer increment that failed with its start corrected
+ *                        such a block still winds (its second scale was left non-finite)
  *   vs_tight_reference   a 1500-layer newsprint roll, load beneath, rtol 1e-5 and 1e-6,
  *                        against reuse: none at rtol 1e-10: the corrected deep part's errors
  *                        (core pressure, sigma_r, sigma_theta) are no larger than the
@@ -65,8 +72,7 @@ static void profile_first_order(void)
   /* the reference's shape (any scale: the profile is linear in it) */
   for (int j = 0; j <= k; ++j) e[j] = exp(L0[j] - L0[k]);
   memcpy(roll->shape_e, e, sizeof e);
-  roll_profile_build(roll, k);
-  CHECK(roll->prof_top == k);
+  CHECK(roll_profile_build(roll, k) == k);
   memcpy(pw, roll->prof_w, sizeof pw);
   memcpy(pL, roll->prof_L, sizeof pL);
   /* C for a 2 % drift at most: eps_j = kappa_j |C| e_j, kappa = 1/(P + K1) (Pfeiffer) */
@@ -211,7 +217,74 @@ static void film_span(void)
   rs_roll_destroy(&first);
 }
 
+static rs_roll *newsprint(int n, rs_reuse reuse, rs_lumping lumping)
+{
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, n);
+  p.rtol = 1e-6;
+  p.atol = 0.0;
+  p.reuse = reuse;
+  p.lumping = lumping;
+  rs_roll *roll = NULL;
+  CHECK(rs_roll_create(&p, &roll) == RS_OK);
+  return roll;
+}
+
+static int add_one(rs_roll *roll, double T)
+{
+  return rs_roll_add_layers(roll, 1, &T) == RS_OK;
+}
+
+/* a reference increment whose stresses overflow fails and leaves the roll as it was: the
+ * next increments wind on at once, as a twin that never saw it (its profile and ref_c in
+ * use only once a reference's increment is committed) */
+static void failed_reference_for(rs_reuse reuse)
+{
+  enum { n = 1200 };
+  rs_roll *a = newsprint(n, reuse, RS_LUMP_CORRECTED), *b = newsprint(n, reuse, RS_LUMP_CORRECTED);
+  if (!a || !b) goto out;
+  while (!(a->n >= 300 && a->ref_age >= 32)) /* the next increment is a reference */
+    if (!add_one(a, 500.0)) goto out;
+  while (b->n < a->n)
+    if (!add_one(b, 500.0)) goto out;
+  const double huge = 1e308;
+  CHECK(rs_roll_add_layers(a, 1, &huge) == RS_ERR_SOLVER);
+  for (int i = 0; i < 5; ++i) CHECK(add_one(a, 500.0) && add_one(b, 500.0));
+  const double pa = rs_roll_core_pressure(a), pb = rs_roll_core_pressure(b);
+  printf("  core pressure after the failed reference %.9g, twin %.9g\n", pa, pb);
+  CHECK(isfinite(pa) && fabs(pa - pb) < 1e-5 * pb);
+out:
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
+static void failed_reference(void)
+{
+  failed_reference_for(RS_REUSE_ON);
+  failed_reference_for(RS_REUSE_FIRST_ORDER);
+}
+
+/* a frozen-lumped block adds its increment node by node to nodes that held the
+ * reference's values: the profile is no longer used; and after a one-layer increment that
+ * failed with its start corrected (a non-finite second scale), such a block still winds */
+static void frozen_block(void)
+{
+  enum { n = 1200 };
+  rs_roll *a = newsprint(n, RS_REUSE_ON, RS_LUMP_FROZEN);
+  if (!a) return;
+  for (int i = 0; i < 400; ++i) CHECK(add_one(a, 500.0));
+  while (!(a->ref_age >= 1 && a->ref_age < 30 && a->prof_top >= 1)) CHECK(add_one(a, 500.0));
+  const double huge = 1e308, T2[2] = {500.0, 500.0};
+  CHECK(rs_roll_add_layers(a, 1, &huge) == RS_ERR_SOLVER);
+  CHECK(rs_roll_add_layers(a, 2, T2) == RS_OK);
+  CHECK(a->prof_top == -1);
+  for (int i = 0; i < 100; ++i) CHECK(add_one(a, 500.0));
+  CHECK(isfinite(rs_roll_core_pressure(a)));
+  rs_roll_destroy(&a);
+}
+
 static const check_case cases[] = {{"profile_first_order", profile_first_order},
+                                   {"failed_reference", failed_reference},
+                                   {"frozen_block", frozen_block},
                                    {"constant_modulus", constant_modulus},
                                    {"vs_tight_reference", vs_tight_reference},
                                    {"film_span", film_span}};
