@@ -133,13 +133,13 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
  * first-order search a reference serves 32 increments (16, 32 or 64 give the same steps
  * within 0.5 %: docs/performance.md). With the deep part corrected for the drift the start
  * sinks with the drift's square, so a reference serves longer, the longer the roll (its
- * cost grows with it): n/200 increments, 32 to 512 (the 100,633-layer film: 4.9 s at 128,
- * 4.5 s at 256 and 512, 5.5 s at 1024, 14.8 s never; the 6054-layer reel: the same time
- * from 32 to 128, docs/performance.md). */
+ * cost grows with it): n/400 increments, 32 to 512 (the 100,633-layer film, alternating:
+ * n/100 5.2 s, n/200 4.9 s, n/400 4.8 s, n/800 5.0 s, n/1600 6.2 s; never 14.8 s; the
+ * 6054-layer reel: the same time from 32 to 128, docs/performance.md). */
 static int roll_refresh_age(const rs_roll *roll)
 {
   if (!roll->prof_on || roll->prof_top < 1) return 32; /* the first-order search */
-  const int a = roll->n / 200;
+  const int a = roll->n / 400;
   return a < 32 ? 32 : a > 512 ? 512 : a;
 }
 
