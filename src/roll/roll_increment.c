@@ -114,6 +114,21 @@ static double roll_decays(const double *restrict L, double *restrict e, int lo, 
   return bound;
 }
 
+/* The deep part's scales below a start lo, for c = ds(lo) / shape_e(lo): c and 0 as read
+ * from the reference's shape, or, the start corrected for the drift (start_C, roll_profile.c),
+ * c e exp(C (p_L - p_L(lo))), to first order c (1 - C p_L(lo)) e + c C e p_L: returns the
+ * first scale, *c2 the second */
+double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
+{
+  const double C = roll->start_C;
+  if (C == 0.0) {
+    *c2 = 0.0;
+    return c;
+  }
+  *c2 = c * C;
+  return c * (1.0 - C * roll->prof_L[lo]);
+}
+
 /* max(m, |shape_e_j|, and with Hakiel's placement |shape_h_j|) over the nodes [lo, hi]
  * (a NaN gives a NaN: no bound) */
 static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
@@ -195,13 +210,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
   roll->c2_deep = 0.0;
-  if (lo > 0 && lo == j0 && roll->start_C != 0.0) {
-    /* the start was corrected for the drift: below it the increment is c e exp(C (p_L -
-     * p_L(j0))), to first order c (1 - C p_L(j0)) e + c C e p_L (roll_profile.c) */
-    const double c = roll->c_deep, C = roll->start_C;
-    roll->c_deep = c * (1.0 - C * roll->prof_L[lo]);
-    roll->c2_deep = c * C;
-  }
+  if (lo > 0 && lo == j0) roll->c_deep = roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
   if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
       roll->last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
@@ -356,7 +365,7 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
    * the lazy nodes take it in their common scale */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
-  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h, *restrict pL = roll->prof_L;
+  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
   double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
   int j0 = 1;
   if (lo > 0 && roll->lazy_top > 0) {
@@ -378,10 +387,7 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   }
   roll->prof_next = -1;
   const int j1 = lo > 1 ? lo : 1;
-  if (c2 != 0.0)
-    for (int j = j0; j < lo; ++j) sr[j - 1] += se[j] * (c + c2 * pL[j]);
-  else
-    for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
+  roll_shape_add(roll, j0, lo, c, c2);
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
   if (roll->shift) { /* the hoop stresses follow from the radial ones */

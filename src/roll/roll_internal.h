@@ -134,7 +134,17 @@ static inline double roll_exp_small(double d)
          d * (1.0 / 720 + d * (1.0 / 5040)))))));
 }
 
+/* ln(a/b) = 2 atanh(z), z = (a - b)/(a + b), by its series to z^9: relative error below
+ * z^10/11 < 1e-19 for |z| < 0.015 (two neighbouring nodes' moduli), five multiply-adds
+ * where log() costs ~20 ns */
+static inline double roll_log_ratio_small(double z)
+{
+  const double z2 = z * z;
+  return 2.0 * z * (1.0 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 * (1.0 / 9)))));
+}
+
 /* roll_lazy.c */
+void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
 void roll_lazy_flush(rs_roll *roll, int from);
 void roll_lazy_freeze(rs_roll *roll, int to);
 double roll_lazy_sigma(const rs_roll *roll, int j);
@@ -176,6 +186,7 @@ typedef struct roll_segments {
 void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
 void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
+double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);

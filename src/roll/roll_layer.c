@@ -49,11 +49,8 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   roll_segments seg;
   roll_decays_raw(roll->L, e, lo, bottom, &seg);
   const double v_lo = e[lo] * seg.s[0], e_lo = v_lo > 1e-290 ? v_lo : 0.0;
-  double c = -S * e_lo / se[lo], c2 = 0.0;
-  if (roll->start_C != 0.0) { /* the start corrected for the drift (roll_block_increment) */
-    c2 = c * roll->start_C;
-    c *= 1.0 - roll->start_C * roll->prof_L[lo];
-  }
+  double c2;
+  const double c = roll_deep_scales(roll, lo, -S * e_lo / se[lo], &c2);
   int finite = isfinite(c) && isfinite(c2) && seg.count == 4 &&
                fabs(c) * roll->shape_max < INFINITY &&
                (c2 == 0.0 || fabs(c2) * roll->shape_max * roll->prof_max < INFINITY);
@@ -76,12 +73,7 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   } else {
     roll->core_sigma += c * se[0]; /* prof_L is 0 at the core */
   }
-  if (c2 != 0.0) {
-    const double *restrict pL = roll->prof_L;
-    for (int j = j0; j < lo; ++j) sr[j - 1] += se[j] * (c + c2 * pL[j]);
-  } else {
-    for (int j = j0; j < lo; ++j) sr[j - 1] += c * se[j];
-  }
+  roll_shape_add(roll, j0, lo, c, c2);
   /* the shape above the start follows this integration, in the reference's scale, unless
    * that scale would overflow (roll_block_increment) */
   const double scale = e_lo > 1e-280 ? se[lo] / e_lo : 0.0;

@@ -18,18 +18,31 @@
 
 #include "roll/roll_internal.h"
 
+/* sr[j - 1] += e_j (c + c2 p_L,j) for the nodes [lo, hi), lo >= 1 (c e_j alone where c2 is
+ * 0, as an uncorrected deep part always was): arrays passed as such, so that it vectorises */
+static void roll_shape_add_n(double *restrict sr, const double *restrict e,
+                             const double *restrict pL, int lo, int hi, double c, double c2)
+{
+  if (c2 != 0.0)
+    for (int j = lo; j < hi; ++j) sr[j - 1] += e[j] * (c + c2 * pL[j]);
+  else
+    for (int j = lo; j < hi; ++j) sr[j - 1] += c * e[j];
+}
+
+/* the radial stresses of the nodes [lo, hi) (lo >= 1) take c x shape + c2 x shape x prof_L:
+ * a deep part below an increment's start, or nodes leaving or joining the lazy zone */
+void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
+{
+  roll_shape_add_n(roll->sigma_r, roll->shape_e, roll->prof_L, lo, hi, c, c2);
+}
+
 /* stored += scale x shape (+ scale2 x shape x prof_L) over the nodes [lo, hi) (node 0: the
  * core; Hakiel's placement also the hoop stresses): how nodes leave (scales C, C2) and join
  * (-C, -C2) the lazy zone */
 static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double scale2)
 {
-  const double *restrict e = roll->shape_e, *restrict pL = roll->prof_L;
-  double *restrict sr = roll->sigma_r;
-  if (lo == 0) roll->core_sigma += scale * e[0]; /* prof_L is 0 at the core */
-  if (scale2 != 0.0)
-    for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += e[j] * (scale + scale2 * pL[j]);
-  else
-    for (int j = lo > 1 ? lo : 1; j < hi; ++j) sr[j - 1] += scale * e[j];
+  if (lo == 0) roll->core_sigma += scale * roll->shape_e[0]; /* prof_L is 0 at the core */
+  roll_shape_add(roll, lo > 1 ? lo : 1, hi, scale, scale2);
   if (!roll->shift) {
     const double *restrict h = roll->shape_h;
     double *restrict sth = roll->sigma_theta;

@@ -23,9 +23,7 @@ static inline double roll_lg2(rs_roll *roll, int j)
                                                                               : -1;
     const double z = k >= 0 ? (roll->Er[k] - roll->Er[j]) / (roll->Er[k] + roll->Er[j]) : 1.0;
     if (fabs(z) < 0.015) {
-      const double z2 = z * z;
-      roll->lg2[j] = roll->lg2[k] +
-                     2.0 * z * (1.0 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 * (1.0 / 9)))));
+      roll->lg2[j] = roll->lg2[k] + roll_log_ratio_small(z);
     } else {
       roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
     }

@@ -45,16 +45,6 @@ static inline void roll_profile_weights(double z, int series, double *q, double 
   }
 }
 
-/* ln(a / b) for moduli a, b > 0: 2 atanh(z), z = (a - b)/(a + b), by its series to z^9
- * (relative error below z^10/11 < 1e-19 for |z| < 0.015: neighbouring nodes) when
- * series != 0, else log() */
-static inline double roll_profile_log_ratio(double a, double b, int series)
-{
-  const double z = (a - b) / (a + b), z2 = z * z;
-  if (!series) return log(a / b);
-  return 2.0 * z * (1.0 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 * (1.0 / 9)))));
-}
-
 /* Layer j's coefficients of the recurrence (roll_profile_build): over the layer and over
  * its lower half, p_w(end) = Q p_w(start) + Cf. d holds the differences of ln g^2 between
  * neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where they hold
@@ -153,11 +143,10 @@ int roll_profile_build(rs_roll *roll, int top)
   int64_t wide = 0;
   for (int j = 0; j < top; ++j) {
     wide |= -(int64_t)(fabs(E[j] - E[j + 1]) >= 0.015 * (E[j] + E[j + 1]));
-    d[j] = roll_profile_log_ratio(E[j], E[j + 1], 1);
+    d[j] = roll_log_ratio_small((E[j] - E[j + 1]) / (E[j] + E[j + 1]));
   }
   for (int j = 0; wide && j < top; ++j)
-    if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1])))
-      d[j] = roll_profile_log_ratio(E[j], E[j + 1], 0);
+    if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1]))) d[j] = log(E[j] / E[j + 1]);
   /* the layers inside (their neighbours' slopes both centred) in a loop that vectorises,
    * the two end layers on their own; then the layers whose Taylor sums do not hold */
   wide = roll_profile_inner(top, d, u, E, w, x, Eth, Q, Cf, Qh, Cfh);
