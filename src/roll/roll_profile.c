@@ -27,32 +27,41 @@
 /* the profile's block of nodes (its moduli a block at a time) */
 enum { RS_PROFILE_BLOCK = 256 };
 
-/* e^-z and phi_m / h = int_0^1 e^(-z (1 - s)) s^m ds (m = 0, 1, 2): by their Taylor sums
- * (truncation below z^5/720 relative for |z| < 0.03: a thin layer, z ~ 2 g t / r) when
- * series != 0, else in closed form */
-static inline void roll_profile_weights(double z, int series, double *q, double phi[3])
+/* e^-z, phi_m = int_0^1 e^(-z (1 - s)) s^m ds and psi_m = int_0^1 s^m (1 - e^(-z (1 - s)))/z ds
+ * (m = 0, 1, 2): by their Taylor sums (truncation below z^5/720 relative for |z| < 0.03: a
+ * thin layer, z ~ 2 g t / r) when series != 0, else in closed form, psi_m = (1/(m+1) -
+ * phi_m)/z */
+static inline void roll_profile_weights(double z, int series, double *q, double phi[3],
+                                        double psi[3])
 {
   if (series) {
     *q = 1.0 - z * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120)))));
     phi[0] = 1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))));
     phi[1] = 1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))));
     phi[2] = 1.0 / 3 - z * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520))));
+    psi[0] = 1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))));
+    psi[1] = 1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720 - z * (1.0 / 5040))));
+    psi[2] = 1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520 - z * (1.0 / 20160))));
   } else {
     *q = exp(-z);
     phi[0] = (1.0 - *q) / z;
     phi[1] = (1.0 - phi[0]) / z;
     phi[2] = (1.0 - 2.0 * phi[1]) / z;
+    psi[0] = (1.0 - phi[0]) / z;
+    psi[1] = (1.0 / 2 - phi[1]) / z;
+    psi[2] = (1.0 / 3 - phi[2]) / z;
   }
 }
 
-/* Layer j's coefficients of the recurrence (roll_profile_build): over the layer and over
- * its lower half, p_w(end) = Q p_w(start) + Cf. d holds the differences of ln g^2 between
- * neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where they hold
- * (the weights' by z, the exponential's by its argument), else the closed forms, exp(). */
+/* Layer j's coefficients of the recurrence (roll_profile_build): over the layer
+ * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B. d holds the differences of
+ * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where
+ * they hold (the weights' by z, the exponential's by its argument), else the closed forms,
+ * exp(). */
 static inline void roll_profile_layer(int j, int top, const double *restrict d,
                                       const double *restrict u, const double *restrict E,
                                       const double *restrict w, const double *restrict x,
-                                      double Eth, double *Q, double *Cf, double *Qh, double *Cfh)
+                                      double Eth, double *Q, double *Cf, double *A, double *B)
 {
   /* the cubics at the middle: v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference
    * m0 - m1 = (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes) */
@@ -67,11 +76,11 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
   const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
   const int series = fabs(z) < 0.03; /* the closed forms lose z^-2 .. z^-3 below */
-  double phi[3], phih[3];
-  roll_profile_weights(z, series, Q, phi);
-  roll_profile_weights(0.5 * z, series, Qh, phih);
+  double phi[3], psi[3];
+  roll_profile_weights(z, series, Q, phi, psi);
   *Cf = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
-  *Cfh = 0.5 * h * (b0 * phih[0] + 0.5 * a1 * phih[1] + 0.25 * a2 * phih[2]);
+  *A = h * phi[0];
+  *B = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
 }
 
 /* roll_profile_layer's Taylor sums for the layers 1..top-2 (both neighbours' slopes
@@ -80,25 +89,26 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
 static int64_t roll_profile_inner(int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
-                                  double *restrict Cf, double *restrict Qh, double *restrict Cfh)
+                                  double *restrict Cf, double *restrict A, double *restrict B)
 {
   int64_t wide = 0; /* as wide as a double's compare mask: the OR stays in vector registers */
   for (int j = 1; j + 1 < top; ++j) {
-    const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h, zh = 0.5 * z;
+    const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
     const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
     wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof_top -1 */
     const double g0 = Eth / E[j], gm = g0 * roll_exp_small(dv);
     const double b0 = g0 * u[j], b1 = Eth / E[j + 1] * u[j + 1];
     const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.0625 * (u[j + 1] - u[j - 1] - u[j + 2] + u[j]));
     const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
+    const double phi0 = 1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))));
     Q[j] = 1.0 - z * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120)))));
-    Qh[j] = 1.0 - zh * (1.0 - zh * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120)))));
-    Cf[j] = h * (b0 * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))))) +
+    Cf[j] = h * (b0 * phi0 +
                  a1 * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))))) +
                  a2 * (1.0 / 3 - z * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520))))));
-    Cfh[j] = 0.5 * h * (b0 * (1.0 - zh * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120))))) +
-                        0.5 * a1 * (1.0 / 2 - zh * (1.0 / 6 - zh * (1.0 / 24 - zh * (1.0 / 120 - zh * (1.0 / 720))))) +
-                        0.25 * a2 * (1.0 / 3 - zh * (1.0 / 12 - zh * (1.0 / 60 - zh * (1.0 / 360 - zh * (1.0 / 2520))))));
+    A[j] = h * phi0;
+    B[j] = h * h * (b0 * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))))) +
+                    a1 * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720 - z * (1.0 / 5040))))) +
+                    a2 * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520 - z * (1.0 / 20160))))));
   }
   return wide;
 }
@@ -114,11 +124,12 @@ static int64_t roll_profile_inner(int top, const double *restrict d, const doubl
  * neighbours), w constant (the nodes' mean), and the linear equation integrated exactly
  * for that:
  *     p_w(j+1) = q p_w(j) + h (beta_0 phi_0 + a_1 phi_1 + a_2 phi_2),
- * beta(s) = beta_0 + a_1 s/h + a_2 (s/h)^2; p_L by Simpson's rule with p_w at the middle
- * from the same sums over the half layer. Near the surface, where P and so ln g^2 change by
- * tens of per cent over a layer, a forcing linear between the nodes was 2 % off. Each
- * layer's coefficients in a pass that vectorises (the Taylor sums, the layers that need
- * exp() or log() done again after), then the recurrence, three multiply-adds a node. */
+ *     p_L(j+1) = p_L(j) + h phi_0 p_w(j) + h^2 (beta_0 psi_0 + a_1 psi_1 + a_2 psi_2),
+ * beta(s) = beta_0 + a_1 s/h + a_2 (s/h)^2, p_L the exact integral of that p_w. Near the
+ * surface, where P and so ln g^2 change by tens of per cent over a layer, a forcing linear
+ * between the nodes was 2 % off. Each layer's coefficients in a pass that vectorises (the
+ * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
+ * two multiply-adds a node on the critical path, the two chains side by side. */
 int roll_profile_build(rs_roll *roll, int top)
 {
   double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
@@ -129,7 +140,7 @@ int roll_profile_build(rs_roll *roll, int top)
    * moduli a little above P, then the coefficients (P_mean, dsh, lazy_a, lazy_b) */
   double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
   double *Q = roll->dsh, *Cf = roll->P_mean; /* the arrays Pp and Ep were: not restrict */
-  double *restrict Qh = roll->lazy_a, *restrict Cfh = roll->lazy_b;
+  double *restrict A = roll->lazy_a, *restrict B = roll->lazy_b;
   for (int b0 = 0; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
     double *Pp = roll->P_mean, *Ep = roll->dsh;
@@ -149,24 +160,32 @@ int roll_profile_build(rs_roll *roll, int top)
     if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1]))) d[j] = log(E[j] / E[j + 1]);
   /* the layers inside (their neighbours' slopes both centred) in a loop that vectorises,
    * the two end layers on their own; then the layers whose Taylor sums do not hold */
-  wide = roll_profile_inner(top, d, u, E, w, x, Eth, Q, Cf, Qh, Cfh);
+  wide = roll_profile_inner(top, d, u, E, w, x, Eth, Q, Cf, A, B);
   for (int j = 0; j < top; ++j) {
     const double z = (2.0 + (w[j] + w[j + 1])) * (x[j + 1] - x[j]);
     const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
     const int series = fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (dm - dp)) < 0.03;
     if (j == 0 || j + 1 == top || (wide && !series))
-      roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, Qh + j, Cfh + j);
+      roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, A + j, B + j);
     if (j == 0 && !wide && top > 2) j = top - 2; /* only the last one left */
   }
   pw[0] = 0.0;
   pL[0] = 0.0;
-  double m = 0.0;
+  /* the chains in registers: through the arrays each node would wait for its store */
+  double pwj = 0.0, pLj = 0.0;
   for (int j = 0; j < top; ++j) {
-    const double mid = Qh[j] * pw[j] + Cfh[j];
-    pw[j + 1] = Q[j] * pw[j] + Cf[j];
-    pL[j + 1] = pL[j] + (x[j + 1] - x[j]) / 6.0 * (pw[j] + 4.0 * mid + pw[j + 1]);
-    m = fabs(pL[j + 1]) > m || pL[j + 1] != pL[j + 1] ? fabs(pL[j + 1]) : m;
+    pLj += A[j] * pwj + B[j];
+    pwj = Q[j] * pwj + Cf[j];
+    pL[j + 1] = pLj;
+    pw[j + 1] = pwj;
   }
+  double m = 0.0;
+  int64_t nan = 0;
+  for (int j = 1; j <= top; ++j) {
+    m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
+    nan |= -(int64_t)(pL[j] != pL[j]);
+  }
+  if (nan) m = NAN;
   roll->prof_max = m;
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
 }
