@@ -158,6 +158,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->ref_top = -1;
   roll->prof_top = -1;
   roll->prof_next = -1;
+  roll->ref_from = -1;
+  roll->ref_deep_max = RS_REF_DEEP_MAX;
   roll->lazy_allowed = roll_lazy_allowed(&roll->p);
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
@@ -240,7 +242,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   rs_status st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
   if (st) {
-    roll_start_release(roll);
+    roll_start_release(roll, st);
     return st;
   }
 
@@ -261,7 +263,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     roll_block_increment(roll, k_old, m, T0, NULL);
     st = roll_commit(roll, m, T0);
   }
-  roll_start_release(roll);
+  roll_start_release(roll, st);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;

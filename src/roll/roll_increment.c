@@ -203,7 +203,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     roll->prof_next = -1;
     if (roll->prof_on && !mean) {
       roll_wstep_store(roll, bottom);
-      roll->prof_next = roll_profile_build(roll, bottom);
+      roll->prof_next = roll_profile_build(roll, 0, bottom);
       roll->ref_c_next = -S;
     }
   }

@@ -177,13 +177,14 @@ static int roll_reuse_found(rs_roll *roll, int lo, int second)
  * 6054-layer newsprint reel at rtol 1e-6, the stresses move by 7e-7 of the core pressure
  * against integrating every increment from the core, a thirtieth of CVODE's own global
  * error there (2.3e-5; docs/roll-model.md). */
+static int roll_reuse_search(rs_roll *roll, int top, double tol, int second);
+
 static int roll_reuse_start(rs_roll *roll)
 {
   const int n = roll->n;
   roll->start_C = 0.0;
-  if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1 ||
-      roll->ref_age >= roll_refresh_age(roll))
-    return -1;
+  roll->ref_from = -1;
+  if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1) return -1;
   /* below the top of the last integration, so the new one (one node higher) has length */
   int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
   /* the deep part corrected for the drift (roll_profile.c): a start among the nodes that
@@ -194,8 +195,37 @@ static int roll_reuse_start(rs_roll *roll)
     top = top < roll->prof_top ? top : roll->prof_top;
     top = top < roll->shape_top ? top : roll->shape_top;
   }
+  if (roll->ref_age < roll_refresh_age(roll))
+    return roll_reuse_search(roll, top, roll->p.rtol, second);
+  if (!second || roll->ref_deep >= roll->ref_deep_max) return -1;
+  /* A new reference, from the core or from a node above it (roll_reference_rebase):
+   * below that node the reference's (w, L) and shape take their first-order correction
+   * for the drift for good and the drift restarts from 0 there, so what the correction
+   * leaves, second order, stays: the node is found with the second-order bound at a
+   * hundredth of the tolerance, and after RS_REF_DEEP_MAX (4) such references one is
+   * from the core, so that the remainders left add up to at most 4 % of it (measured:
+   * at a quarter of the tolerance the 1500-layer newsprint roll's core pressure error
+   * grew from 4.0e-6 to 1.5e-5 at rtol 1e-5, at a hundredth 4.5e-6; test_roll_profile).
+   * And no higher than the last such reference's node: every such reference starts from
+   * values the last one from the core left (rebased), not from those of a chain of
+   * restarts, each of which adds CVODE's start-up error at its node (measured on
+   * Altmann's roll, a constant modulus whose starts are at the top: the hoop stress's
+   * error 4.4e-5 -> 1.5e-4 of T0/t with a chain of five) */
+  if (roll->ref_deep > 0) top = top < roll->ref_from_last ? top : roll->ref_from_last;
+  const int from = roll_reuse_search(roll, top, 0.01 * roll->p.rtol, 1);
+  roll->start_C = 0.0; /* the start is rebased, not corrected for this increment only */
+  if (from < 1 || !(roll->shape_e[from] > 1e-280)) return -1;
+  roll->ref_from = from;
+  return from;
+}
+
+/* roll_reuse_start's search: the highest start at or below top whose error bound (first
+ * order, or second with second != 0) is within tol, or -1 */
+static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
+{
+  const int n = roll->n;
   const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
-  const double Ls = L[n - roll->shift], tol = roll->p.rtol;
+  const double Ls = L[n - roll->shift];
   /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and scan_L
    * holds the prefix maxima of L (L there is fixed until the next reference) */
   const int F = roll->lazy_top < top + 1 ? roll->lazy_top : top + 1;
@@ -289,9 +319,16 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, double w, do
 }
 
 /* The start node's (w, L) back to the reference's once the increment corrected there is
- * built and committed (or has failed): a later start there is corrected afresh */
-void roll_start_release(rs_roll *roll)
+ * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
+ * A reference from a node above the core (roll_reuse_start) that was committed becomes
+ * the reference: its profile continued from that node (roll_reference_extend). */
+void roll_start_release(rs_roll *roll, rs_status st)
 {
+  if (roll->ref_from > 0 && st == RS_OK) {
+    roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
+    roll_reference_extend(roll);
+  }
+  roll->ref_from = -1;
   if (roll->start_C == 0.0) return;
   roll->w[roll->start] = roll->start_ref[0];
   roll->L[roll->start] = roll->start_ref[1];
@@ -320,8 +357,10 @@ rs_status roll_integrate(rs_roll *roll, int k)
   const double start_C = roll->start_C; /* applied below, once nothing can fail before it */
   roll->start_C = 0.0;
   /* the nodes the integration looks at (from first - 1: the Hermite slopes) leave the lazy
-   * zone; a reference needs every node */
-  const int need = from_core ? 0 : first - 1, F = roll->lazy_top;
+   * zone; a reference needs every node, and one from a node above the core (ref_from) has
+   * every node leave it too, to freeze again below its start with the lazy scale from 0:
+   * only nodes that existed when that scale started can join the zone (roll_lazy_freeze) */
+  const int need = from_core || roll->ref_from > 0 ? 0 : first - 1, F = roll->lazy_top;
   if (need < F) {
     roll_lazy_flush(roll, need);
     rs_status st = roll_prepare_nodes(roll, need, F);
@@ -334,6 +373,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->L[0] = 0.0;
   }
   roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
+  if (roll->ref_from > 0) roll_reference_rebase(roll, first);
   roll->start = first; /* before the start is corrected: roll_start_release reads it */
   if (start_C != 0.0) {
     roll->start_C = start_C;
@@ -364,6 +404,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
     memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
     roll->ref_top = k;
     roll->ref_age = 0;
+    roll->ref_deep = 0;
     roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
     roll->prof_top = -1;  /* likewise its profile */
     roll->stats.full_integrations++;

@@ -21,6 +21,8 @@
 #include "reelsim/roll.h"
 
 enum { RS_CVODE_MSG_LEN = 512 };
+/* references from a node above the core between two from the core (roll_reuse_start) */
+enum { RS_REF_DEEP_MAX = 4 };
 
 /* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
  * [lo, hi]: w there is evaluated when read */
@@ -110,6 +112,12 @@ struct rs_roll {
   int prof_next;         /* a reference's profile (its top), in use once its increment is
                             committed, with ref_c_next its deep scale */
   double ref_c_next;
+  int ref_from;          /* > 0: this increment's integration is a new reference from that
+                            node up, the nodes below rebased (roll_reference_rebase) */
+  int ref_deep;          /* references from a node above the core since the last from it */
+  int ref_deep_max;      /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
+  long deep_references;  /* references from a node above the core so far */
+  int ref_from_last;     /* the node the last of them started from */
   double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
   double start_ref[2];   /* the reference's (w, L) at that start (roll_start_release) */
   double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
@@ -165,7 +173,7 @@ rs_status roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_profile.c */
-int roll_profile_build(rs_roll *roll, int top);
+int roll_profile_build(rs_roll *roll, int from, int top);
 double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
 
 /* roll_air.c */
@@ -174,7 +182,9 @@ void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, in
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);
 void roll_wstep_store(rs_roll *roll, int hi);
-void roll_start_release(rs_roll *roll);
+void roll_start_release(rs_roll *roll, rs_status st);
+void roll_reference_extend(rs_roll *roll);
+void roll_reference_rebase(rs_roll *roll, int from);
 
 /* roll_increment.c */
 typedef struct roll_segments {

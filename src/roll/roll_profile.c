@@ -83,16 +83,16 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   *B = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
 }
 
-/* roll_profile_layer's Taylor sums for the layers 1..top-2 (both neighbours' slopes
+/* roll_profile_layer's Taylor sums for the layers in..top-2 (in >= 1: both neighbours' slopes
  * centred), written out in a loop over arrays passed as such, that vectorises; returns
  * nonzero when some layer's sums do not hold (the caller does those again) */
-static int64_t roll_profile_inner(int top, const double *restrict d, const double *restrict u,
+static int64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
                                   double *restrict Cf, double *restrict A, double *restrict B)
 {
   int64_t wide = 0; /* as wide as a double's compare mask: the OR stays in vector registers */
-  for (int j = 1; j + 1 < top; ++j) {
+  for (int j = in; j + 1 < top; ++j) {
     const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
     const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
     wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof_top -1 */
@@ -130,18 +130,19 @@ static int64_t roll_profile_inner(int top, const double *restrict d, const doubl
  * between the nodes was 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
-int roll_profile_build(rs_roll *roll, int top)
+int roll_profile_build(rs_roll *roll, int from, int top)
 {
   double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
   const double *restrict E = roll->Er_ref, *restrict P = roll->P_node, Eth = roll->p.E_theta;
-  /* scratch, free at a reference with one layer and its load beneath (until its increment
-   * freezes the deep part: roll_block_increment): u (block_share) and d (scan_eps); the
-   * moduli a little above P, then the coefficients (P_mean, dsh, lazy_a, lazy_b) */
+  /* scratch, free once a reference's increment is committed, above the lazy nodes: u
+   * (block_share) and d (scan_eps); the moduli a little above P, then the coefficients
+   * (P_mean, dsh, lazy_a, lazy_b) */
   double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
   double *Q = roll->dsh, *Cf = roll->P_mean; /* the arrays Pp and Ep were: not restrict */
   double *restrict A = roll->lazy_a, *restrict B = roll->lazy_b;
-  for (int b0 = 0; b0 <= top; b0 += RS_PROFILE_BLOCK) {
+  const int lo = from > 0 ? from - 1 : 0; /* the first layer's slopes read its neighbour */
+  for (int b0 = lo; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
     double *Pp = roll->P_mean, *Ep = roll->dsh;
     /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
@@ -152,42 +153,104 @@ int roll_profile_build(rs_roll *roll, int top)
   }
   /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
   int64_t wide = 0;
-  for (int j = 0; j < top; ++j) {
+  for (int j = lo; j < top; ++j) {
     wide |= -(int64_t)(fabs(E[j] - E[j + 1]) >= 0.015 * (E[j] + E[j + 1]));
     d[j] = roll_log_ratio_small((E[j] - E[j + 1]) / (E[j] + E[j + 1]));
   }
-  for (int j = 0; wide && j < top; ++j)
+  for (int j = lo; wide && j < top; ++j)
     if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1]))) d[j] = log(E[j] / E[j + 1]);
   /* the layers inside (their neighbours' slopes both centred) in a loop that vectorises,
-   * the two end layers on their own; then the layers whose Taylor sums do not hold */
-  wide = roll_profile_inner(top, d, u, E, w, x, Eth, Q, Cf, A, B);
-  for (int j = 0; j < top; ++j) {
+   * the end layers on their own; then the layers whose Taylor sums do not hold */
+  const int in = from > 1 ? from : 1;
+  wide = roll_profile_inner(in, top, d, u, E, w, x, Eth, Q, Cf, A, B);
+  if (from == 0) roll_profile_layer(0, top, d, u, E, w, x, Eth, Q, Cf, A, B);
+  if (top - 1 > 0 && top - 1 >= from)
+    roll_profile_layer(top - 1, top, d, u, E, w, x, Eth, Q + top - 1, Cf + top - 1,
+                       A + top - 1, B + top - 1);
+  for (int j = in; wide && j + 1 < top; ++j) {
     const double z = (2.0 + (w[j] + w[j + 1])) * (x[j + 1] - x[j]);
-    const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
-    const int series = fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (dm - dp)) < 0.03;
-    if (j == 0 || j + 1 == top || (wide && !series))
+    if (!(fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1])) < 0.03))
       roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, A + j, B + j);
-    if (j == 0 && !wide && top > 2) j = top - 2; /* only the last one left */
   }
-  pw[0] = 0.0;
-  pL[0] = 0.0;
+  /* from the core, where p = 0; or on from the profile's values at from (a reference that
+   * keeps the nodes below it, roll_reference_extend) */
+  if (from == 0) {
+    pw[0] = 0.0;
+    pL[0] = 0.0;
+  }
   /* the chains in registers: through the arrays each node would wait for its store */
-  double pwj = 0.0, pLj = 0.0;
-  for (int j = 0; j < top; ++j) {
+  double pwj = pw[from], pLj = pL[from];
+  for (int j = from; j < top; ++j) {
     pLj += A[j] * pwj + B[j];
     pwj = Q[j] * pwj + Cf[j];
     pL[j + 1] = pLj;
     pw[j + 1] = pwj;
   }
-  double m = 0.0;
+  /* the bound over nodes 0..top: the nodes below from keep theirs, within prof_max */
+  double m = from > 0 ? roll->prof_max : 0.0;
   int64_t nan = 0;
-  for (int j = 1; j <= top; ++j) {
+  for (int j = from + 1; j <= top; ++j) {
     m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
     nan |= -(int64_t)(pL[j] != pL[j]);
   }
-  if (nan) m = NAN;
+  if (nan || m != m) m = NAN;
   roll->prof_max = m;
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
+}
+
+/* A new reference from node `from` up (roll_reuse_start), before it is integrated: below
+ * the node the reference's values take their first-order correction for the drift since
+ * the last reference, C = ref_c, for good,
+ *     (w, L)_j += C (p_w, p_L)_j,   e_j *= exp(C (p_L,j - p_L,from)),   E_ref,j = E_r,j,
+ * the shape so that it stays exp(L) up to a constant, and continuous at the node, where the
+ * integration's shape joins it (roll_add_one). The drift there restarts from 0: what the
+ * correction leaves is second order (the start-node search bounded it). Every node was
+ * taken out of the lazy zone first (roll_integrate), so that the shape may change. */
+void roll_reference_rebase(rs_roll *roll, int from)
+{
+  const double C = roll->ref_c, pLf = roll->prof_L[from];
+  double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->shape_e;
+  double *restrict Eref = roll->Er_ref;
+  const double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L, *restrict E = roll->Er;
+  int64_t wide = 0;
+  for (int j = 0; j <= from; ++j) {
+    const double a = C * (pL[j] - pLf);
+    wide |= -(int64_t)!(fabs(a) < 0.03);
+    w[j] += C * pw[j];
+    L[j] += C * pL[j];
+    e[j] *= roll_exp_small(a);
+    Eref[j] = E[j];
+  }
+  for (int j = 0; wide && j <= from; ++j) {
+    const double a = C * (pL[j] - pLf);
+    if (!(fabs(a) < 0.03)) e[j] = e[j] / roll_exp_small(a) * exp(a);
+  }
+  /* |p_L| <= prof_max: the shape's bound grows by at most the factor */
+  roll->shape_max *= exp(2.0 * fabs(C) * roll->prof_max);
+  /* the drift is in the rebased values now: should this increment fail, the next starts
+   * at or below the node (prof_top, roll_integrate) uncorrected */
+  roll->ref_c = 0.0;
+}
+
+/* A new reference from node ref_from up, its increment committed: the nodes above it hold
+ * this integration's (w, L) and modulus (roll_integrate), the shape follows it
+ * (roll_add_one, roll_block_increment); below they were rebased (roll_reference_rebase).
+ * The profile goes on from the node: to first order the drift to come below it is, as
+ * before, C times the shape's forcing, so p there is what it was. The drift since is this
+ * increment's own deep scale; the reference's age starts again. */
+void roll_reference_extend(rs_roll *roll)
+{
+  const int from = roll->ref_from, top = roll->ref_top;
+  roll->ref_age = 0;
+  roll->ref_deep++;
+  roll->deep_references++;
+  roll->ref_from_last = from;
+  if (!(from > 0 && from <= roll->prof_top && top > from)) {
+    roll->prof_top = -1;
+    return;
+  }
+  roll->prof_top = roll_profile_build(roll, from, top); /* w stored to top: the caller */
+  roll->ref_c = roll->c_deep;
 }
 
 /* The start-node search's error bound for a start s0 (roll_reuse_start), in units of T0/s,

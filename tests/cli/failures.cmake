@@ -14,7 +14,7 @@ rs_cli_fails(fail_max_steps 3
   [[^reelsim:   1 of 200 layers were wound; no output written$]]
   -- ${SC}/small.yaml --set numerics.max_steps=2)
 rs_cli_fails(fail_max_steps_mid_roll 3
-  [[solver failure: winding layers ([0-9]+)-[0-9]+ of 200 \(r = 0\.05[0-9]+ m\): CVODE needed more than 30 steps]]
+  [[solver failure: winding layers ([0-9]+)-[0-9]+ of 200 \(r = 0\.0[56][0-9]+ m\): CVODE needed more than 30 steps]]
   [[^reelsim:   [1-9][0-9]* of 200 layers were wound; no output written$]]
   -- ${SC}/small.yaml --set numerics.max_steps=30 --set numerics.rtol=1e-5)
 rs_cli_fails(fail_radial_modulus_negative 3

@@ -77,7 +77,7 @@ static rs_status add_two_step(rs_roll *roll, double T0)
     roll_block_increment(roll, k_old, 1, &T0, NULL);
     st = roll_commit(roll, 1, &T0);
   }
-  roll_start_release(roll);
+  roll_start_release(roll, st);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;

@@ -72,7 +72,7 @@ static void profile_first_order(void)
   /* the reference's shape (any scale: the profile is linear in it) */
   for (int j = 0; j <= k; ++j) e[j] = exp(L0[j] - L0[k]);
   memcpy(roll->shape_e, e, sizeof e);
-  CHECK(roll_profile_build(roll, k) == k);
+  CHECK(roll_profile_build(roll, 0, k) == k);
   memcpy(pw, roll->prof_w, sizeof pw);
   memcpy(pL, roll->prof_L, sizeof pL);
   /* C for a 2 % drift at most: eps_j = kappa_j |C| e_j, kappa = 1/(P + K1) (Pfeiffer) */
@@ -208,9 +208,9 @@ static void film_span(void)
     const double pc = rs_roll_core_pressure(ref);
     const double ea = fabs(rs_roll_core_pressure(on) - pc) / pc;
     const double eb = fabs(rs_roll_core_pressure(first) - pc) / pc;
-    printf("  corrected: %ld steps, %ld from the core, core error %.3e; first-order: %ld steps, "
-           "%ld from the core, core error %.3e\n", a.cvode_steps, a.full_integrations, ea,
-           b.cvode_steps, b.full_integrations, eb);
+    printf("  corrected: %ld steps, %ld from the core, %ld from a node above it, core error "
+           "%.3e; first-order: %ld steps, %ld from the core, core error %.3e\n", a.cvode_steps,
+           a.full_integrations, on->deep_references, ea, b.cvode_steps, b.full_integrations, eb);
     CHECK_LT((double)a.cvode_steps, 0.8 * (double)b.cvode_steps);
     CHECK_LT((double)a.full_integrations, 0.5 * (double)b.full_integrations);
     CHECK_LT(ea, 1.25 * eb);
@@ -285,8 +285,91 @@ static void frozen_block(void)
   rs_roll_destroy(&a);
 }
 
+/* one layer at a time onto a roll made with at most `deep` references from a node above
+ * the core in a row */
+static rs_roll *wind_deep(const rs_roll_params *p, int n, double T0, int deep)
+{
+  rs_roll *roll = NULL;
+  CHECK(rs_roll_create(p, &roll) == RS_OK);
+  if (!roll) return NULL;
+  roll->ref_deep_max = deep;
+  for (int i = 0; i < n; ++i)
+    if (!add_one(roll, T0)) {
+      rs_roll_destroy(&roll);
+      return NULL;
+    }
+  return roll;
+}
+
+/* references from a node above the core (roll_reference_rebase): they happen, they
+ * replace most integrations from the core, and the roll is as accurate against a tight
+ * reference as with every reference from the core */
+static void deep_reference(void)
+{
+  enum { n = 1500 };
+  const double T0 = 682.5, t = 70e-6;
+  rs_roll_params p = pfeiffer_params(0.0762, t, 3.5e9, 5e3, 60, 1e9, n);
+  p.reuse = RS_REUSE_OFF;
+  rs_roll *ref = wind(&p, n, 1, T0);
+  p.reuse = RS_REUSE_ON;
+  p.rtol = 1e-5;
+  rs_roll *deep = wind_deep(&p, n, T0, RS_REF_DEEP_MAX), *core = wind_deep(&p, n, T0, 0);
+  if (ref && deep && core) {
+    rs_roll_stats a, b;
+    rs_roll_get_stats(deep, &a);
+    rs_roll_get_stats(core, &b);
+    const errs ea = errors(deep, ref, n, T0, t), eb = errors(core, ref, n, T0, t);
+    printf("  deep references %ld, from the core %ld (every one from the core: %ld, deep %ld)\n",
+           deep->deep_references, a.full_integrations, b.full_integrations,
+           core->deep_references);
+    printf("  errors: core %.3e sigma_r %.3e sigma_theta %.3e; every one from the core: core "
+           "%.3e sigma_r %.3e sigma_theta %.3e\n", ea.core, ea.sr, ea.st, eb.core, eb.sr, eb.st);
+    CHECK(core->deep_references == 0);
+    CHECK(deep->deep_references >= 10);
+    CHECK(a.full_integrations < b.full_integrations);
+    /* the remainders the rebasing leaves: at most 4 % of rtol an increment (measured
+     * 4.5e-6 against 4.0e-6 on the core pressure) */
+    CHECK_LT(ea.core, 1.2 * eb.core + 0.04 * p.rtol);
+    CHECK_LT(ea.sr, 1.2 * eb.sr + 0.04 * p.rtol);
+    CHECK_LT(ea.st, 1.2 * eb.st + 0.04 * p.rtol);
+  }
+  rs_roll_destroy(&ref);
+  rs_roll_destroy(&deep);
+  rs_roll_destroy(&core);
+}
+
+/* a reference from a node above the core whose increment overflows: the nodes below were
+ * rebased (the drift in their values, ref_c 0) and the roll winds on as a twin that never
+ * saw the failure */
+static void failed_deep_reference(void)
+{
+  enum { n = 1500 };
+  rs_roll *a = newsprint(n, RS_REUSE_ON, RS_LUMP_CORRECTED), *b = newsprint(n, RS_REUSE_ON, RS_LUMP_CORRECTED);
+  if (!a || !b) goto out;
+  while (!(a->deep_references >= 2 && a->ref_deep < a->ref_deep_max && a->ref_age >= 32))
+    if (!add_one(a, 500.0)) goto out;
+  while (b->n < a->n)
+    if (!add_one(b, 500.0)) goto out;
+  const double huge = 1e308, c_before = a->ref_c;
+  const long deep = a->deep_references;
+  CHECK(rs_roll_add_layers(a, 1, &huge) == RS_ERR_SOLVER);
+  printf("  after %ld deep references, ref_c %g -> %g\n", deep, c_before, a->ref_c);
+  CHECK(c_before != 0.0 && a->ref_c == 0.0); /* rebased, then failed */
+  CHECK(a->deep_references == deep);
+  for (int i = 0; i < 50; ++i) CHECK(add_one(a, 500.0) && add_one(b, 500.0));
+  const double pa = rs_roll_core_pressure(a), pb = rs_roll_core_pressure(b);
+  printf("  core pressure %.9g, twin %.9g\n", pa, pb);
+  CHECK(isfinite(pa) && fabs(pa - pb) < 1e-5 * pb);
+  CHECK(a->deep_references > deep); /* and the next ones are deep again */
+out:
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
 static const check_case cases[] = {{"profile_first_order", profile_first_order},
                                    {"failed_reference", failed_reference},
+                                   {"deep_reference", deep_reference},
+                                   {"failed_deep_reference", failed_deep_reference},
                                    {"frozen_block", frozen_block},
                                    {"constant_modulus", constant_modulus},
                                    {"vs_tight_reference", vs_tight_reference},
