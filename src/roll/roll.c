@@ -259,7 +259,10 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     roll_gather_pressure(roll, top, roll->P_mean);
     st = roll_set_modulus(roll, top);
     if (st == RS_OK) st = roll_integrate(roll, top);
-    if (st) return st;
+    if (st) {
+      roll_start_release(roll, st);
+      return st;
+    }
     roll_block_increment(roll, k_old, m, T0, NULL);
     st = roll_commit(roll, m, T0);
   }

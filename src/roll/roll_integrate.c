@@ -205,7 +205,7 @@ static int roll_reuse_start(rs_roll *roll)
    * hundredth of the tolerance, and after RS_REF_DEEP_MAX (4) such references one is
    * from the core, so that the remainders left add up to at most 4 % of it (measured:
    * at a quarter of the tolerance the 1500-layer newsprint roll's core pressure error
-   * grew from 4.0e-6 to 1.5e-5 at rtol 1e-5, at a hundredth 4.5e-6; test_roll_profile).
+   * grew from 4.0e-6 to 1.5e-5 at rtol 1e-5, at a hundredth 4.4e-6; test_roll_profile).
    * And no higher than the last such reference's node: every such reference starts from
    * values the last one from the core left (rebased), not from those of a chain of
    * restarts, each of which adds CVODE's start-up error at its node (measured on

@@ -163,7 +163,7 @@ int roll_profile_build(rs_roll *roll, int from, int top)
    * the end layers on their own; then the layers whose Taylor sums do not hold */
   const int in = from > 1 ? from : 1;
   wide = roll_profile_inner(in, top, d, u, E, w, x, Eth, Q, Cf, A, B);
-  if (from == 0) roll_profile_layer(0, top, d, u, E, w, x, Eth, Q, Cf, A, B);
+  if (from == 0 && top > 0) roll_profile_layer(0, top, d, u, E, w, x, Eth, Q, Cf, A, B);
   if (top - 1 > 0 && top - 1 >= from)
     roll_profile_layer(top - 1, top, d, u, E, w, x, Eth, Q + top - 1, Cf + top - 1,
                        A + top - 1, B + top - 1);
@@ -212,24 +212,22 @@ void roll_reference_rebase(rs_roll *roll, int from)
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->shape_e;
   double *restrict Eref = roll->Er_ref;
   const double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L, *restrict E = roll->Er;
-  int64_t wide = 0;
   for (int j = 0; j <= from; ++j) {
     const double a = C * (pL[j] - pLf);
-    wide |= -(int64_t)!(fabs(a) < 0.03);
     w[j] += C * pw[j];
     L[j] += C * pL[j];
-    e[j] *= roll_exp_small(a);
+    e[j] *= fabs(a) < 0.03 ? roll_exp_small(a) : exp(a);
     Eref[j] = E[j];
-  }
-  for (int j = 0; wide && j <= from; ++j) {
-    const double a = C * (pL[j] - pLf);
-    if (!(fabs(a) < 0.03)) e[j] = e[j] / roll_exp_small(a) * exp(a);
   }
   /* |p_L| <= prof_max: the shape's bound grows by at most the factor */
   roll->shape_max *= exp(2.0 * fabs(C) * roll->prof_max);
   /* the drift is in the rebased values now: should this increment fail, the next starts
-   * at or below the node (prof_top, roll_integrate) uncorrected */
+   * at or below the node, uncorrected (the nodes above hold the last reference's values,
+   * whose drift C no longer tells: as roll_integrate marks them for an integration from
+   * the node, but before anything can fail) */
   roll->ref_c = 0.0;
+  roll->ref_top = from;
+  roll->prof_top = roll->prof_top < from ? roll->prof_top : from;
 }
 
 /* A new reference from node ref_from up, its increment committed: the nodes above it hold
@@ -240,7 +238,9 @@ void roll_reference_rebase(rs_roll *roll, int from)
  * increment's own deep scale; the reference's age starts again. */
 void roll_reference_extend(rs_roll *roll)
 {
-  const int from = roll->ref_from, top = roll->ref_top;
+  /* as far as the shape followed the integration (not where its scale would overflow) */
+  const int from = roll->ref_from;
+  const int top = roll->ref_top < roll->shape_top ? roll->ref_top : roll->shape_top;
   roll->ref_age = 0;
   roll->ref_deep++;
   roll->deep_references++;
