@@ -134,13 +134,23 @@ static errs errors(const rs_roll *a, const rs_roll *ref, int n, double T0, doubl
   return e;
 }
 
+/* the 1500-layer newsprint roll of vs_tight_reference and deep_reference, its parameters
+ * in *p, and its reference: every increment from the core at the default rtol 1e-10 */
+enum { TIGHT_N = 1500 };
+static const double TIGHT_T0 = 682.5, TIGHT_T = 70e-6;
+static rs_roll *tight_newsprint(rs_roll_params *p)
+{
+  *p = pfeiffer_params(0.0762, TIGHT_T, 3.5e9, 5e3, 60, 1e9, TIGHT_N);
+  p->reuse = RS_REUSE_OFF;
+  return wind(p, TIGHT_N, 1, TIGHT_T0);
+}
+
 static void vs_tight_reference(void)
 {
-  enum { n = 1500 };
-  const double T0 = 682.5, t = 70e-6;
-  rs_roll_params p = pfeiffer_params(0.0762, t, 3.5e9, 5e3, 60, 1e9, n);
-  p.reuse = RS_REUSE_OFF;
-  rs_roll *ref = wind(&p, n, 1, T0);
+  enum { n = TIGHT_N };
+  const double T0 = TIGHT_T0, t = TIGHT_T;
+  rs_roll_params p;
+  rs_roll *ref = tight_newsprint(&p);
   if (!ref) return;
   const double rtols[2] = {1e-5, 1e-6};
   errs prev = {0.0, 0.0, 0.0};
@@ -306,11 +316,10 @@ static rs_roll *wind_deep(const rs_roll_params *p, int n, double T0, int deep)
  * reference as with every reference from the core */
 static void deep_reference(void)
 {
-  enum { n = 1500 };
-  const double T0 = 682.5, t = 70e-6;
-  rs_roll_params p = pfeiffer_params(0.0762, t, 3.5e9, 5e3, 60, 1e9, n);
-  p.reuse = RS_REUSE_OFF;
-  rs_roll *ref = wind(&p, n, 1, T0);
+  enum { n = TIGHT_N };
+  const double T0 = TIGHT_T0, t = TIGHT_T;
+  rs_roll_params p;
+  rs_roll *ref = tight_newsprint(&p);
   p.reuse = RS_REUSE_ON;
   p.rtol = 1e-5;
   rs_roll *deep = wind_deep(&p, n, T0, RS_REF_DEEP_MAX), *core = wind_deep(&p, n, T0, 0);
