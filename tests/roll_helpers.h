@@ -1,5 +1,5 @@
 /* Helpers shared by the roll-engine tests (validation/test_roll.c, hard/test_hard.c,
- * unit/test_roll_state.c): parameters of a linear-law or a Pfeiffer roll, winding at a constant tension, and Altmann's closed
+ * unit/test_roll_state.c): parameters of a linear-law, Pfeiffer or Hakiel-quadratic roll, winding at a constant tension, and Altmann's closed
  * form for constant E_r. Needs check.h included first. */
 #ifndef RS_TESTS_ROLL_HELPERS_H
 #define RS_TESTS_ROLL_HELPERS_H
@@ -35,6 +35,20 @@ static inline rs_roll_params pfeiffer_params(double rc, double t, double Et, dou
   p.radial.law = RS_RADIAL_PFEIFFER;
   p.radial.K1 = K1;
   p.radial.K2 = K2;
+  CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
+  return p;
+}
+
+/* E_r = C0 + C1 P + C2 P^2 (Hakiel's quadratic stack law) */
+static inline rs_roll_params hakiel_params(double rc, double t, double Et, double C0, double C1,
+                                           double C2, double Ec, int n)
+{
+  rs_roll_params p = linear_params(rc, t, Et, 1.0, Ec, n);
+  p.radial.law = RS_RADIAL_HAKIEL;
+  p.radial.n_coef = 3;
+  p.radial.C[0] = C0;
+  p.radial.C[1] = C1;
+  p.radial.C[2] = C2;
   CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
   return p;
 }

@@ -516,15 +516,9 @@ static void taper_through_zero(void)
 static void hakiel_vs_table(void)
 {
   const int n = 800;
-  rs_roll_params p = linear_params(0.0762, 70e-6, 3.5e9, 1.0, INFINITY, n);
+  rs_roll_params p = hakiel_params(0.0762, 70e-6, 3.5e9, 2e4, 40.0, 1e-4, INFINITY, n);
   p.rtol = 1e-8;
   p.atol = 0;
-  p.radial.law = RS_RADIAL_HAKIEL;
-  p.radial.n_coef = 3;
-  p.radial.C[0] = 2e4;
-  p.radial.C[1] = 40.0;
-  p.radial.C[2] = 1e-4;
-  CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
   rs_roll *hk = wind(&p, n, 1, 400.0);
   if (!hk) return;
   CHECK(all_finite(hk));

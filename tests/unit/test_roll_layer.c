@@ -43,14 +43,9 @@ static double film[CAP + 1];
 
 static rs_roll *newsprint(int quadratic_air)
 {
-  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, CAP);
+  rs_roll_params p = quadratic_air ? hakiel_params(0.0762, 70e-6, 3.5e9, 2e6, 60.0, 1e-6, 1e9, CAP)
+                                    : pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, CAP);
   if (quadratic_air) {
-    p.radial.law = RS_RADIAL_HAKIEL;
-    p.radial.n_coef = 3;
-    p.radial.C[0] = 2e6;
-    p.radial.C[1] = 60.0;
-    p.radial.C[2] = 1e-6;
-    CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
     for (int j = 0; j <= CAP; ++j) film[j] = 0.5e-6;
     p.air_film = film;
     p.air_pressure = 101325.0;

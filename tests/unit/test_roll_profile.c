@@ -196,13 +196,7 @@ static void film_span(void)
   enum { n = 12000 };
   const double t = (0.68 - 0.0762) / 100633; /* the 6 um film of docs/performance.md */
   /* models/pet-film.yaml's stack law (Hakiel's quadratic) */
-  rs_roll_params p = linear_params(0.0762, t, 4.5e9, 1.0, 1e10, n);
-  p.radial.law = RS_RADIAL_HAKIEL;
-  p.radial.n_coef = 3;
-  p.radial.C[0] = 1e6;
-  p.radial.C[1] = 60.0;
-  p.radial.C[2] = 2e-6;
-  CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
+  rs_roll_params p = hakiel_params(0.0762, t, 4.5e9, 1e6, 60.0, 2e-6, 1e10, n);
   p.rtol = 1e-9;
   p.atol = 0.0;
   p.reuse = RS_REUSE_FIRST_ORDER; /* a reference independent of the correction */
