@@ -7,14 +7,11 @@
 
 #include "roll/roll_internal.h"
 
-/* exp(d) for the decay over one layer, d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
+/* The decay over one layer is exp(d), d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
  * the Taylor sum to d^7 (relative error d^8/8! < 2e-17 for |d| < 0.03) costs 8 flops where
  * exp() costs ~20 ns, and the product down the roll carries ~N x 1e-16 of rounding (1e-12
- * for 10,000 layers). A larger step (a very soft web, g t / r > 0.03) takes exp(). */
-static inline double roll_exp_step(double d)
-{
-  return fabs(d) >= 0.03 ? exp(d) : roll_exp_small(d);
-}
+ * for 10,000 layers). A larger step (a very soft web, g t / r > 0.03) takes exp()
+ * (roll_exp_step). */
 
 /* e[lo..hi) *= s, what falls below 1e-290 cleared (a plain loop: it vectorises) */
 static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s)

@@ -15,6 +15,8 @@
 #ifndef REELSIM_ROLL_INTERNAL_H
 #define REELSIM_ROLL_INTERNAL_H
 
+#include <math.h>
+
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 
@@ -140,6 +142,13 @@ static inline double roll_exp_small(double d)
 {
   return 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
          d * (1.0 / 720 + d * (1.0 / 5040)))))));
+}
+
+/* e^d: the Taylor sum where it holds (|d| < 0.03: a layer's decay, a change of ln g^2 within
+ * a layer), exp() beyond */
+static inline double roll_exp_step(double d)
+{
+  return fabs(d) >= 0.03 ? exp(d) : roll_exp_small(d);
 }
 
 /* ln(a/b) = 2 atanh(z), z = (a - b)/(a + b), by its series to z^9: relative error below

@@ -70,7 +70,7 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
   const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
   const double g0 = Eth / E[j], g1 = Eth / E[j + 1];
-  const double gm = g0 * (fabs(dv) < 0.03 ? roll_exp_small(dv) : exp(dv));
+  const double gm = g0 * roll_exp_step(dv);
   const double b0 = g0 * u[j], b1 = g1 * u[j + 1];
   const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.125 * (um - up));
   const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
@@ -216,7 +216,7 @@ void roll_reference_rebase(rs_roll *roll, int from)
     const double a = C * (pL[j] - pLf);
     w[j] += C * pw[j];
     L[j] += C * pL[j];
-    e[j] *= fabs(a) < 0.03 ? roll_exp_small(a) : exp(a);
+    e[j] *= roll_exp_step(a);
     Eref[j] = E[j];
   }
   /* |p_L| <= prof_max: the shape's bound grows by at most the factor */
