@@ -100,15 +100,12 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
     const double b0 = g0 * u[j], b1 = Eth / E[j + 1] * u[j + 1];
     const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.0625 * (u[j + 1] - u[j - 1] - u[j + 2] + u[j]));
     const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
-    const double phi0 = 1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120))));
-    Q[j] = 1.0 - z * (1.0 - z * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120)))));
-    Cf[j] = h * (b0 * phi0 +
-                 a1 * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))))) +
-                 a2 * (1.0 / 3 - z * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520))))));
-    A[j] = h * phi0;
-    B[j] = h * h * (b0 * (1.0 / 2 - z * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720))))) +
-                    a1 * (1.0 / 6 - z * (1.0 / 24 - z * (1.0 / 120 - z * (1.0 / 720 - z * (1.0 / 5040))))) +
-                    a2 * (1.0 / 12 - z * (1.0 / 60 - z * (1.0 / 360 - z * (1.0 / 2520 - z * (1.0 / 20160))))));
+    double q, phi[3], psi[3];
+    roll_profile_weights(z, 1, &q, phi, psi);
+    Q[j] = q;
+    Cf[j] = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
+    A[j] = h * phi[0];
+    B[j] = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
   }
   return wide;
 }
