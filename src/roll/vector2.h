@@ -31,7 +31,9 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
 int rs_roll_newton2_attach(SUNNonlinearSolver S);
 /* Declares the right-hand side to be f(t, w, L) = (a(t) + p w + q w^2, b(t) + w): the
  * solver then solves each corrector equation exactly (a quadratic in w, one right-hand
- * side a step) instead of by Newton's method, and forms no Jacobian. */
+ * side a step) instead of by Newton's method, forms no Jacobian, and skips the setups
+ * CVODE asks for (they reset the convergence-rate estimate, which only Newton's
+ * convergence test reads). */
 void rs_roll_newton2_set_quadratic(SUNNonlinearSolver S, double p, double q);
 /* The corrector equation's exact solution for such a right-hand side: from the residual
  * R = F(ycor) at the current correction, with w the state's first component there, the
