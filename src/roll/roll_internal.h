@@ -47,15 +47,17 @@ struct rs_roll {
   double *lg2;          /* ln g^2, computed when the interpolation first needs it */
   unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch */
   /* the Hermite cubic of the interval last evaluated (CVODE's calls cluster): its index,
-   * the epoch it belongs to, and ln g^2 and its slopes at the two ends */
+   * the epoch it belongs to, and the cubic of ln g^2 in it */
   int hj;
   unsigned long long hepoch;
-  double hy0, hy1, hm0, hm1, hg0; /* hg0 = e^hy0 = g^2 at the interval's lower node */
+  double hy0, hm0, hc2, hc3, hg0; /* ln g^2 = hy0 + f (hm0 + f (hc2 + f hc3)) in the
+                                     interval; hg0 = e^hy0 = g^2 at its lower node */
   /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
    * its end all look at the same x */
   double gx, g2x, dg2x, gxi; /* gxi: the layer coordinate (r - r_c)/t at gx */
   unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
+  double inv_caliper;   /* 1 / p.caliper: the layer coordinate by a multiplication */
   double *w, *L;        /* (w, ln y) at the nodes */
   /* With one layer wound and its load beneath it only a start node reads w: the last
    * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
@@ -142,6 +144,17 @@ static inline double roll_exp_small(double d)
 {
   return 1.0 + d * (1.0 + d * (1.0 / 2 + d * (1.0 / 6 + d * (1.0 / 24 + d * (1.0 / 120 +
          d * (1.0 / 720 + d * (1.0 / 5040)))))));
+}
+
+/* the same sum by Estrin's scheme: four dependent multiply-adds instead of seven, for
+ * the right-hand side, which CVODE waits for (a loop over an array takes roll_exp_small:
+ * there the throughput counts, and Horner's form has fewer operations) */
+static inline double roll_exp_small_estrin(double d)
+{
+  const double d2 = d * d, d4 = d2 * d2;
+  const double a = 1.0 + d, b = 1.0 / 2 + d * (1.0 / 6), c = 1.0 / 24 + d * (1.0 / 120),
+               e = 1.0 / 720 + d * (1.0 / 5040);
+  return (a + d2 * b) + d4 * (c + d2 * e);
 }
 
 /* e^d: the Taylor sum where it holds (|d| < 0.03: a layer's decay, a change of ln g^2 within

@@ -43,7 +43,7 @@ static inline double roll_radius_at(rs_roll *roll, double x)
     roll->r_anchor = exp(x);
     return roll->r_anchor;
   }
-  return roll->r_anchor * roll_exp_small(d);
+  return roll->r_anchor * roll_exp_small_estrin(d);
 }
 
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
@@ -51,7 +51,7 @@ static inline double roll_radius_at(rs_roll *roll, double x)
  * interpolant is C^1), which the node interpolation needs. */
 static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
 {
-  const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) / roll->p.caliper;
+  const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) * roll->inv_caliper;
   roll->gxi = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
@@ -61,24 +61,25 @@ static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
   }
   double f = xi - j;
   if (j != roll->hj || roll->hepoch != roll->epoch) {
-    double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
-    roll->hm0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
-    roll->hm1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
+    const double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
+    const double m0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
+    const double m1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
+    /* the cubic as y0 + f (m0 + f (c2 + f c3)): three dependent multiply-adds a call */
     roll->hy0 = y0;
-    roll->hy1 = y1;
+    roll->hm0 = m0;
+    roll->hc2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1;
+    roll->hc3 = 2.0 * (y0 - y1) + m0 + m1;
     roll->hg0 = roll->p.E_theta / roll->Er[j]; /* = e^y0 */
     roll->hj = j;
     roll->hepoch = roll->epoch;
   }
-  const double y0 = roll->hy0, y1 = roll->hy1, m0 = roll->hm0, m1 = roll->hm1;
-  double f2 = f * f, f3 = f2 * f;
-  double v = (2 * f3 - 3 * f2 + 1) * y0 + (f3 - 2 * f2 + f) * m0 + (-2 * f3 + 3 * f2) * y1 + (f3 - f2) * m1;
+  const double m0 = roll->hm0, c2 = roll->hc2, c3 = roll->hc3;
   /* e^v = g^2 at the node times e^(v - y0), a change of ln g^2 within one layer: the
    * Taylor sum where it is small (a tenth of the cost of exp(), a right-hand side at a time) */
-  const double dv0 = v - y0;
-  double g2 = fabs(dv0) < 0.03 ? roll->hg0 * roll_exp_small(dv0) : exp(v);
-  double dv = (6 * f2 - 6 * f) * (y0 - y1) + (3 * f2 - 4 * f + 1) * m0 + (3 * f2 - 2 * f) * m1;
-  *dg2 = g2 * dv * r / roll->p.caliper;
+  const double dv0 = f * (m0 + f * (c2 + f * c3));
+  double g2 = fabs(dv0) < 0.03 ? roll->hg0 * roll_exp_small_estrin(dv0) : exp(roll->hy0 + dv0);
+  const double dv = m0 + f * (2.0 * c2 + 3.0 * c3 * f);
+  *dg2 = g2 * dv * (r * roll->inv_caliper);
   return g2;
 }
 
@@ -88,7 +89,7 @@ static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
 double roll_layer_coord_at(rs_roll *roll, double x)
 {
   if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
-  return (roll_radius_at(roll, x) - roll->p.core_radius) / roll->p.caliper;
+  return (roll_radius_at(roll, x) - roll->p.core_radius) * roll->inv_caliper;
 }
 
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
