@@ -128,6 +128,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (roll->p.max_steps <= 0) roll->p.max_steps = 100000;
   roll->shift = params->placement == RS_LOAD_BENEATH;
   roll->inv_caliper = 1.0 / params->caliper;
+  roll->lg2_range_max = RS_LG2_RANGE_MAX;
+  roll->lg2_hi = -1; /* no range yet */
   roll->kc = (isinf(params->core_stiffness) ? 0.0 : params->E_theta / params->core_stiffness) +
              params->nu_rtheta - 1.0;
   size_t cap = (size_t)params->max_layers;

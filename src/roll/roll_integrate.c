@@ -394,6 +394,8 @@ rs_status roll_integrate(rs_roll *roll, int k)
    * where the last integration ended */
   roll->x_anchor = x0;
   roll->r_anchor = exp(x0);
+  /* ln g^2 at the nodes the steps may look at, in one pass, when they are few */
+  if (k - first <= roll->lg2_range_max) roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
   roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
   const double g2_start = roll_g2_at(roll, x0, NULL);
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||

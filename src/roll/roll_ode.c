@@ -2,13 +2,16 @@
  *     w' = g^2 - 1 - 2 w - w^2,   L' = w,     g^2(x) = E_theta / E_r(P(x)),
  * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
  * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 
 #include "roll/roll_internal.h"
+#include "util/log_vec.h"
 
-/* ln g^2 at node j, formed when first needed in an epoch. A neighbour's value is usually
+/* ln g^2 at node j: from the pass over the integration's nodes (roll_lg2_range), or else
+ * formed when first needed in an epoch. A neighbour's value is usually
  * there already (an interval needs nodes j-1..j+2, and the steps move up the roll): then
  *     ln g_j^2 = ln g_k^2 + ln(E_k / E_j) = ln g_k^2 + 2 atanh(z),  z = (E_k - E_j)/(E_k + E_j),
  * by the series to z^9 (relative error below z^10 / 11 < 1e-19 for |z| < 0.015, a 3 %
@@ -16,6 +19,8 @@
  * costs ~20 ns; log() otherwise. */
 static inline double roll_lg2(rs_roll *roll, int j)
 {
+  if (roll->lg2_range_epoch == roll->epoch && j >= roll->lg2_lo && j <= roll->lg2_hi)
+    return roll->lg2[j];
   if (roll->lg2_epoch[j] != roll->epoch) {
     const unsigned long long ep = roll->epoch;
     const int k = j > 0 && roll->lg2_epoch[j - 1] == ep ? j - 1
@@ -90,6 +95,31 @@ double roll_layer_coord_at(rs_roll *roll, double x)
 {
   if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
   return (roll_radius_at(roll, x) - roll->p.core_radius) * roll->inv_caliper;
+}
+
+/* ln g^2 at the nodes [lo, hi] in one pass that vectorises (an integration over a short
+ * span looks at most of them: RS_LG2_RANGE_MAX). rs_log_positive holds for positive normal
+ * numbers; a g^2 outside them (a modulus the law left near 0 or beyond 1e308 times
+ * E_theta) takes log() instead, which gives the right-hand side the infinity that makes
+ * CVODE say so (the flag is a compare mask as wide as a double: it stays in the vector
+ * registers) */
+void roll_lg2_range(rs_roll *roll, int lo, int hi)
+{
+  double *restrict lg = roll->lg2;
+  const double *restrict E = roll->Er, Eth = roll->p.E_theta;
+  int64_t odd = 0;
+  for (int j = lo; j <= hi; ++j) {
+    const double g2 = Eth / E[j];
+    odd |= (int64_t)!(g2 >= DBL_MIN) | (int64_t)(g2 > DBL_MAX);
+    lg[j] = rs_log_positive(g2);
+  }
+  for (int j = lo; odd && j <= hi; ++j) {
+    const double g2 = Eth / E[j];
+    if (!(g2 >= DBL_MIN && g2 <= DBL_MAX)) lg[j] = log(g2);
+  }
+  roll->lg2_lo = lo;
+  roll->lg2_hi = hi;
+  roll->lg2_range_epoch = roll->epoch;
 }
 
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
