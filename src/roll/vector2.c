@@ -219,29 +219,33 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
                          sunrealtype tol, sunbooleantype call_setup, void *mem)
 {
   newton2 *c = NEWTON2(S);
+  sunrealtype *yc = D(ycor), *r = D(c->res), *d = D(c->delta);
+  const sunrealtype *yp = D(y0);
+  int flag;
+  /* CVODE adds these counts to its own after every solve: they are per solve */
+  c->niters = c->nconvfails = 0;
+  if (c->quadratic) { /* gamma is all it needs from CVODE (one getter, not nine) */
+    sunrealtype gamma;
+    if (CVodeGetCurrentGamma(c->cvode, &gamma) != CV_SUCCESS) return SUN_NLS_MEM_NULL;
+    return newton2_solve_exact(c, yp, yc, r, gamma, mem, ycor);
+  }
   sunrealtype t, gamma, rl1;
   N_Vector ypred, yn, fn, zn1;
   void *user_data;
   if (CVodeGetNonlinearSystemData(c->cvode, &t, &ypred, &yn, &fn, &gamma, &rl1, &zn1,
                                   &user_data) != CV_SUCCESS)
     return SUN_NLS_MEM_NULL;
-  sunrealtype *yc = D(ycor), *r = D(c->res), *d = D(c->delta);
-  const sunrealtype *yp = D(y0);
-  int flag;
-  /* CVODE adds these counts to its own after every solve: they are per solve */
-  c->niters = c->nconvfails = 0;
   /* CVODE decides when a setup is due (every 20 steps, a large change of gamma, after a
    * failure) and resets its convergence-rate estimate there (the setup itself forms
    * nothing: rs_roll_newton2_attach); the test below is CVODE's and uses that estimate.
-   * The exact corrector calls no convergence test, so nothing reads that estimate: it
-   * skips the setup (a third of the steps asked for one: 1.5 % of the reel's
-   * instructions, the same steps and results; docs/performance.md) */
-  if (call_setup && c->lsetup && !c->quadratic) {
+   * The exact corrector (above) calls no convergence test, so nothing reads that
+   * estimate: it skips the setup (a third of the steps asked for one: 1.5 % of the
+   * reel's instructions, the same steps and results; docs/performance.md) */
+  if (call_setup && c->lsetup) {
     sunbooleantype jcur;
     flag = c->lsetup(SUNFALSE, &jcur, mem);
     if (flag != SUN_NLS_SUCCESS) return flag;
   }
-  if (c->quadratic) return newton2_solve_exact(c, yp, yc, r, gamma, mem, ycor);
   for (c->curiter = 0;;) {
     flag = c->sys(ycor, c->res, mem);
     if (flag != SUN_NLS_SUCCESS) break; /* CVODE's code: < 0 fatal, > 0 recoverable */
