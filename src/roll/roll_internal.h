@@ -25,11 +25,12 @@
 enum { RS_CVODE_MSG_LEN = 512 };
 /* references from a node above the core between two from the core (roll_reuse_start) */
 enum { RS_REF_DEEP_MAX = 4 };
-/* An integration over at most this many nodes forms ln g^2 at all of them in one
- * vectorised pass before CVODE starts, instead of when a step first looks (roll_lg2_range:
- * on the 6054-layer reel, ~300 nodes and 40 steps an increment, 2.3 % fewer instructions
- * and none of the right-hand side's waiting on log(); on a 20,000-layer film break-even
- * in instructions at 512 - 1024 nodes, +1.1 % at 2048; docs/performance.md) */
+/* An integration whose top is at most this many nodes above its start forms ln g^2 at
+ * all of them (and the one below the start) in one vectorised pass before CVODE starts,
+ * instead of when a step first looks (roll_lg2_range: on the 6054-layer reel, ~300 nodes
+ * and 40 steps an increment, 1.9 % fewer instructions and none of the right-hand side's
+ * waiting on log(); on a 20,000-layer film break-even in instructions at 512 - 1024
+ * nodes, +1.1 % at 2048; docs/performance.md) */
 enum { RS_LG2_RANGE_MAX = 1024 };
 
 /* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
@@ -50,12 +51,13 @@ struct rs_roll {
   double *sigma_theta;  /* [cap] */
   /* work arrays over nodes 0..n (node 0 = core) */
   double *Er;           /* E_r at the nodes for the current increment; g^2 = E_theta/E_r */
-  double *lg2;          /* ln g^2, computed when the interpolation first needs it */
+  double *lg2;          /* ln g^2: in one pass over a short integration's nodes, else
+                           when the interpolation first needs it */
   unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch, */
   int lg2_lo, lg2_hi;   /* or when lg2_lo <= j <= lg2_hi and lg2_range_epoch == epoch */
   unsigned long long lg2_range_epoch;
-  int lg2_range_max;    /* an integration over at most this many nodes forms them in one
-                           pass (RS_LG2_RANGE_MAX; 0: never) */
+  int lg2_range_max;    /* an integration whose top is at most this many nodes above its
+                           start forms them in one pass (RS_LG2_RANGE_MAX; 0: never) */
   /* the Hermite cubic of the interval last evaluated (CVODE's calls cluster): its index,
    * the epoch it belongs to, and the cubic of ln g^2 in it */
   int hj;

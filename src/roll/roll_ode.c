@@ -99,10 +99,10 @@ double roll_layer_coord_at(rs_roll *roll, double x)
 
 /* ln g^2 at the nodes [lo, hi] in one pass that vectorises (an integration over a short
  * span looks at most of them: RS_LG2_RANGE_MAX). rs_log_positive holds for positive normal
- * numbers; a g^2 outside them (a modulus the law left near 0 or beyond 1e308 times
- * E_theta) takes log() instead, which gives the right-hand side the infinity that makes
- * CVODE say so (the flag is a compare mask as wide as a double: it stays in the vector
- * registers) */
+ * numbers; a g^2 outside them (a modulus the law left beyond 1e308 times E_theta, or
+ * below 2.2e-308 of it) takes log() instead, as the lazy path does: an infinite g^2 gives
+ * the right-hand side the infinity that makes CVODE say so (the flag is a compare mask as
+ * wide as a double: it stays in the vector registers) */
 void roll_lg2_range(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->lg2;
@@ -256,9 +256,10 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
 }
 
 /* The moduli of the nodes 0..k are the integration's from now: a new epoch (ln g^2 and the
- * interpolation's caches are formed again, only where CVODE's steps look: a few nodes per
- * step, ~1/4 of the nodes of a long roll; a log at every node at every increment was 7 % of
- * the engine's time) */
+ * interpolation's caches are formed again: over a long integration only where CVODE's
+ * steps look, a few nodes per step, ~1/4 of the nodes of a long roll, since a log at every
+ * node at every increment was 7 % of the engine's time; over a short one in a vectorised
+ * pass, roll_lg2_range) */
 static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
 {
   if (st) return st;
@@ -282,7 +283,8 @@ rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
 }
 
 /* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees
- * (g^2 = E_theta / E_r, and ln g^2, are formed only where the steps look: roll_lg2). */
+ * (g^2 = E_theta / E_r, and ln g^2, are formed by roll_lg2_range or where the steps look:
+ * roll_lg2). */
 rs_status roll_set_modulus(rs_roll *roll, int k)
 {
   return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy_top, k + 1));

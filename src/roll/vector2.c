@@ -240,7 +240,10 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
    * nothing: rs_roll_newton2_attach); the test below is CVODE's and uses that estimate.
    * The exact corrector (above) calls no convergence test, so nothing reads that
    * estimate: it skips the setup (a third of the steps asked for one: 1.5 % of the
-   * reel's instructions, the same steps and results; docs/performance.md) */
+   * reel's instructions, the same steps and results; docs/performance.md). CVODE's
+   * record of the last setup (its step and gamma) then stays where it was, so it asks
+   * for one at every step after the 20th: the request is ignored alike, and the Newton
+   * path, which honours it, resets that record at its first setup */
   if (call_setup && c->lsetup) {
     sunbooleantype jcur;
     flag = c->lsetup(SUNFALSE, &jcur, mem);

@@ -33,7 +33,7 @@ int rs_roll_newton2_attach(SUNNonlinearSolver S);
  * solver then solves each corrector equation exactly (a quadratic in w, one right-hand
  * side a step) instead of by Newton's method, forms no Jacobian, and skips the setups
  * CVODE asks for (they reset the convergence-rate estimate, which only Newton's
- * convergence test reads). */
+ * convergence test reads; CVodeGetNumLinSolvSetups stays 0). */
 void rs_roll_newton2_set_quadratic(SUNNonlinearSolver S, double p, double q);
 /* The corrector equation's exact solution for such a right-hand side: from the residual
  * R = F(ycor) at the current correction, with w the state's first component there, the

@@ -8,8 +8,10 @@
  *   powers_and_ends  ln 1 = 0 exactly; 2^k (k = -1022..1023) within 1 ulp; the ends of
  *                    the range (DBL_MIN, DBL_MAX) and the neighbours of sqrt(1/2) and
  *                    sqrt(2), where the reduction's exponent changes, within 1.5 ulp
- *   loop_vectorised  an array of them in a plain loop (vectorised in a SIMD build) gives
- *                    what the calls one at a time give, within 1 ulp */
+ *   loop_vectorised  an array of them in a plain loop gives what the calls one at a time
+ *                    give, within 1 ulp (whether this loop vectorises depends on the
+ *                    build's flags; the engine's own pass, compiled with roll_ode.c's,
+ *                    is checked in test_roll_layer.lg2_range) */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>

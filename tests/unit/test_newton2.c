@@ -130,7 +130,8 @@ static void exact_riccati_g700(void)
   check_closed_form(700.0, 0.0, 0.05, 1e-5, 1e-3, EXACT);
 }
 
-/* Exact: one right-hand side per solve (CVODE counts one iteration per solve), no Jacobian;
+/* Exact: one right-hand side per solve (CVODE counts one iteration per solve), no Jacobian,
+ * no linear-solver setup;
  * the results those of Newton's iterations to within the tolerance (Newton stops within a
  * tenth of the error estimate of the exact root) */
 static void exact_one_rhs_per_step(void)
@@ -143,6 +144,10 @@ static void exact_one_rhs_per_step(void)
   CHECK_LOG("rhs per step, Newton", (double)n.rhs / n.steps);
   CHECK(e.steps > 10);
   CHECK(e.jacobians == 0);
+  /* and no linear-solver setup (only Newton's convergence test reads what one resets) */
+  CHECK_LOG("linear-solver setups, exact", e.setups);
+  CHECK_LOG("linear-solver setups, Newton", n.setups);
+  CHECK(e.setups == 0 && n.setups > 0);
   CHECK(e.nls_iters >= e.steps && e.nls_iters <= e.steps + e.conv_fails + 20);
   CHECK_LT((double)e.rhs / e.steps, 1.35);
   CHECK_LT((double)e.rhs / e.steps, (double)n.rhs / n.steps);
