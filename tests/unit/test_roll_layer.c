@@ -228,8 +228,6 @@ static void lg2_range_same_roll(void)
     big = fmax(big, fabs(sb[j]));
     diff = fmax(diff, fabs(sa[j] - sb[j]));
   }
-  rs_roll_stats st;
-  rs_roll_get_stats(a, &st);
   CHECK_LOG("layers", (double)n);
   CHECK_LOG("increments that took the pass", (double)passes);
   CHECK(passes > n / 2);
