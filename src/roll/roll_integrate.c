@@ -63,11 +63,20 @@ static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const
 }
 
 /* (w, L) at the n nodes x[0..n) inside the step (plain loops over arrays: they vectorise),
- * L less the accumulated error's correction C0 + (x - a) slope (roll_correction; 0 and 0
- * without it, which leaves L bit for bit). With w NULL, L alone (w kept as the step's
- * quintic: roll_wstep_keep). */
+ * L less the accumulated error's correction (roll_correction), C0 at the step's start and
+ * C0 + dC at its end, in between in the shape of the quintic's value basis at the end,
+ *     C(s) = C0 + dC h(s),   h(s) = 10 s^3 - 15 s^4 + 6 s^5:
+ * the step's error at its end reaches the nodes inside through the interpolant, which
+ * carries a change of the end value in exactly that shape (its other end data, the slopes
+ * and curvatures from the equation, follow the values). A straight ramp in x instead
+ * left ln y at the nodes inside the long first order-2 step of every integration from the
+ * core off by +-4e-6 in a zig-zag (traced against an rtol 1e-12 integration), and the hoop
+ * stress, a difference of neighbouring radial stresses times r/t, 2x (newsprint) to 10x
+ * (6 um film) the bulk's error at the innermost layers (docs/roll-model.md). C0 = dC = 0
+ * without the correction, which leaves L bit for bit. With w NULL, L alone (w kept as the
+ * step's quintic: roll_wstep_keep). */
 static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
-                              double *restrict L, int n, double C0, double slope)
+                              double *restrict L, int n, double C0, double dC)
 {
   if (w) roll_quintic_fill_w(q->a, q->inv_h, q->cw, x, w, n);
   const double a = q->a, inv_h = q->inv_h;
@@ -75,7 +84,8 @@ static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, d
   for (int i = 0; i < n; ++i) {
     const double s = (x[i] - a) * inv_h;
     const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-    L[i] = Lq - (C0 + (x[i] - a) * slope);
+    const double h = s * s * s * (10.0 + s * (6.0 * s - 15.0));
+    L[i] = Lq - (C0 + dC * h);
   }
 }
 
@@ -289,9 +299,10 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
  * roll (the solution's derivatives keep their signs), instead of dying out, and so does
  * the integral of the errors it leaves in w, which relax at the Riccati rate 2 (1 + w):
  * an error dw left by a step adds ~dw / (2 (1 + w)) to every L above it. The estimates of
- * each step (CVodeGetEstLocalErrors) are summed into C, and the stored L is L - C: C grows
- * linearly across a step, and the w part enters after the step that left it. A step of order below 4 (the start-up after a
- * restart, a few steps long) leaves its w estimate out: BDF's low-order estimates are
+ * each step (CVodeGetEstLocalErrors) are summed into C, and the stored L is L - C: C moves
+ * across a step in the shape the node interpolation gives the step's end error
+ * (roll_quintic_fill), and the w part enters after the step that left it. A step of order
+ * below 4 (the start-up after a restart, a few steps long) leaves its w estimate out: BDF's low-order estimates are
  * several times the error a step actually leaves in a strongly damped component (measured:
  * with them the hoop stress next to the core was worse than uncorrected; from order 4 on
  * every measured stress is 3-10x better, docs/accuracy.md). */
@@ -450,11 +461,10 @@ rs_status roll_integrate(rs_roll *roll, int k)
       if (last > k) last = k;
       while (last > next && xn[last] > tret) --last;
       while (last < k && xn[last + 1] <= tret) ++last;
-      const double slope = correct ? (corr.C - C0) / (tret - prev.x) : 0.0;
       /* w kept as the step's quintic where only a start node will read it (node k: exact) */
       const int keep = roll->w_lazy && roll_wstep_keep(roll, &q, next, last < k ? last : k - 1);
       roll_quintic_fill(&q, xn + next, keep ? NULL : roll->w + next, roll->L + next,
-                        last - next + 1, correct ? C0 : 0.0, slope);
+                        last - next + 1, correct ? C0 : 0.0, correct ? corr.C - C0 : 0.0);
       next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;

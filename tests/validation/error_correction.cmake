@@ -1,1 +1,1 @@
-rs_test(test_error_correction validation SOURCES validation/test_error_correction.c CASES altmann_exact pfeiffer_tight vanishes)
+rs_test(test_error_correction validation SOURCES validation/test_error_correction.c CASES altmann_exact pfeiffer_tight innermost_hoop vanishes)
