@@ -67,8 +67,9 @@ static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const
  * C0 + dC at its end, in between in the shape of the quintic's value basis at the end,
  *     C(s) = C0 + dC h(s),   h(s) = 10 s^3 - 15 s^4 + 6 s^5:
  * the step's error at its end reaches the nodes inside through the interpolant, which
- * carries a change of the end value in exactly that shape (its other end data, the slopes
- * and curvatures from the equation, follow the values). A straight ramp in x instead
+ * carries an error of its end value into the step in exactly that shape (the error of
+ * the end slope, CVODE's w, is the w part's, entering from the next step). As L - C is
+ * still a quintic in s, C is folded into its coefficients. A straight ramp in x instead
  * left ln y at the nodes inside the long first order-2 step of every integration from the
  * core off by +-4e-6 in a zig-zag (traced against an rtol 1e-12 integration), and the hoop
  * stress, a difference of neighbouring radial stresses times r/t, 2x (newsprint) to 10x
@@ -80,12 +81,11 @@ static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, d
 {
   if (w) roll_quintic_fill_w(q->a, q->inv_h, q->cw, x, w, n);
   const double a = q->a, inv_h = q->inv_h;
-  const double l0 = q->cL[0], l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3], l4 = q->cL[4], l5 = q->cL[5];
+  const double l0 = q->cL[0] - C0, l1 = q->cL[1], l2 = q->cL[2], l3 = q->cL[3] - 10.0 * dC,
+               l4 = q->cL[4] + 15.0 * dC, l5 = q->cL[5] - 6.0 * dC;
   for (int i = 0; i < n; ++i) {
     const double s = (x[i] - a) * inv_h;
-    const double Lq = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
-    const double h = s * s * s * (10.0 + s * (6.0 * s - 15.0));
-    L[i] = Lq - (C0 + dC * h);
+    L[i] = ((((l5 * s + l4) * s + l3) * s + l2) * s + l1) * s + l0;
   }
 }
 
