@@ -302,10 +302,11 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
  * each step (CVodeGetEstLocalErrors) are summed into C, and the stored L is L - C: C moves
  * across a step in the shape the node interpolation gives the step's end error
  * (roll_quintic_fill), and the w part enters after the step that left it. A step of order
- * below 4 (the start-up after a restart, a few steps long) leaves its w estimate out: BDF's low-order estimates are
- * several times the error a step actually leaves in a strongly damped component (measured:
- * with them the hoop stress next to the core was worse than uncorrected; from order 4 on
- * every measured stress is 3-10x better, docs/accuracy.md). */
+ * below 4 (the start-up after a restart, a few steps long) leaves its w estimate out:
+ * BDF's low-order estimates are several times the error a step actually leaves in a
+ * strongly damped component (measured: with them the hoop stress next to the core was
+ * worse than uncorrected; from order 4 on every measured stress is 3-10x better,
+ * docs/accuracy.md). */
 typedef struct roll_correction {
   double C;      /* the correction reached at the end of the last step */
   double dw;     /* the w part of the last step's estimate, entering from the next step */

@@ -14,9 +14,9 @@
  *   innermost_hoop    the same roll at a scene's defaults (rtol 3e-5, atol = rtol, the reuse
  *                     and the correction) against an rtol 1e-10 reference without the
  *                     correction: the hoop stress error of the ten innermost layers no larger
- *                     than the rest's (measured 5.7e-5 against 1.2e-4 of T0/t; the
- *                     correction ramped straight across each step left 2.9e-4 against
- *                     1.4e-4 there: roll_quintic_fill)
+ *                     than the rest's, and the largest under 1.5e-4 of T0/t (measured 5.7e-5
+ *                     and 1.2e-4; the correction ramped straight across each step left
+ *                     2.9e-4 against 1.4e-4: roll_quintic_fill)
  *   vanishes          at rtol 1e-10 the correction changes the stresses by less than 1e-8
  *                     of the core pressure (it is an estimate of errors that vanish) */
 #include <math.h>
@@ -191,6 +191,7 @@ static void innermost_hoop(void)
     CHECK_LOG("sigma_theta error, layers 0 - 9", inner);
     CHECK_LOG("sigma_theta error, layers 10 - n", bulk);
     CHECK_LT(inner, bulk);
+    CHECK_LT(fmax(inner, bulk), 1.5e-4); /* measured 1.2e-4; the straight ramp 2.9e-4 */
   }
   rs_roll_destroy(&ref);
   rs_roll_destroy(&dflt);
