@@ -465,7 +465,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
       /* w kept as the step's quintic where only a start node will read it (node k: exact) */
       const int keep = roll->w_lazy && roll_wstep_keep(roll, &q, next, last < k ? last : k - 1);
       roll_quintic_fill(&q, xn + next, keep ? NULL : roll->w + next, roll->L + next,
-                        last - next + 1, correct ? C0 : 0.0, correct ? corr.C - C0 : 0.0);
+                        last - next + 1, C0, corr.C - C0); /* both 0 uncorrected */
       next = last + 1;
       if (next > k) { /* the outer node is the step's end: exact, not interpolated */
         roll->w[k] = cur.w;

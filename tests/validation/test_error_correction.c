@@ -183,7 +183,6 @@ static void innermost_hoop(void)
   rs_roll *ref = wind(&p, n, 1, T);
   p.rtol = 3e-5;
   p.atol = 0.0; /* a scene's default: atol = rtol */
-  p.reuse = RS_REUSE_ON;
   p.correction = RS_CORRECTION_ON;
   rs_roll *dflt = wind(&p, n, 1, T);
   if (ref && dflt) {
