@@ -24,7 +24,7 @@ typedef struct rs_numerics {
   long max_steps;          /* CVODE steps per increment */
   rs_reuse reuse;          /* keep the deep part of an earlier integration (default) or not */
   rs_load_placement load_placement; /* where a new layer's load goes (default: beneath it) */
-  rs_correction error_correction; /* ln y corrected by CVODE's local error estimates (default) */
+  rs_correction error_correction; /* (w, ln y) corrected for the integration's error (default) */
 } rs_numerics;
 
 /* What the reel records beside the final state. */

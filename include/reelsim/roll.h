@@ -42,9 +42,15 @@ typedef enum rs_load_placement {
 
 /* Whether an increment may keep the deep part of an earlier integration from the core
  * where the modulus has barely changed since, and integrate only from there up (the error
- * this adds to an increment is held to rtol x T0/s). docs/roll-model.md, "Reusing the deep
- * solution" and "The deep part corrected for the drift" (the default, with one layer per
- * increment and its load beneath it; otherwise the first-order reuse). */
+ * this adds to an increment is held to RS_REUSE_TOL_FACTOR x rtol x T0/s). docs/roll-model.md,
+ * "Reusing the deep solution" and "The deep part corrected for the drift" (the default, with
+ * one layer per increment and its load beneath it; otherwise the first-order reuse). */
+/* The reuse's tolerance as a share of rtol. The error correction leaves an integration
+ * within one to four hundredths of rtol (docs/roll-model.md), while the reuse's error, of
+ * one sign, adds up to ~1.3x its tolerance over a reel: at a fiftieth of rtol the two are
+ * of a size (measured on six scenes and the 100,633-layer film: docs/accuracy.md) */
+#define RS_REUSE_TOL_FACTOR 0.02
+
 typedef enum rs_reuse {
   RS_REUSE_ON = 0,       /* the default: the deep part reused, corrected to first order
                             for the modulus drift since it was integrated */
@@ -53,10 +59,11 @@ typedef enum rs_reuse {
                             the tolerance at first order (the start sinks as it drifts) */
 } rs_reuse;
 
-/* Whether the ln y each integration stores is corrected by the local errors CVODE
- * estimates along it (docs/roll-model.md, "Correcting the accumulated local error"):
- * ln y is a running integral, so its step errors add up with one sign instead of dying
- * out; subtracting CVODE's own estimates cuts the stresses' error 3-10x at equal cost. */
+/* Whether the (w, ln y) each integration stores is corrected for its error
+ * (docs/roll-model.md, "Correcting the integration's error"): each step's quintic
+ * interpolant misses the equations by a defect measured at its middle, and the errors
+ * this leaves are carried up the roll by the equations' linearisation; subtracted, the
+ * stresses come out 100x or more closer to a tight reference at equal cost. */
 typedef enum rs_correction {
   RS_CORRECTION_ON = 0,  /* the default */
   RS_CORRECTION_OFF = 1  /* the stored ln y as CVODE integrates it */

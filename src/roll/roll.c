@@ -41,8 +41,8 @@
  *
  * An increment need not be integrated from the core: below the newest layers the modulus
  * barely changes, so it keeps the deep part of the last integration from the core and
- * integrates from a start node up, the error this adds held to rtol x T0/s
- * (roll_reuse_start; numerics.reuse; docs/roll-model.md). */
+ * integrates from a start node up, the error this adds held to RS_REUSE_TOL_FACTOR x rtol x
+ * T0/s (roll_reuse_start; numerics.reuse; docs/roll-model.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,7 +57,6 @@ void rs_roll_destroy(rs_roll **rollp)
   if (roll->cvode) CVodeFree(&roll->cvode);
   if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
   if (roll->y) N_VDestroy(roll->y);
-  if (roll->ele) N_VDestroy(roll->ele);
   if (roll->sunctx) SUNContext_Free(&roll->sunctx);
   free(roll->sigma_r);
   free(roll->sigma_theta);
@@ -185,8 +184,6 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
   if (rs_roll_vector2_specialise(roll->y) != 0) goto cvode_fail;
   N_VConst(0.0, roll->y);
-  roll->ele = N_VClone(roll->y);
-  if (!roll->ele) goto cvode_fail;
   roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
   if (!roll->cvode) goto cvode_fail;
   if (CVodeSetErrHandlerFn(roll->cvode, roll_cvode_err, roll) != CV_SUCCESS) goto cvode_fail;

@@ -87,7 +87,6 @@ struct rs_roll {
   SUNContext sunctx;
   void *cvode;
   N_Vector y;
-  N_Vector ele;         /* CVODE's estimated local errors of the last step */
   SUNNonlinearSolver NLS;
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
@@ -196,6 +195,7 @@ int roll_lazy_allowed(const rs_roll_params *p);
 
 /* roll_ode.c */
 double roll_g2_at(rs_roll *roll, double x, double *dg2);
+double roll_g2_probe(rs_roll *roll, double x);
 void roll_lg2_range(rs_roll *roll, int lo, int hi);
 double roll_layer_coord_at(rs_roll *roll, double x);
 int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);

@@ -122,6 +122,24 @@ void roll_lg2_range(rs_roll *roll, int lo, int hi)
   roll->lg2_range_epoch = roll->epoch;
 }
 
+/* g^2 at x for the error correction's look inside a step, leaving what the right-hand side
+ * and the step's end keep (the interval's cubic, the last point's layer coordinate) as
+ * they were: the next step starts where this one ended */
+double roll_g2_probe(rs_roll *roll, double x)
+{
+  const int hj = roll->hj;
+  const unsigned long long hepoch = roll->hepoch;
+  const double hy0 = roll->hy0, hm0 = roll->hm0, hc2 = roll->hc2, hc3 = roll->hc3, hg0 = roll->hg0;
+  const double gxi = roll->gxi;
+  double dg2;
+  const double g2 = roll_g2_eval(roll, x, &dg2);
+  roll->hj = hj;
+  roll->hepoch = hepoch;
+  roll->hy0 = hy0, roll->hm0 = hm0, roll->hc2 = hc2, roll->hc3 = hc3, roll->hg0 = hg0;
+  roll->gxi = gxi;
+  return g2;
+}
+
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
 double roll_g2_at(rs_roll *roll, double x, double *dg2)
 {

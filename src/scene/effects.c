@@ -165,12 +165,12 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
           s->problem.numerics.layers_per_step == 1 ? "" : "s", f(a, s->problem.numerics.rtol));
   if (s->problem.numerics.atol > 0.0) fprintf(out, ", atol %s", f(b, s->problem.numerics.atol));
   fprintf(out, s->problem.numerics.reuse == RS_REUSE_ON
-                   ? ", deep solution reused and corrected for the drift (error held to rtol x T0/s)"
+                   ? ", deep solution reused and corrected for the drift (error held to rtol/50 x T0/s)"
                : s->problem.numerics.reuse == RS_REUSE_FIRST_ORDER
-                   ? ", deep solution reused (error held to rtol x T0/s at first order)"
+                   ? ", deep solution reused (error held to rtol/50 x T0/s at first order)"
                    : ", every increment integrated from the core");
   fprintf(out, s->problem.numerics.error_correction == RS_CORRECTION_ON
-                   ? ", ln y corrected by CVODE's local error estimates\n"
+                   ? ", (w, ln y) corrected by the steps' defects\n"
                    : ", no error correction\n");
   fprintf(out, s->problem.numerics.load_placement == RS_LOAD_BENEATH
                    ? "  - load placement: beneath (a new layer joins at T0/t and presses T0/r on "

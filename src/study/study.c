@@ -80,7 +80,7 @@ int rs_study_identical(const rs_reel_result *a, const rs_reel_result *b)
 void rs_study_defaults(int has_nip, int contact, rs_study_setting *s)
 {
   memset(s, 0, sizeof *s);
-  s->rtol = 3e-5; /* src/scene/schema.c */
+  s->rtol = 1e-3; /* src/scene/schema.c */
   s->layers_per_step = 1;
   if (has_nip) s->T0_rtol = 1e-4; /* adaptive (src/scene/defaults.c) */
   if (contact) {
@@ -233,7 +233,8 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
   add(&b, RS_KNOB_DEFAULT, 0, &def, "default");
 
   /* one knob at a time, from the defaults; the default level itself is the default run */
-  static const double rtol_full[] = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8}, rtol_quick[] = {1e-4, 1e-5, 1e-7};
+  static const double rtol_full[] = {1e-2, 3e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8},
+                      rtol_quick[] = {1e-4, 1e-5, 1e-7};
   static const int m_full[] = {2, 5, 10, 20, 50}, m_quick[] = {2, 10, 50};
   static const int M_full[] = {16, 32, 48, 64}, M_quick[] = {32, 64};
   static const int terms_full[] = {16, 32, 64, 128}, terms_quick[] = {16, 64};
@@ -256,7 +257,7 @@ rs_status rs_study_plan_create(const rs_scene *scene, int quick, rs_study_plan *
 
   /* a small grid of the knobs that cost the most time: rtol x layers per step (x the nip
    * update tolerance: the default's and ten times it) */
-  static const double g_rtol[] = {3e-5, 1e-4};
+  const double g_rtol[] = {def.rtol, 0.1 * def.rtol};
   static const int g_m[] = {2, 5, 10};
   const int n_m = quick ? 2 : 3, n_T0 = p->has_nip ? 2 : 1;
   for (int i = 0; i < 2; ++i)

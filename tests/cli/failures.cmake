@@ -12,7 +12,7 @@ endfunction()
 rs_cli_fails(fail_max_steps 3
   [[solver failure: winding layers 2-2 of 200 \(r = 0\.0502 m\): CVODE needed more than 2 steps to cross the roll \(reached r = 0\.05[0-9]* m of 0\.0501 m\); raise numerics\.max_steps or loosen numerics\.rtol]]
   [[^reelsim:   1 of 200 layers were wound; no output written$]]
-  -- ${SC}/small.yaml --set numerics.max_steps=2)
+  -- ${SC}/small.yaml --set numerics.max_steps=2 --set numerics.rtol=1e-5)
 rs_cli_fails(fail_max_steps_mid_roll 3
   [[solver failure: winding layers ([0-9]+)-[0-9]+ of 200 \(r = 0\.0[56][0-9]+ m\): CVODE needed more than 30 steps]]
   [[^reelsim:   [1-9][0-9]* of 200 layers were wound; no output written$]]
@@ -27,7 +27,8 @@ rs_cli_fails(fail_taper_negative 2
 rs_cli_test(run_taper_to_zero 0 [[wound-on tension +0\.0 \.\. 199\.[0-9] N/m]]
             run ${SC}/taper-zero.yaml -o taper-zero.h5)
 
-rs_cli_script(keep_partial_solver keep_partial.sh ${SC}/small.yaml --set numerics.max_steps=30)
+rs_cli_script(keep_partial_solver keep_partial.sh ${SC}/small.yaml --set numerics.max_steps=30
+              --set numerics.rtol=1e-5)
 rs_cli_script(keep_partial_radial keep_partial.sh ${SC}/hakiel-negative.yaml)
 rs_cli_script(run_terminated interrupt.sh ${CASES}/newsprint-rider.yaml TERM 143)
 rs_cli_script(run_interrupted_keep_partial interrupt.sh ${CASES}/newsprint-rider.yaml INT 130

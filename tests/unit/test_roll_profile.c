@@ -17,18 +17,18 @@
  *   frozen_block         a frozen-lumped block, added node by node, ends the profile's use;
  *                        after a one-layer increment that failed with its start corrected
  *                        such a block still winds (its second scale was left non-finite)
- *   vs_tight_reference   a 1500-layer newsprint roll, load beneath, rtol 1e-5 and 1e-6,
- *                        against reuse: none at rtol 1e-10: the corrected deep part's errors
- *                        (core pressure, sigma_r, sigma_theta) are no larger than the
- *                        first-order reuse's or than integrating every increment from the
- *                        core (measured 1.2-2.6x lower than the first-order reuse's at rtol
- *                        1e-5), they fall with rtol, and it takes fewer CVODE steps and
+ *   vs_tight_reference   a 1500-layer newsprint roll, load beneath, the reuse held to 1e-5
+ *                        and 1e-6 (rtol 5e-4 and 5e-5), against reuse: none at rtol 1e-10:
+ *                        the errors (core pressure, sigma_r, sigma_theta) of the corrected
+ *                        deep part, of the first-order reuse and of every increment from the
+ *                        core within 3x the reuse's tolerance (measured 0.1 - 1.5x), falling
+ *                        with it, and the corrected deep part takes fewer CVODE steps and
  *                        integrations from the core than the first-order reuse
- *   film_span            a 12,000-layer 6 um PET film (models/pet-film.yaml's stack law):
- *                        the corrected deep part takes under 80 % of the first-order reuse's
- *                        CVODE steps and under half its integrations from the core, at a
- *                        core-pressure error (against a first-order rtol 1e-9 run) within
- *                        1.25x the first-order reuse's */
+ *   film_span            a 12,000-layer 6 um PET film (models/pet-film.yaml's stack law) at
+ *                        the default rtol: the corrected deep part takes under 80 % of the
+ *                        first-order reuse's CVODE steps and under half its integrations
+ *                        from the core, at a core-pressure error (against a first-order
+ *                        rtol 1e-9 run) within 3x the reuse's tolerance */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,7 +152,8 @@ static void vs_tight_reference(void)
   rs_roll_params p;
   rs_roll *ref = tight_newsprint(&p);
   if (!ref) return;
-  const double rtols[2] = {1e-5, 1e-6};
+  /* the reuse held to 1e-5 and 1e-6 */
+  const double rtols[2] = {1e-5 / RS_REUSE_TOL_FACTOR, 1e-6 / RS_REUSE_TOL_FACTOR};
   errs prev = {0.0, 0.0, 0.0};
   for (int i = 0; i < 2; ++i) {
     rs_roll *r[3];
@@ -171,12 +172,15 @@ static void vs_tight_reference(void)
              "from the core %ld\n", rtols[i], m == 0 ? "corrected" : m == 1 ? "first-order" : "none",
              e[m].core, e[m].sr, e[m].st, s[m].cvode_steps, s[m].full_integrations);
     }
-    /* no worse than either (the first-order reuse's error has one sign: it adds to
-     * CVODE's; measured 1.4-1.7x lower than the first-order reuse's at rtol 1e-5) */
-    for (int m = 1; m < 3; ++m) {
-      CHECK(e[0].core <= 1.05 * e[m].core);
-      CHECK(e[0].sr <= 1.05 * e[m].sr);
-      CHECK(e[0].st <= 1.05 * e[m].st);
+    /* every mode within 3x the reuse's tolerance of the reference: the corrected
+     * integrations leave ~0.3 of it (none), the reuse's error, of one sign, the rest (the
+     * corrected reuse uses its tolerance: measured 1.5x; the first-order bound is the
+     * more cautious, and reuses less) */
+    const double tol = RS_REUSE_TOL_FACTOR * rtols[i];
+    for (int m = 0; m < 3; ++m) {
+      CHECK_LT(e[m].core, 3.0 * tol);
+      CHECK_LT(e[m].sr, 3.0 * tol);
+      CHECK_LT(e[m].st, 3.0 * tol);
     }
     if (i > 0) { /* and falling with the tolerance */
       CHECK_LT(e[0].core, prev.core);
@@ -201,7 +205,7 @@ static void film_span(void)
   p.atol = 0.0;
   p.reuse = RS_REUSE_FIRST_ORDER; /* a reference independent of the correction */
   rs_roll *ref = wind(&p, n, 1, 100.0);
-  p.rtol = 3e-5;
+  p.rtol = 1e-3; /* the default */
   rs_roll *first = wind(&p, n, 1, 100.0);
   p.reuse = RS_REUSE_ON;
   rs_roll *on = wind(&p, n, 1, 100.0);
@@ -217,7 +221,8 @@ static void film_span(void)
            a.full_integrations, on->deep_references, ea, b.cvode_steps, b.full_integrations, eb);
     CHECK_LT((double)a.cvode_steps, 0.8 * (double)b.cvode_steps);
     CHECK_LT((double)a.full_integrations, 0.5 * (double)b.full_integrations);
-    CHECK_LT(ea, 1.25 * eb);
+    CHECK_LT(ea, 3.0 * RS_REUSE_TOL_FACTOR * p.rtol);
+    CHECK_LT(eb, 3.0 * RS_REUSE_TOL_FACTOR * p.rtol);
   }
   rs_roll_destroy(&ref);
   rs_roll_destroy(&on);

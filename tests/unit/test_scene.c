@@ -204,7 +204,7 @@ static void defaults_filled(void)
     CHECK(s->problem.core.kind == RS_CORE_RIGID);
     CHECK(s->problem.n_layers == 100);
     CHECK(s->problem.nip.model == RS_NIP_NONE);
-    CHECK(s->problem.numerics.layers_per_step == 1 && s->problem.numerics.rtol == 3e-5);
+    CHECK(s->problem.numerics.layers_per_step == 1 && s->problem.numerics.rtol == 1e-3);
     CHECK(s->problem.numerics.atol == 0.0 && s->problem.numerics.max_steps == 0);
     CHECK(strcmp(s->output.file, "plain-roll.h5") == 0 && s->problem.record.history_every == 0);
     CHECK(strstr(s->resolved_text, "layers_per_step: 1") != NULL);

@@ -159,7 +159,7 @@ static void set_null_removes(void)
   /* a key not in the file: nothing to remove; a key not in the schema: refused */
   const char *absent[] = {"numerics.rtol=null"}, *typo[] = {"winding.final_radius_=null"};
   s = load_text(radius_scene, 1, absent);
-  if (s) CHECK(s->problem.numerics.rtol == 3e-5); /* the default */
+  if (s) CHECK(s->problem.numerics.rtol == 1e-3); /* the default */
   rs_scene_destroy(&s);
   refused(radius_scene, 1, typo, "--set winding.final_radius_=null: unknown key 'final_radius_' in winding", NULL);
   /* a required key removed is reported as missing */

@@ -1,22 +1,23 @@
-/* The correction of the accumulated local error (src/roll/roll_integrate.c,
- * roll_correction_step; docs/roll-model.md, "Correcting the accumulated local error"),
- * against independent references:
+/* The correction of the integration's global error (src/roll/roll_integrate.c,
+ * roll_correction_step; docs/roll-model.md, "Correcting the integration's error"), against
+ * independent references:
  *   altmann_exact     constant E_r: every stress against Altmann's closed form summed over
  *                     the increments, with and without the correction, at rtol 1e-5 (the
  *                     first-order reuse, every start at the top): the corrected errors at
- *                     least 3x smaller (the hoop stress 2x); the default reuse's within
- *                     1.25x of those
+ *                     least 30x smaller; the default reuse's within 3x its tolerance
  *   pfeiffer_tight    the Pfeiffer newsprint roll (1500 layers) against an rtol 1e-10
- *                     reference without the correction: core pressure, sigma_r and
- *                     sigma_theta errors at rtol 1e-5 and 1e-4, corrected at least 3x
- *                     smaller in the core pressure and sigma_r, sigma_theta no worse
- *                     (within 1.25x with Hakiel's placement); both placements
- *   innermost_hoop    the same roll at a scene's defaults (rtol 3e-5, atol = rtol, the reuse
+ *                     reference without the correction, both placements: every increment
+ *                     from the core at rtol 1e-4 and 1e-3, the corrected core pressure,
+ *                     sigma_r and sigma_theta at least 50x closer (measured 80 - 1400x:
+ *                     the estimate is the integration's error to a percent or two); with
+ *                     the default reuse at rtol 1e-5 and 1e-4, at least 30x (10x for
+ *                     sigma_theta) closer and the core pressure within 3x the reuse's
+ *                     tolerance (its error is what is left)
+ *   innermost_hoop    the same roll at a scene's defaults (rtol 1e-3, atol = rtol, the reuse
  *                     and the correction) against an rtol 1e-10 reference without the
- *                     correction: the hoop stress error of the ten innermost layers no larger
- *                     than the rest's, and the largest under 1.5e-4 of T0/t (measured 5.7e-5
- *                     and 1.2e-4; the correction ramped straight across each step left
- *                     2.9e-4 against 1.4e-4: roll_quintic_fill)
+ *                     correction: the hoop stress error of the ten innermost layers (where
+ *                     each integration from the core starts) no larger than the rest's, and
+ *                     the largest under 5e-5 of T0/t
  *   vanishes          at rtol 1e-10 the correction changes the stresses by less than 1e-8
  *                     of the core pressure (it is an estimate of errors that vanish) */
 #include <math.h>
@@ -74,12 +75,13 @@ static void altmann_exact(void)
   errs c = compare(dflt, sr, st, core, n, T, t);
   report("Altmann, rtol 1e-5", a, b);
   report("Altmann, rtol 1e-5, the default", b, c);
-  CHECK_LT(3.0 * b.core, a.core);
-  CHECK_LT(3.0 * b.sr, a.sr);
-  CHECK_LT(2.0 * b.st, a.st);
-  CHECK_LT(c.core, 1.25 * b.core);
-  CHECK_LT(c.sr, 1.25 * b.sr);
-  CHECK_LT(c.st, 1.25 * b.st);
+  CHECK_LT(30.0 * b.core, a.core);
+  CHECK_LT(30.0 * b.sr, a.sr);
+  CHECK_LT(30.0 * b.st, a.st);
+  const double tol = RS_REUSE_TOL_FACTOR * p.rtol;
+  CHECK_LT(c.core, 3.0 * tol);
+  CHECK_LT(c.sr, 3.0 * tol);
+  CHECK_LT(c.st, 3.0 * tol);
 out:
   rs_roll_destroy(&off);
   rs_roll_destroy(&on);
@@ -107,26 +109,32 @@ static void pfeiffer_case(rs_load_placement placement)
     st[j] = rs_roll_sigma_theta(ref)[j];
   }
   const double core = rs_roll_core_pressure(ref);
-  const double rtols[] = {1e-5, 1e-4};
-  for (int i = 0; i < 2; ++i) {
+  const double rtols[] = {1e-4, 1e-3, 1e-5, 1e-4};
+  for (int i = 0; i < 4; ++i) {
+    const int reuse = i >= 2; /* every increment from the core, then the default reuse */
     p.rtol = rtols[i];
-    p.reuse = RS_REUSE_ON;
+    p.reuse = reuse ? RS_REUSE_ON : RS_REUSE_OFF;
     p.correction = RS_CORRECTION_OFF;
     rs_roll *off = wind(&p, n, 1, T);
     p.correction = RS_CORRECTION_ON;
     rs_roll *on = wind(&p, n, 1, T);
     if (off && on) {
       errs a = compare(off, sr, st, core, n, T, t), b = compare(on, sr, st, core, n, T, t);
-      char what[64];
-      snprintf(what, sizeof what, "Pfeiffer, %s, rtol %.0e",
-               placement == RS_LOAD_BENEATH ? "beneath" : "hakiel", rtols[i]);
+      char what[80];
+      snprintf(what, sizeof what, "Pfeiffer, %s, %s, rtol %.0e",
+               placement == RS_LOAD_BENEATH ? "beneath" : "hakiel",
+               reuse ? "reuse" : "from the core", rtols[i]);
       report(what, a, b);
-      CHECK_LT(3.0 * b.core, a.core);
-      CHECK_LT(3.0 * b.sr, a.sr);
-      /* the hoop stress: no worse with the load beneath; Hakiel's placement builds it from
-       * ds (1 + w), and w itself is not corrected: within 1.25x (measured 1.1x) */
-      CHECK_LT(b.st, (placement == RS_LOAD_BENEATH ? 1.0 : 1.25) * a.st);
-      CHECK_LT(b.core, 30.0 * rtols[i]); /* and a bound of its own: ~20 rtol uncorrected */
+      if (!reuse) {
+        CHECK_LT(50.0 * b.core, a.core); /* measured 660 - 1400x; sigma_theta at 1e-3 80x */
+        CHECK_LT(50.0 * b.sr, a.sr);
+        CHECK_LT(50.0 * b.st, a.st);
+      } else {
+        CHECK_LT(30.0 * b.core, a.core);
+        CHECK_LT(30.0 * b.sr, a.sr);
+        CHECK_LT(10.0 * b.st, a.st);
+        CHECK_LT(b.core, 3.0 * RS_REUSE_TOL_FACTOR * rtols[i]);
+      }
     }
     rs_roll_destroy(&off);
     rs_roll_destroy(&on);
@@ -181,7 +189,7 @@ static void innermost_hoop(void)
   p.reuse = RS_REUSE_ON; /* at rtol 1e-10: within 1e-10 T0/s of every increment from the core */
   p.correction = RS_CORRECTION_OFF;
   rs_roll *ref = wind(&p, n, 1, T);
-  p.rtol = 3e-5;
+  p.rtol = 1e-3;
   p.atol = 0.0; /* a scene's default: atol = rtol */
   p.correction = RS_CORRECTION_ON;
   rs_roll *dflt = wind(&p, n, 1, T);
@@ -190,7 +198,7 @@ static void innermost_hoop(void)
     CHECK_LOG("sigma_theta error, layers 0 - 9", inner);
     CHECK_LOG("sigma_theta error, layers 10 - n", bulk);
     CHECK_LT(inner, bulk);
-    CHECK_LT(fmax(inner, bulk), 1.5e-4); /* measured 1.2e-4; the straight ramp 2.9e-4 */
+    CHECK_LT(fmax(inner, bulk), 5e-5);
   }
   rs_roll_destroy(&ref);
   rs_roll_destroy(&dflt);
