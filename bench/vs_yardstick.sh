@@ -13,7 +13,7 @@ src=${2:?usage: vs_yardstick.sh BUILD_DIR HAKIEL_FD_C [rounds] [rtol...]}
 rounds=${3:-5}
 shift $(( $# < 3 ? $# : 3 ))
 rtols=("$@")
-[ ${#rtols[@]} -gt 0 ] || rtols=(3e-5 5e-5)
+[ ${#rtols[@]} -gt 0 ] || rtols=(1e-3 5e-4)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 gcc -O2 -march=native -std=c11 -o "$tmp/hakiel_fd" "$src" -lm

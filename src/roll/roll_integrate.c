@@ -194,7 +194,7 @@ static int roll_reuse_start(rs_roll *roll)
     top = top < roll->shape_top ? top : roll->shape_top;
   }
   if (roll->ref_age < roll_refresh_age(roll))
-    return roll_reuse_search(roll, top, RS_REUSE_TOL_FACTOR * roll->p.rtol, second);
+    return roll_reuse_search(roll, top, RS_ACCURACY_PER_RTOL * roll->p.rtol, second);
   if (!second || roll->ref_deep >= roll->ref_deep_max) return -1;
   /* A new reference, from the core or from a node above it (roll_reference_rebase):
    * below that node the reference's (w, L) and shape take their first-order correction
@@ -210,7 +210,7 @@ static int roll_reuse_start(rs_roll *roll)
    * Altmann's roll, a constant modulus whose starts are at the top: the hoop stress's
    * error 4.4e-5 -> 1.5e-4 of T0/t with a chain of five) */
   if (roll->ref_deep > 0) top = top < roll->ref_from_last ? top : roll->ref_from_last;
-  const int from = roll_reuse_search(roll, top, 0.01 * RS_REUSE_TOL_FACTOR * roll->p.rtol, 1);
+  const int from = roll_reuse_search(roll, top, 0.01 * RS_ACCURACY_PER_RTOL * roll->p.rtol, 1);
   roll->start_C = 0.0; /* the start is rebased, not corrected for this increment only */
   if (from < 1 || !(roll->shape_e[from] > 1e-280)) return -1;
   roll->ref_from = from;

@@ -39,7 +39,7 @@ typedef struct rs_creep_params {
   double tau[RS_CREEP_MAX_TERMS];      /* h, > 0 */
   double w_theta[RS_CREEP_MAX_TERMS];  /* fraction of E_theta relaxing with tau_i, >= 0 */
   double w_radial[RS_CREEP_MAX_TERMS]; /* fraction of the stack modulus, >= 0 */
-  double rtol;                 /* CVODE relative tolerance (numerics.rtol) */
+  double rtol;                 /* CVODE relative tolerance (RS_ACCURACY_PER_RTOL x numerics.rtol) */
   long max_steps;              /* CVODE steps per stage */
 } rs_creep_params;
 

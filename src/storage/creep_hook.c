@@ -30,7 +30,7 @@ rs_status rs_storage_creep_create(const rs_storage_roll *roll, rs_storage_creep 
     p.w_theta[i] = v->w_theta[i];
     p.w_radial[i] = v->w_radial[i];
   }
-  p.rtol = pb->numerics.rtol;
+  p.rtol = RS_ACCURACY_PER_RTOL * pb->numerics.rtol; /* no error correction here */
   p.max_steps = pb->numerics.max_steps > 0 ? pb->numerics.max_steps : 100000;
   rs_storage_creep *sc = calloc(1, sizeof *sc);
   if (!sc) return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the creep solver");

@@ -106,7 +106,8 @@ rs_status rs_storage_run(const rs_problem *problem, const rs_reel_result *wound,
   if (st == RS_OK) st = rs_storage_creep_create(&roll, &creep);
   for (int i = 0; st == RS_OK && i < sp->n_stages; ++i) {
     const rs_storage_stage *stage = &sp->stage[i];
-    st = rs_storage_change(&roll, stage->temperature, stage->humidity, problem->numerics.rtol);
+    st = rs_storage_change(&roll, stage->temperature, stage->humidity,
+                           RS_ACCURACY_PER_RTOL * problem->numerics.rtol);
     if (st == RS_OK && creep && stage->hours > 0.0)
       st = rs_storage_creep_hold(creep, &roll, stage->hours);
     if (st != RS_OK) {

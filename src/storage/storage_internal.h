@@ -64,7 +64,8 @@ rs_status rs_storage_elastic(rs_storage_roll *roll, const rs_storage_load *load,
 /* thermal.c: brings the roll from its current temperature and humidity to (T, H): the free
  * strains alpha dT + beta dH of web (r, theta) and core, applied in sub-steps with the
  * tangent moduli re-evaluated (midpoint rule), the number of sub-steps doubled until two
- * successive answers agree within rtol (numerics.rtol) of the largest pressure. */
+ * successive answers agree within rtol (RS_ACCURACY_PER_RTOL x numerics.rtol) of the largest
+ * pressure. */
 rs_status rs_storage_change(rs_storage_roll *roll, double T, double H, double rtol);
 /* The same with a fixed number of sub-steps (the convergence test). */
 rs_status rs_storage_change_steps(rs_storage_roll *roll, double T, double H, int steps);

@@ -32,7 +32,7 @@ enum { N = 1500 };
 static rs_roll *newsprint(rs_reuse reuse, rs_load_placement placement)
 {
   rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, N);
-  p.rtol = 1e-5 / RS_REUSE_TOL_FACTOR; /* the reuse held to 1e-5 */
+  p.rtol = 1e-5 / RS_ACCURACY_PER_RTOL; /* the reuse held to 1e-5 */
   p.reuse = reuse;
   p.placement = placement;
   rs_roll *roll = NULL;
@@ -136,7 +136,7 @@ static void flat_then_steep(void)
     memcpy(p.radial.P, P, sizeof P);
     memcpy(p.radial.E, E, sizeof E);
     CHECK(rs_radial_law_prepare(&p.radial) == RS_OK);
-    p.rtol = 3e-5 / RS_REUSE_TOL_FACTOR; /* the reuse held to 3e-5 */
+    p.rtol = 3e-5 / RS_ACCURACY_PER_RTOL; /* the reuse held to 3e-5 */
     p.reuse = v ? RS_REUSE_OFF : RS_REUSE_ON;
     CHECK(rs_roll_create(&p, &r[v]) == RS_OK);
     if (!r[v] || !wind_to(r[v], n)) goto out;
@@ -155,7 +155,7 @@ static void very_soft_web(void)
   rs_roll *r[2] = {NULL, NULL};
   for (int v = 0; v < 2; ++v) {
     rs_roll_params p = pfeiffer_params(0.01, 1e-4, 4.9e9, 1e4, 1, INFINITY, n);
-    p.rtol = 3e-5 / RS_REUSE_TOL_FACTOR; /* the reuse held to 3e-5 */
+    p.rtol = 3e-5 / RS_ACCURACY_PER_RTOL; /* the reuse held to 3e-5 */
     p.reuse = v ? RS_REUSE_OFF : RS_REUSE_ON;
     CHECK(rs_roll_create(&p, &r[v]) == RS_OK);
     if (!r[v]) goto out;

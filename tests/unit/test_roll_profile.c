@@ -153,7 +153,7 @@ static void vs_tight_reference(void)
   rs_roll *ref = tight_newsprint(&p);
   if (!ref) return;
   /* the reuse held to 1e-5 and 1e-6 */
-  const double rtols[2] = {1e-5 / RS_REUSE_TOL_FACTOR, 1e-6 / RS_REUSE_TOL_FACTOR};
+  const double rtols[2] = {1e-5 / RS_ACCURACY_PER_RTOL, 1e-6 / RS_ACCURACY_PER_RTOL};
   errs prev = {0.0, 0.0, 0.0};
   for (int i = 0; i < 2; ++i) {
     rs_roll *r[3];
@@ -176,7 +176,7 @@ static void vs_tight_reference(void)
      * integrations leave ~0.3 of it (none), the reuse's error, of one sign, the rest (the
      * corrected reuse uses its tolerance: measured 1.5x; the first-order bound is the
      * more cautious, and reuses less) */
-    const double tol = RS_REUSE_TOL_FACTOR * rtols[i];
+    const double tol = RS_ACCURACY_PER_RTOL * rtols[i];
     for (int m = 0; m < 3; ++m) {
       CHECK_LT(e[m].core, 3.0 * tol);
       CHECK_LT(e[m].sr, 3.0 * tol);
@@ -221,8 +221,8 @@ static void film_span(void)
            a.full_integrations, on->deep_references, ea, b.cvode_steps, b.full_integrations, eb);
     CHECK_LT((double)a.cvode_steps, 0.8 * (double)b.cvode_steps);
     CHECK_LT((double)a.full_integrations, 0.5 * (double)b.full_integrations);
-    CHECK_LT(ea, 3.0 * RS_REUSE_TOL_FACTOR * p.rtol);
-    CHECK_LT(eb, 3.0 * RS_REUSE_TOL_FACTOR * p.rtol);
+    CHECK_LT(ea, 3.0 * RS_ACCURACY_PER_RTOL * p.rtol);
+    CHECK_LT(eb, 3.0 * RS_ACCURACY_PER_RTOL * p.rtol);
   }
   rs_roll_destroy(&ref);
   rs_roll_destroy(&on);
@@ -320,7 +320,8 @@ static void deep_reference(void)
   rs_roll_params p;
   rs_roll *ref = tight_newsprint(&p);
   p.reuse = RS_REUSE_ON;
-  p.rtol = 1e-5;
+  p.rtol = 1e-5 / RS_ACCURACY_PER_RTOL; /* the reuse held to tol = 1e-5 */
+  const double tol = 1e-5;
   rs_roll *deep = wind_deep(&p, n, T0, RS_REF_DEEP_MAX), *core = wind_deep(&p, n, T0, 0);
   if (ref && deep && core) {
     rs_roll_stats a, b;
@@ -335,11 +336,11 @@ static void deep_reference(void)
     CHECK(core->deep_references == 0);
     CHECK(deep->deep_references >= 10);
     CHECK(a.full_integrations < b.full_integrations);
-    /* the remainders the rebasing leaves: at most 4 % of rtol an increment (measured
-     * 4.5e-6 against 4.0e-6 on the core pressure) */
-    CHECK_LT(ea.core, 1.2 * eb.core + 0.04 * p.rtol);
-    CHECK_LT(ea.sr, 1.2 * eb.sr + 0.04 * p.rtol);
-    CHECK_LT(ea.st, 1.2 * eb.st + 0.04 * p.rtol);
+    /* the remainders the rebasing leaves: at most 4 % of the reuse's tolerance an
+     * increment */
+    CHECK_LT(ea.core, 1.2 * eb.core + 0.04 * tol);
+    CHECK_LT(ea.sr, 1.2 * eb.sr + 0.04 * tol);
+    CHECK_LT(ea.st, 1.2 * eb.st + 0.04 * tol);
   }
   rs_roll_destroy(&ref);
   rs_roll_destroy(&deep);

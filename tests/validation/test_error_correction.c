@@ -78,7 +78,7 @@ static void altmann_exact(void)
   CHECK_LT(30.0 * b.core, a.core);
   CHECK_LT(30.0 * b.sr, a.sr);
   CHECK_LT(30.0 * b.st, a.st);
-  const double tol = RS_REUSE_TOL_FACTOR * p.rtol;
+  const double tol = RS_ACCURACY_PER_RTOL * p.rtol;
   CHECK_LT(c.core, 3.0 * tol);
   CHECK_LT(c.sr, 3.0 * tol);
   CHECK_LT(c.st, 3.0 * tol);
@@ -133,7 +133,7 @@ static void pfeiffer_case(rs_load_placement placement)
         CHECK_LT(30.0 * b.core, a.core);
         CHECK_LT(30.0 * b.sr, a.sr);
         CHECK_LT(10.0 * b.st, a.st);
-        CHECK_LT(b.core, 3.0 * RS_REUSE_TOL_FACTOR * rtols[i]);
+        CHECK_LT(b.core, 3.0 * RS_ACCURACY_PER_RTOL * rtols[i]);
       }
     }
     rs_roll_destroy(&off);

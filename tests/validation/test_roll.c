@@ -413,7 +413,7 @@ static void lumping_corrected(void)
 
 /* The reuse of the deep solution (roll.c, roll_reuse_start) against every increment
  * integrated from the core, on the Pfeiffer newsprint roll, where the modulus drifts with
- * every layer. Its bound is tol x T0/s per increment at any node (tol = RS_REUSE_TOL_FACTOR
+ * every layer. Its bound is tol x T0/s per increment at any node (tol = RS_ACCURACY_PER_RTOL
  * x rtol); summed over the increments that reach a node that is at most ~N tol (T0/s) / P
  * of the node's pressure (0.5 tol here), so the difference must stay below a few tol of
  * the core pressure (measured 0.3-0.5 tol at 1500 layers: docs/roll-model.md), fall with
@@ -426,7 +426,7 @@ static void reuse_vs_from_core(void)
   const double tols[] = {1e-5, 1e-6};
   for (int i = 0; i < 2; ++i) {
     rs_roll_params p = newsprint_params(n);
-    p.rtol = tols[i] / RS_REUSE_TOL_FACTOR;
+    p.rtol = tols[i] / RS_ACCURACY_PER_RTOL;
     p.reuse = RS_REUSE_FIRST_ORDER; /* the bound above is this reuse's (the default's error
                                        is second order: test_roll_profile.vs_tight_reference) */
     rs_roll *deep = wind(&p, n, 1, 682.5);
