@@ -46,7 +46,7 @@ typedef enum rs_load_placement {
  * "Reusing the deep solution" and "The deep part corrected for the drift" (the default, with
  * one layer per increment and its load beneath it; otherwise the first-order reuse). */
 /* The accuracy rtol stands for, as a share of it. The error correction leaves each
- * integration within one to four hundredths of rtol (docs/roll-model.md); what it does not
+ * integration within a few hundredths of rtol, a tenth at most (docs/roll-model.md); what it does not
  * see is held to RS_ACCURACY_PER_RTOL x rtol directly: the deep reuse (whose error, of one
  * sign, adds up to ~1.3x that over a reel: the two are then of a size, measured on six
  * scenes and the 100,633-layer film, docs/accuracy.md) and the storage stages' stepped
@@ -65,7 +65,7 @@ typedef enum rs_reuse {
  * (docs/roll-model.md, "Correcting the integration's error"): each step's quintic
  * interpolant misses the equations by a defect measured at its middle, and the errors
  * this leaves are carried up the roll by the equations' linearisation; subtracted, the
- * stresses come out 100x or more closer to a tight reference at equal cost. */
+ * stresses come out 80x or more closer to a tight reference at equal cost. */
 typedef enum rs_correction {
   RS_CORRECTION_ON = 0,  /* the default */
   RS_CORRECTION_OFF = 1  /* the stored ln y as CVODE integrates it */

@@ -170,7 +170,7 @@ static const ys_value v_correction = ENUM(corrections);
 
 static const ys_field numerics_fields[] = {
     DEF("layers_per_step", &v_int, "1"),
-    DEF("rtol", &v_float, "1e-3"), /* docs/accuracy.md: corrected, the stresses within ~3e-5 */
+    DEF("rtol", &v_float, "1e-3"), /* docs/accuracy.md: corrected, the stresses within ~4e-5 */
     DEF("atol", &v_float, "0"),
     DEF("max_steps", &v_long, "0"),
     DEF("reuse", &v_reuse, "deep"),

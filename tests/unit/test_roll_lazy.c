@@ -162,7 +162,7 @@ static void very_soft_web(void)
     for (int k = 0; k < n; ++k) CHECK(rs_roll_add_layers(r[v], 1, &T) == RS_OK);
   }
   CHECK_LOG("profile difference, reuse against none", profile_difference(r[0], r[1], n));
-  CHECK_LT(profile_difference(r[0], r[1], n), 2e-2); /* the reuse's own error here: 4e-3 */
+  CHECK_LT(profile_difference(r[0], r[1], n), 2e-2); /* the reuse's own error here: 7.8e-3 */
 out:
   rs_roll_destroy(&r[0]);
   rs_roll_destroy(&r[1]);

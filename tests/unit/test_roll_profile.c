@@ -173,7 +173,7 @@ static void vs_tight_reference(void)
              e[m].core, e[m].sr, e[m].st, s[m].cvode_steps, s[m].full_integrations);
     }
     /* every mode within 3x the reuse's tolerance of the reference: the corrected
-     * integrations leave ~0.3 of it (none), the reuse's error, of one sign, the rest (the
+     * integrations leave 0.2 - 1.6 of it (none), the reuse's error, of one sign, the rest (the
      * corrected reuse uses its tolerance: measured 1.5x; the first-order bound is the
      * more cautious, and reuses less) */
     const double tol = RS_ACCURACY_PER_RTOL * rtols[i];
