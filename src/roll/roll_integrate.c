@@ -295,7 +295,7 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
  *     e_w(b) = e_w(a) e^-A + m e^-A/2,
  *     e_L(b) = e_L(a) + e_w(a) h (1 - e^-A)/A + (8/15) h d_L(1/2) + m h (1 - e^-A/2)/A.
  * Measured against integrations at rtol 1e-11 (a standalone CVODE run and the reels of
- * docs/roll-model.md), this estimate is the global error of L to 0.1 - 0.3 %, for BDF and
+ * docs/roll-model.md), this estimate is the global error of L to 0.02 - 0.3 %, for BDF and
  * Adams alike: CVODE's own local error estimates, which the correction used before, account
  * for a third to two thirds of it (steps of a fifth of the depth put the higher terms of the
  * local error at the order of the leading one they estimate). Inside the step the
