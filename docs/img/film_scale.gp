@@ -14,7 +14,7 @@ stats after using 1:3 nooutput
 n0 = STATS_min_x
 t0 = STATS_min_y
 f(x) = t0 * (x / n0) ** 1.3
-plot before using 1:3 with linespoints pt 7 title 'start of this session (cde86a3)', \
-     after using 1:3 with linespoints pt 5 title 'now (bound calibrated, exact profile, FMA)', \
+plot before using 1:3 with linespoints pt 7 title 'before (f1c8835: rtol 3e-5, correction by CVODE estimates)', \
+     after using 1:3 with linespoints pt 5 title 'now (defect-based correction, rtol 1e-3)', \
      f(x) with lines dt 2 lc rgb 'gray' title 'N^{1.3} from the first point (target slope)', \
      3 with lines dt 3 lc rgb 'red' title 'target at 100,633 layers: 3 s'
