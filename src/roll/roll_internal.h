@@ -40,6 +40,14 @@ typedef struct roll_wstep {
   int lo, hi;
 } roll_wstep;
 
+/* ln g^2 in one interval between layer nodes: its index j, the epoch it belongs to, and
+ * ln g^2 = y0 + f (m0 + f (c2 + f c3)); g0 = e^y0 = g^2 at its lower node */
+typedef struct roll_g2_cubic {
+  int j;
+  unsigned long long epoch;
+  double y0, m0, c2, c3, g0;
+} roll_g2_cubic;
+
 struct rs_roll {
   rs_roll_params p;
   double kc;            /* core condition r y'/y at r_c */
@@ -58,12 +66,9 @@ struct rs_roll {
   unsigned long long lg2_range_epoch;
   int lg2_range_max;    /* an integration whose top is at most this many nodes above its
                            start forms them in one pass (RS_LG2_RANGE_MAX; 0: never) */
-  /* the Hermite cubic of the interval last evaluated (CVODE's calls cluster): its index,
-   * the epoch it belongs to, and the cubic of ln g^2 in it */
-  int hj;
-  unsigned long long hepoch;
-  double hy0, hm0, hc2, hc3, hg0; /* ln g^2 = hy0 + f (hm0 + f (hc2 + f hc3)) in the
-                                     interval; hg0 = e^hy0 = g^2 at its lower node */
+  /* the Hermite cubic of the interval the right-hand side last evaluated (CVODE's calls
+   * cluster) */
+  roll_g2_cubic g2c;
   /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
    * its end all look at the same x */
   double gx, g2x, dg2x, gxi; /* gxi: the layer coordinate (r - r_c)/t at gx */

@@ -52,12 +52,13 @@ static inline double roll_radius_at(rs_roll *roll, double x)
 }
 
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
- * the layer coordinate xi = (r - r_c)/t, and d(g^2)/dx = g^2 v'(xi) r/t (continuous: the
- * interpolant is C^1), which the node interpolation needs. */
-static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
+ * the layer coordinate *xi = (r - r_c)/t, and d(g^2)/dx = g^2 v'(xi) r/t (continuous: the
+ * interpolant is C^1), which the node interpolation needs. hc holds the interval's cubic,
+ * formed afresh when x is in another one. */
+static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *dg2, double *xi_out)
 {
   const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) * roll->inv_caliper;
-  roll->gxi = xi;
+  *xi_out = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
   if (j < 0 || j >= last) {
@@ -65,24 +66,24 @@ static double roll_g2_eval(rs_roll *roll, double x, double *dg2)
     return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
   }
   double f = xi - j;
-  if (j != roll->hj || roll->hepoch != roll->epoch) {
+  if (j != hc->j || hc->epoch != roll->epoch) {
     const double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
     const double m0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
     const double m1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
     /* the cubic as y0 + f (m0 + f (c2 + f c3)): three dependent multiply-adds a call */
-    roll->hy0 = y0;
-    roll->hm0 = m0;
-    roll->hc2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1;
-    roll->hc3 = 2.0 * (y0 - y1) + m0 + m1;
-    roll->hg0 = roll->p.E_theta / roll->Er[j]; /* = e^y0 */
-    roll->hj = j;
-    roll->hepoch = roll->epoch;
+    hc->y0 = y0;
+    hc->m0 = m0;
+    hc->c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1;
+    hc->c3 = 2.0 * (y0 - y1) + m0 + m1;
+    hc->g0 = roll->p.E_theta / roll->Er[j]; /* = e^y0 */
+    hc->j = j;
+    hc->epoch = roll->epoch;
   }
-  const double m0 = roll->hm0, c2 = roll->hc2, c3 = roll->hc3;
+  const double m0 = hc->m0, c2 = hc->c2, c3 = hc->c3;
   /* e^v = g^2 at the node times e^(v - y0), a change of ln g^2 within one layer: the
    * Taylor sum where it is small (a tenth of the cost of exp(), a right-hand side at a time) */
   const double dv0 = f * (m0 + f * (c2 + f * c3));
-  double g2 = fabs(dv0) < 0.03 ? roll->hg0 * roll_exp_small_estrin(dv0) : exp(roll->hy0 + dv0);
+  double g2 = fabs(dv0) < 0.03 ? hc->g0 * roll_exp_small_estrin(dv0) : exp(hc->y0 + dv0);
   const double dv = m0 + f * (2.0 * c2 + 3.0 * c3 * f);
   *dg2 = g2 * dv * (r * roll->inv_caliper);
   return g2;
@@ -122,29 +123,21 @@ void roll_lg2_range(rs_roll *roll, int lo, int hi)
   roll->lg2_range_epoch = roll->epoch;
 }
 
-/* g^2 at x for the error correction's look inside a step, leaving what the right-hand side
- * and the step's end keep (the interval's cubic, the last point's layer coordinate) as
- * they were: the next step starts where this one ended */
+/* g^2 at x for the error correction's look inside a step, on a copy of the right-hand
+ * side's interval cubic: what it and the step's end keep stay as they were, as the next
+ * step starts where this one ended */
 double roll_g2_probe(rs_roll *roll, double x)
 {
-  const int hj = roll->hj;
-  const unsigned long long hepoch = roll->hepoch;
-  const double hy0 = roll->hy0, hm0 = roll->hm0, hc2 = roll->hc2, hc3 = roll->hc3, hg0 = roll->hg0;
-  const double gxi = roll->gxi;
-  double dg2;
-  const double g2 = roll_g2_eval(roll, x, &dg2);
-  roll->hj = hj;
-  roll->hepoch = hepoch;
-  roll->hy0 = hy0, roll->hm0 = hm0, roll->hc2 = hc2, roll->hc3 = hc3, roll->hg0 = hg0;
-  roll->gxi = gxi;
-  return g2;
+  roll_g2_cubic hc = roll->g2c;
+  double dg2, xi;
+  return roll_g2_eval(roll, &hc, x, &dg2, &xi);
 }
 
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
 double roll_g2_at(rs_roll *roll, double x, double *dg2)
 {
   if (x != roll->gx || roll->gepoch != roll->epoch) {
-    roll->g2x = roll_g2_eval(roll, x, &roll->dg2x);
+    roll->g2x = roll_g2_eval(roll, &roll->g2c, x, &roll->dg2x, &roll->gxi);
     roll->gx = x;
     roll->gepoch = roll->epoch;
   }
