@@ -40,19 +40,19 @@ typedef enum rs_load_placement {
                             the new layer part of the loaded body */
 } rs_load_placement;
 
+/* The accuracy rtol stands for, as a share of it. The error correction leaves each
+ * integration within a few hundredths of rtol, a tenth at most (docs/roll-model.md); what
+ * it does not see is held to RS_ACCURACY_PER_RTOL x rtol directly: the deep reuse (whose
+ * error, of one sign, adds up to ~1.3x that over a reel: the two are then of a size,
+ * measured on six scenes and the 100,633-layer film, docs/accuracy.md) and the storage
+ * stages' stepped changes and creep integration (docs/storage.md) */
+#define RS_ACCURACY_PER_RTOL 0.02
+
 /* Whether an increment may keep the deep part of an earlier integration from the core
  * where the modulus has barely changed since, and integrate only from there up (the error
  * this adds to an increment is held to RS_ACCURACY_PER_RTOL x rtol x T0/s). docs/roll-model.md,
  * "Reusing the deep solution" and "The deep part corrected for the drift" (the default, with
  * one layer per increment and its load beneath it; otherwise the first-order reuse). */
-/* The accuracy rtol stands for, as a share of it. The error correction leaves each
- * integration within a few hundredths of rtol, a tenth at most (docs/roll-model.md); what it does not
- * see is held to RS_ACCURACY_PER_RTOL x rtol directly: the deep reuse (whose error, of one
- * sign, adds up to ~1.3x that over a reel: the two are then of a size, measured on six
- * scenes and the 100,633-layer film, docs/accuracy.md) and the storage stages' stepped
- * changes and creep integration (docs/storage.md) */
-#define RS_ACCURACY_PER_RTOL 0.02
-
 typedef enum rs_reuse {
   RS_REUSE_ON = 0,       /* the default: the deep part reused, corrected to first order
                             for the modulus drift since it was integrated */
