@@ -79,7 +79,8 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
     /* numbers with units -> the keys' SI numbers (units.c), then the schema's checks */
     if (norm == RS_OK) st = input_ok(ys_convert_units(root, s));
     if (norm == RS_OK && st == RS_OK) st = input_ok(ys_typecheck(root, &ys_scene_schema));
-    else st = input_ok(ys_note(norm));
+    if (norm != RS_OK) st = input_ok(ys_note(norm));
+    ys_units_note_errors();
   }
   if (st == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = ys_fill_defaults(root, s->path);

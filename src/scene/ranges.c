@@ -136,8 +136,7 @@ static rs_status walk(yn *node, const ys_value *s, const char *path, ys_number_f
 static rs_status visit(yn *node, const char *path, int column, ys_number_fn fn, void *ctx)
 {
   if (node->kind != YN_SCALAR) return RS_OK;
-  rs_status st = fn(node, path, column, ctx);
-  return st == RS_ERR_INPUT ? ys_note(st) : st;
+  return fn(node, path, column, ctx);
 }
 
 static rs_status walk(yn *node, const ys_value *s, const char *path, ys_number_fn fn, void *ctx)
@@ -234,9 +233,9 @@ static rs_status check_node(yn *node, const char *path, int column, void *ctx)
     slip_hint(r, path, unit, v, num, hint, sizeof hint);
     ys_fmt(lo, sizeof lo, r->lo);
     ys_fmt(hi, sizeof hi, r->hi);
-    return yn_error(node, "%s%s%s is %s the plausible bound %s%s%s (%s to %s%s%s): %s", num, sp,
+    return ys_note(yn_error(node, "%s%s%s is %s the plausible bound %s%s%s (%s to %s%s%s): %s", num, sp,
                     unit, v < r->lo ? "below" : "above", v < r->lo ? lo : hi, sp, unit, lo, hi,
-                    sp, unit, hint);
+                    sp, unit, hint));
   }
   /* zero is never a slip of units */
   if (v == 0.0 || isnan(r->plo) || within(v, r->plo, r->phi)) return RS_OK;

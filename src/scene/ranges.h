@@ -29,9 +29,12 @@ const ys_range *ys_range_of(const char *path);
 const ys_range *ys_ranges(int *n);
 
 /* units.c: converts every number written with a unit into the key's scene unit, in place
- * (the text becomes the SI number, %.15g; scene->units_text lists each conversion). Errors (unknown unit, wrong dimension, a unit on
- * a plain-number key) are noted (ys_note) at the value's line; RS_ERR_INPUT if any. */
+ * (the text becomes the SI number, %.15g; scene->units_text lists each conversion). Errors
+ * (unknown unit, wrong dimension, a unit on a plain-number key), located at the value, are
+ * held back (RS_ERR_INPUT if any) and noted (ys_note) by ys_units_note_errors() after the
+ * schema checks, so that the load's errors stay in the order of the file's keys as before. */
 rs_status ys_convert_units(yn *root, rs_scene *scene);
+void ys_units_note_errors(void);
 /* v (in unit `from`) in unit `to`; 0 when either is unknown or they do not convert. */
 int ys_unit_convert(double v, const char *from, const char *to, double *out);
 /* A value text "NUMBER UNIT": the number and the unit part (trimmed) in unit[]; 0 when the
@@ -45,7 +48,7 @@ rs_status ys_check_ranges(const yn *root, rs_scene *scene);
 /* Calls fn on every number of the tree the schema calls a number (lists of numbers and the
  * columns of tables of pairs included), with its key path without indices and, for a
  * column of a pair, the column (0, 1; -1 otherwise). Stops at the first status not RS_OK
- * other than RS_ERR_INPUT, which it notes and goes on. */
+ * other than RS_ERR_INPUT (which fn notes itself, if it wants) and goes on after that. */
 typedef rs_status (*ys_number_fn)(yn *node, const char *path, int column, void *ctx);
 rs_status ys_each_number(yn *root, ys_number_fn fn, void *ctx);
 

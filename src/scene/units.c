@@ -137,6 +137,25 @@ static void column_unit(const char *unit, int column, char *out, size_t size)
   else snprintf(out, size, "%s", bar + 1);
 }
 
+/* the errors of the load in progress on this thread, held until ys_units_note_errors */
+static _Thread_local struct {
+  int n;
+  char text[YS_MAX_ERRORS][640];
+} held;
+
+static rs_status hold(rs_status st)
+{
+  if (st == RS_ERR_INPUT && held.n < YS_MAX_ERRORS)
+    snprintf(held.text[held.n++], sizeof held.text[0], "%s", rs_error_message());
+  return st;
+}
+
+void ys_units_note_errors(void)
+{
+  for (int i = 0; i < held.n; ++i) ys_note(RS_ERROR(RS_ERR_INPUT, "%s", held.text[i]));
+  held.n = 0;
+}
+
 static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
 {
   rs_scene *scene = ctx;
@@ -168,6 +187,7 @@ static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
   /* a bad value has been reported: a number stands in for it so that the schema checks do
    * not report it again (the load stops after them) */
   if (st != RS_OK) si = 0.0;
+  hold(st);
   /* 15 digits: "20 um" reads as 2e-05, as if written so (the conversion's last bit is noise) */
   snprintf(text, sizeof text, "%.15g", si);
   if (st == RS_OK && scene) { /* for the resolved scene's header: what each unit became */
@@ -185,5 +205,6 @@ static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
 
 rs_status ys_convert_units(yn *root, rs_scene *scene)
 {
+  held.n = 0;
   return ys_each_number(root, convert_node, scene);
 }
