@@ -38,3 +38,4 @@ rs_cli_test(core_inner_diameter_wall 0 [[core: rigid \(no core compliance\), rad
             check ${USC}/small.yaml --set core.radius=null --set "core.inner_diameter=3 in" --set "core.wall=12 mm")
 rs_cli_test(core_wall_and_bore 2 [[give one of core\.bore, core\.inner_diameter and core\.wall .*not two]]
             check ${USC}/small.yaml --set core.wall=0.01 --set core.bore=0.03 --set core.modulus=5e9 --set core.poisson=0.3)
+rs_cli_script(tutorial tutorial.sh ${PROJECT_SOURCE_DIR}/docs/tutorial.md)
