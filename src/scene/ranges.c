@@ -209,7 +209,7 @@ static void slip_hint(const ys_range *r, const char *path, const char *unit, dou
   }
 }
 
-static void column_unit(const char *unit, int column, char *out, size_t size)
+void ys_column_unit(const char *unit, int column, char *out, size_t size)
 {
   const char *bar = strchr(unit, '|');
   if (!bar || column < 0) snprintf(out, size, "%s", unit);
@@ -225,7 +225,7 @@ static rs_status check_node(yn *node, const char *path, int column, void *ctx)
   /* a pair's first column is the radius the recipe or law is tabulated at: checked by its law */
   if (!r || column == 0 || !ys_parse_double(node->text, &v)) return RS_OK;
   char unit[32], hint[160], num[64], lo[64], hi[64], where[512];
-  column_unit(r->unit, column, unit, sizeof unit);
+  ys_column_unit(r->unit, column, unit, sizeof unit);
   const char *sp = unit[0] ? " " : "";
   /* the number as written (a value given with a unit is shown in the key's unit) */
   snprintf(num, sizeof num, "%s", node->text);

@@ -25,6 +25,8 @@ typedef struct ys_range {
 
 /* The entry of a key path (indices dropped); NULL when the key has none. */
 const ys_range *ys_range_of(const char *path);
+/* The unit of a key (column < 0) or of one column of its pairs ("m|N/m", column 0 or 1). */
+void ys_column_unit(const char *unit, int column, char *out, size_t size);
 /* The table, for the test that every numeric key of the schema has an entry. */
 const ys_range *ys_ranges(int *n);
 

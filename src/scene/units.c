@@ -128,15 +128,6 @@ static void describe(const char *unit, const char **what, const char **examples)
   *examples = unit;
 }
 
-/* the unit of a scene key, or of one column of its pairs ("m|N/m") */
-static void column_unit(const char *unit, int column, char *out, size_t size)
-{
-  const char *bar = strchr(unit, '|');
-  if (!bar || column < 0) snprintf(out, size, "%s", unit);
-  else if (column == 0) snprintf(out, size, "%.*s", (int)(bar - unit), unit);
-  else snprintf(out, size, "%s", bar + 1);
-}
-
 /* the errors of the load in progress on this thread, held until ys_units_note_errors */
 static _Thread_local struct {
   int n;
@@ -164,7 +155,7 @@ static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
   if (node->quoted || yn_is_empty(node) || ys_parse_double(node->text, &v)) return RS_OK;
   if (!ys_split_quantity(node->text, &v, unit, sizeof unit)) return RS_OK; /* typecheck says why */
   const ys_range *r = ys_range_of(path);
-  column_unit(r ? r->unit : "", column, key_unit, sizeof key_unit);
+  ys_column_unit(r ? r->unit : "", column, key_unit, sizeof key_unit);
   rs_status st = RS_OK;
   if (!key_unit[0]) {
     st = yn_error(node, "takes a plain number, without a unit (got '%s')", node->text);
