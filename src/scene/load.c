@@ -85,7 +85,7 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   if (st == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = ys_fill_defaults(root, s->path);
   if (st == RS_OK && (st = input_ok(ys_resolve(root, s))) == RS_OK) st = ys_errors_end();
-  /* plausibility bounds and slip warnings (ranges.c), on values the resolution accepted */
+  /* plausibility bounds and slip warnings (bounds.c), on values the resolution accepted */
   if (st == RS_OK && (st = input_ok(ys_check_ranges(root, s))) == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = yn_emit(root, &body);
   if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);

@@ -5,7 +5,7 @@
  * Celsius where the schema says so). A value may carry a unit ("20 um", "600 m/min",
  * "2 pli"): units.c converts it with UDUNITS-2 before the schema checks, so the rest of the
  * loader and the physics see plain SI numbers. After the range checks of the resolution,
- * ranges.c holds each value to its hard bounds (exit 2 with the likely unit slip) and notes
+ * bounds.c holds each value to its hard bounds (exit 2 with the likely unit slip) and notes
  * a slip warning for a value outside the range plants use. */
 #ifndef RS_SCENE_RANGES_H
 #define RS_SCENE_RANGES_H
@@ -43,7 +43,7 @@ int ys_unit_convert(double v, const char *from, const char *to, double *out);
  * text does not start with a number or has no unit. */
 int ys_split_quantity(const char *text, double *v, char *unit, size_t size);
 
-/* ranges.c: the hard bounds (errors noted) and slip warnings (kept in the scene) over the
+/* bounds.c: the hard bounds (errors noted) and slip warnings (kept in the scene) over the
  * resolved tree. */
 rs_status ys_check_ranges(const yn *root, rs_scene *scene);
 
