@@ -1,7 +1,7 @@
 /* Defect-risk indicators (docs/defects.md): each rule compares the final stress profile
  * with a threshold and says where the roll is prone to a defect. They are screening
  * rules from winding practice, not models of the defects. */
-#include "reelsim/defects.h"
+#include "reel/defects_internal.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,6 +20,30 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
   return "?";
 }
 
+const char *rs_starring_criterion_name(rs_starring_criterion c)
+{
+  switch (c) {
+  case RS_STARRING_NONE: return "none";
+  case RS_STARRING_STRENGTH: return "hoop_strength";
+  case RS_STARRING_PACKET: return "packet_buckling";
+  }
+  return "?";
+}
+
+/* The drive's share at the core: center winding (and unwinding on a core brake) puts the
+ * whole torque there, surface winding none (the drum drives the surface), center-surface
+ * its torque_share. */
+double rs_defect_core_share(const rs_problem *pb)
+{
+  if (pb->nip.model == RS_NIP_NONE) return 1.0;
+  switch (pb->nip.winder) {
+  case RS_WINDER_CENTER: return 1.0;
+  case RS_WINDER_SURFACE: return 0.0;
+  case RS_WINDER_CENTER_SURFACE: return pb->nip.torque_share;
+  }
+  return 0.0; /* a winder driven at the surface */
+}
+
 void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
 {
   lim->pressure_limit = pb->material.pressure_limit;
@@ -28,6 +52,25 @@ void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
   lim->friction_layer = pb->material.friction_layer;
   lim->E_theta = pb->material.E_theta;
   lim->radial = &pb->material.radial;
+  lim->caliper = pb->material.caliper;
+  lim->hoop_strength = pb->material.hoop_strength;
+  lim->core_stiffness = rs_core_stiffness(&pb->core);
+  lim->acceleration = pb->acceleration;
+  lim->density = pb->material.density;
+  lim->core_share = rs_defect_core_share(pb);
+  lim->core_friction = pb->core_friction;
+}
+
+/* The torque the interface at r passes on (module comment of defects.h): the drive enters
+ * as s (T R + I alpha) at the core and (1 - s)(T R + I alpha) at the surface; the layers
+ * inside r take I_in alpha of it, so the interface carries s (T R + I alpha) - I_in alpha,
+ * |.| worst over the sign of alpha (a start or a stop): s T R + |s - f_in| I |alpha|. */
+double rs_defect_interface_torque(double s, double TR, double M_acc, double r, double r_c,
+                                  double R)
+{
+  double d = R * R * R * R - r_c * r_c * r_c * r_c;
+  double f_in = d > 0.0 ? (r * r * r * r - r_c * r_c * r_c * r_c) / d : 0.0;
+  return s * TR + fabs(s - f_in) * M_acc;
 }
 
 double rs_defect_critical_hoop_stress(double E_theta, double E_r)
@@ -47,7 +90,7 @@ void rs_defect_report_destroy(rs_defect_report **rep)
 {
   if (!rep || !*rep) return;
   free((*rep)->hoop.ranges);
-  free((*rep)->buckling.ranges);
+  free((*rep)->starring.ranges);
   free((*rep)->slip.ranges);
   free(*rep);
   *rep = NULL;
@@ -55,8 +98,8 @@ void rs_defect_report_destroy(rs_defect_report **rep)
 
 /* Collects the runs of consecutive flagged layers 0..n-1 into *ranges (malloc'd, NULL
  * when none). Returns the number of flagged layers, or -1 when out of memory. */
-static int flag_ranges(const unsigned char *flag, int n, const double *radius,
-                       rs_defect_range **ranges, int *n_ranges)
+int rs_defect_flag_ranges(const unsigned char *flag, int n, const double *radius,
+                          rs_defect_range **ranges, int *n_ranges)
 {
   int runs = 0, count = 0;
   *ranges = NULL;
@@ -100,60 +143,9 @@ static rs_status assess_hoop(const rs_reel_result *res, unsigned char *flag, rs_
       rep->hoop.min_radius = res->radius[j];
     }
   }
-  rep->hoop.layers = flag_ranges(flag, n, res->radius, &rep->hoop.ranges, &rep->hoop.n_ranges);
+  rep->hoop.layers = rs_defect_flag_ranges(flag, n, res->radius, &rep->hoop.ranges, &rep->hoop.n_ranges);
   if (rep->hoop.layers < 0) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the hoop ranges");
   rep->hoop.verdict = rep->hoop.layers > 0 ? RS_DEFECT_PRESENT : RS_DEFECT_OK;
-  return RS_OK;
-}
-
-/* Interlayer pressure (Pa, compression positive, a gap as 0) on the inner face of layer j
- * (the core contact for the first) and on its outer face. */
-static double pressure_below(const rs_reel_result *res, int j)
-{
-  double P = j == 0 ? res->core_pressure : 0.0 - res->sigma_r[j - 1];
-  return P > 0.0 ? P : 0.0;
-}
-
-static double pressure_above(const rs_reel_result *res, int j)
-{
-  double P = 0.0 - res->sigma_r[j];
-  return P > 0.0 ? P : 0.0;
-}
-
-/* Hoop buckling (starring): layer j buckles on the stack's elastic foundation where its
- * compression exceeds sigma_cr = sqrt(E_theta E_r / 3) (rs_defect_critical_hoop_stress),
- * E_r the stack's tangent radial modulus at the softer of its two faces (the lesser
- * E_r(P) of the interfaces below and above it). Risk where -sigma_theta > sigma_cr. */
-static rs_status assess_buckling(const rs_reel_result *res, const rs_defect_limits *lim,
-                                 unsigned char *flag, rs_defect_report *rep)
-{
-  int n = res->n_layers;
-  rep->buckling.verdict = RS_DEFECT_NOT_ASSESSED;
-  if (n == 0 || !lim->radial || !(lim->E_theta > 0.0)) return RS_OK;
-  rep->buckling.margin_min = INFINITY;
-  for (int j = 0; j < n; ++j) {
-    flag[j] = 0;
-    double c = 0.0 - res->sigma_theta[j];
-    if (!(c > 0.0)) continue;
-    double E_lo = rs_radial_modulus(lim->radial, pressure_below(res, j));
-    double E_hi = rs_radial_modulus(lim->radial, pressure_above(res, j));
-    double crit = rs_defect_critical_hoop_stress(lim->E_theta, E_lo < E_hi ? E_lo : E_hi);
-    double margin = crit / c;
-    rep->buckling.compressed++;
-    flag[j] = c > crit;
-    if (margin < rep->buckling.margin_min) {
-      rep->buckling.margin_min = margin;
-      rep->buckling.margin_radius = res->radius[j];
-      rep->buckling.margin_critical = crit;
-      rep->buckling.margin_sigma = res->sigma_theta[j];
-    }
-  }
-  if (rep->buckling.compressed == 0) rep->buckling.margin_min = 0.0;
-  rep->buckling.layers =
-      flag_ranges(flag, n, res->radius, &rep->buckling.ranges, &rep->buckling.n_ranges);
-  if (rep->buckling.layers < 0)
-    return RS_ERROR(RS_ERR_MEMORY, "out of memory for the buckling ranges");
-  rep->buckling.verdict = rep->buckling.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
   return RS_OK;
 }
 
@@ -178,31 +170,89 @@ static void assess_pressure(const rs_reel_result *res, double limit, rs_defect_r
   rep->pressure.verdict = rep->pressure.max > limit ? RS_DEFECT_RISK : RS_DEFECT_OK;
 }
 
+/* The inertia torque I |alpha| (N m/m) of the wound layers in a speed change: the given
+ * winding.accel_torque, or rho pi (R^4 - r_c^4) / 2 per unit width times alpha = a / R from
+ * winding.acceleration (a at the surface, m/s^2). *alpha gets |alpha| where known. */
+static double inertia_torque(const rs_defect_limits *lim, double r_c, double R, double *alpha)
+{
+  double I = lim->density > 0.0 ? lim->density * pi * (R * R * R * R - r_c * r_c * r_c * r_c) / 2.0
+                                : 0.0;
+  *alpha = 0.0;
+  if (lim->accel_torque > 0.0) {
+    if (I > 0.0) *alpha = lim->accel_torque / I;
+    return lim->accel_torque;
+  }
+  if (lim->acceleration > 0.0 && I > 0.0) {
+    *alpha = lim->acceleration / R;
+    return I * *alpha;
+  }
+  return 0.0;
+}
+
+void rs_defect_slip_load(const rs_reel_result *res, const rs_defect_limits *lim, rs_slip_load *L)
+{
+  const int n = res->n_layers;
+  L->R = n > 0 ? res->radius[n - 1] : res->core_radius;
+  L->s = lim->core_share;
+  L->TR = (res->web_tension && n > 0 ? res->web_tension[n - 1] : 0.0) * L->R;
+  L->M_acc = inertia_torque(lim, res->core_radius, L->R, &L->alpha);
+}
+
 /* Interlayer slip (cinching): the interface at the outer radius r_j of layer j (between
- * layers j and j+1; the outer surface has none) transmits at most
- * M_f = mu P_j 2 pi r_j^2 (N m/m). Risk where M_f < M, M the applied torque: taking the
- * whole torque at every interface is conservative, since an interface only passes on
- * the torque that accelerates the layers outside it. */
-static rs_status assess_slip(const rs_reel_result *res, double torque, double mu,
+ * layers j and j+1; the outer surface has none) transmits at most M_f = mu P_j 2 pi r_j^2
+ * (N m/m) and carries rs_defect_interface_torque; risk where M_f < the torque. The web
+ * on the core likewise with core.friction and the core pressure. */
+static rs_status assess_slip(const rs_reel_result *res, const rs_defect_limits *lim,
                              unsigned char *flag, rs_defect_report *rep)
 {
   int n = res->n_layers, m = n - 1; /* interfaces */
+  const double mu = lim->friction_layer;
   rep->slip.verdict = RS_DEFECT_NOT_ASSESSED;
-  rep->slip.torque = torque;
   rep->slip.mu = mu;
-  if (!(torque > 0.0 && mu > 0.0) || m < 1) return RS_OK;
+  rep->slip.core_margin = NAN;
+  rep->slip.margin_min = NAN;
+  if (!(mu > 0.0) || m < 1) return RS_OK;
+  rs_slip_load L;
+  rs_defect_slip_load(res, lim, &L);
+  const double R = L.R, rc = res->core_radius, s = L.s, TR = L.TR, M_acc = L.M_acc;
+  rep->slip.alpha = L.alpha;
+  rep->slip.torque = M_acc;
+  rep->slip.tension_torque = TR;
+  rep->slip.core_share = s;
   rep->slip.margin_min = INFINITY;
-  for (int j = 0; j < m; ++j) {
-    double margin = rs_defect_slip_capacity(mu, 0.0 - res->sigma_r[j], res->radius[j]) / torque;
+  /* The outermost wraps take the torque entering at the surface, M(R) over the outermost
+   * interface, by capstan friction (Euler-Eytelwein: tension T0 + M/R held against T0 over
+   * k wraps while 1 + M / (T0 R) <= e^(2 pi mu k)), not by a uniform shear on the pressure
+   * of the layers above them: the check starts k_c wraps below the surface. */
+  const double T0 = res->wound_on_tension ? res->wound_on_tension[n - 1] : TR / R;
+  const double M_out = rs_defect_interface_torque(s, TR, M_acc, res->radius[m - 1], rc, R);
+  int kc = 1;
+  if (T0 > 0.0 && M_out > 0.0) {
+    double k = ceil(log1p(M_out / (T0 * R)) / (2.0 * pi * mu));
+    kc = k < 1.0 ? 1 : k > m ? m : (int)k;
+  }
+  rep->slip.capstan_layers = kc;
+  for (int j = 0; j < m; ++j) flag[j] = 0;
+  for (int j = 0; j < m - kc; ++j) {
+    double M = rs_defect_interface_torque(s, TR, M_acc, res->radius[j], rc, R);
+    double cap = rs_defect_slip_capacity(mu, 0.0 - res->sigma_r[j], res->radius[j]);
+    double margin = M > 0.0 ? cap / M : INFINITY;
     flag[j] = margin < 1.0;
     if (margin < rep->slip.margin_min) {
       rep->slip.margin_min = margin;
       rep->slip.margin_radius = res->radius[j];
+      rep->slip.margin_torque = M;
     }
   }
-  rep->slip.layers = flag_ranges(flag, m, res->radius, &rep->slip.ranges, &rep->slip.n_ranges);
+  if (lim->core_friction > 0.0) {
+    double M = rs_defect_interface_torque(s, TR, M_acc, rc, rc, R);
+    double cap = rs_defect_slip_capacity(lim->core_friction, res->core_pressure, rc);
+    rep->slip.core_margin = M > 0.0 ? cap / M : INFINITY;
+  }
+  rep->slip.layers = rs_defect_flag_ranges(flag, m, res->radius, &rep->slip.ranges, &rep->slip.n_ranges);
   if (rep->slip.layers < 0) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the slip ranges");
-  rep->slip.verdict = rep->slip.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
+  rep->slip.verdict = rep->slip.layers > 0 || rep->slip.core_margin < 1.0 ? RS_DEFECT_RISK
+                                                                           : RS_DEFECT_OK;
   return RS_OK;
 }
 
@@ -231,9 +281,9 @@ rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *l
     st = RS_ERROR(RS_ERR_MEMORY, "out of memory assessing %d layers", res->n_layers);
   } else {
     st = assess_hoop(res, flag, rep);
-    if (st == RS_OK) st = assess_buckling(res, lim, flag, rep);
+    if (st == RS_OK) st = rs_defects_starring(res, lim, flag, rep);
     assess_pressure(res, lim->pressure_limit, rep);
-    if (st == RS_OK) st = assess_slip(res, lim->accel_torque, lim->friction_layer, flag, rep);
+    if (st == RS_OK) st = assess_slip(res, lim, flag, rep);
     assess_core(res, lim->core_rating, rep);
   }
   free(flag);
