@@ -116,7 +116,8 @@ static void ring_stack_rigid_packet(void)
     err[i] = lambda * n * N1 / want - 1.0;
     CHECK_LOG("interlayer k (Pa/m)", k[1]);
     CHECK_LOG("stack's critical force / packet's - 1", err[i]);
-    if (i < 3) CHECK(m == mr); /* at the stiffest, a neighbouring mode within 1e-5 */
+    CHECK_LOG("mode", m);
+    if (i >= 2) CHECK(m == mr);
   }
   for (int i = 1; i < 5; ++i) CHECK_LT(fabs(err[i]), 0.2 * fabs(err[i - 1]));
   CHECK_LT(fabs(err[4]), 1e-5);
