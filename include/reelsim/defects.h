@@ -141,6 +141,16 @@ rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *l
                             rs_defect_report **out);
 void rs_defect_report_destroy(rs_defect_report **rep);
 
+/* A report's figure by name, for bindings (python/reelsim): "starring.layers",
+ * "starring.margin_min", "starring.margin_radius", "starring.packet_margin",
+ * "starring.strength_margin", "starring.mode", "starring.zone_from_core",
+ * "starring.zone_to_core", "slip.layers", "slip.margin_min", "slip.margin_radius",
+ * "slip.capstan_layers"; NaN for an unknown name or one not assessed. */
+double rs_defect_report_value(const rs_defect_report *rep, const char *name);
+/* "starring.verdict", "starring.criterion", "starring.interlayers", "slip.verdict"; ""
+ * for an unknown name. */
+const char *rs_defect_report_text(const rs_defect_report *rep, const char *name);
+
 /* Critical hoop force (N/m, positive) of a ring packet of bending stiffness D (N m, per unit
  * width) and radius R (m) on an elastic foundation of modulus k (Pa/m):
  *     N_cr = min over m >= 2 of [ D (m^2 - 1) / R^2 + k R^2 / (m^2 - 1) ]

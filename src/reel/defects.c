@@ -291,3 +291,40 @@ rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *l
   *out = rep;
   return st;
 }
+
+double rs_defect_report_value(const rs_defect_report *rep, const char *name)
+{
+  if (!rep || !name) return NAN;
+  const int st = rep->starring.verdict != RS_DEFECT_NOT_ASSESSED && rep->starring.compressed > 0;
+  const int sl = rep->slip.verdict != RS_DEFECT_NOT_ASSESSED;
+  const struct { const char *name; int ok; double v; } f[] = {
+      {"starring.layers", rep->starring.verdict != RS_DEFECT_NOT_ASSESSED, rep->starring.layers},
+      {"starring.margin_min", st, rep->starring.margin_min},
+      {"starring.margin_radius", st, rep->starring.margin_radius},
+      {"starring.packet_margin", st, rep->starring.packet_margin},
+      {"starring.strength_margin", st, rep->starring.strength_margin},
+      {"starring.mode", st, rep->starring.mode},
+      {"starring.zone_from_core", st, rep->starring.zone_from_core},
+      {"starring.zone_to_core", st, rep->starring.zone_to_core},
+      {"slip.layers", sl, rep->slip.layers},
+      {"slip.margin_min", sl, rep->slip.margin_min},
+      {"slip.margin_radius", sl, rep->slip.margin_radius},
+      {"slip.capstan_layers", sl, rep->slip.capstan_layers},
+  };
+  for (size_t i = 0; i < sizeof f / sizeof f[0]; ++i)
+    if (strcmp(f[i].name, name) == 0) return f[i].ok ? f[i].v : NAN;
+  return NAN;
+}
+
+const char *rs_defect_report_text(const rs_defect_report *rep, const char *name)
+{
+  if (!rep || !name) return "";
+  const int st = rep->starring.verdict != RS_DEFECT_NOT_ASSESSED && rep->starring.compressed > 0;
+  if (strcmp(name, "starring.verdict") == 0) return rs_defect_verdict_name(rep->starring.verdict);
+  if (strcmp(name, "starring.criterion") == 0)
+    return rs_starring_criterion_name(rep->starring.criterion);
+  if (strcmp(name, "starring.interlayers") == 0)
+    return st ? (rep->starring.bonded ? "bonded" : "slipping") : "";
+  if (strcmp(name, "slip.verdict") == 0) return rs_defect_verdict_name(rep->slip.verdict);
+  return "";
+}
