@@ -25,7 +25,7 @@ rs_cli_test(csv_check_refused 2 [[reelsim: check: --csv only applies to run]]
 # by friction, is far from buckling as a packet on the core, so no WARNING line at all.
 rs_cli_script(falling_taper_hoop_info summary_lines.sh
               [[^  hoop stress +compression \(sigma_theta < 0\) in [0-9]+ layers at r = 76\.3 \.\. [0-9.]+ mm. least -3\.[0-9]+ MPa at r = 76\.[0-9] mm$]]
-              [[^  starring +packet margin N_cr/N = [0-9]+ \(N [0-9.]+ kN/m against [0-9.]+ kN/m; zone r = 76\.2 \.\. 92\.1 mm \(0\.0 \.\. 0\.6 in from the core\), [0-9]+ layers bonded, mode [0-9]+\): ok$]]
+              [[^  starring +packet margin N_cr/N = [0-9]+ \(N [0-9.]+ kN/m against [0-9.]+ kN/m. zone r = 76\.2 \.\. 92\.1 mm \(0\.0 \.\. 0\.6 in from the core\), [0-9]+ layers bonded, mode [0-9]+\): ok$]]
               -- run ${CASES}/newsprint-falling-taper.yaml -o falling-taper.h5)
 # A core that gives way (E_c = 0.5 MPa) under the same recipe: -49.7 MPa at the core,
 # over a hoop strength of 20 MPa, a WARNING decided by the strength.
@@ -46,7 +46,7 @@ rs_cli_test(bonded_zone_no_starring 0
 # The rider case with a 2000 N m/m speed change: the torque each interface carries
 # (T R + I_out alpha) against mu P 2 pi r^2 leaves 6.3 near the core: no WARNING.
 rs_cli_test(rider_accel_no_slip 0
-            [[  interlayer slip +friction torque capacity >= 6\.3[0-9] x the torque carried \(217[0-9.]+ N m/m at r = 79\.9 mm; center drive, T R 175 N m/m, inertia torque 2000 N m/m; from 1 wrap below the surface\): ok]]
+            [[  interlayer slip +friction torque capacity >= 6\.3[0-9] x the torque carried \(217[0-9.]+ N m/m at r = 79\.9 mm. center drive, T R 175 N m/m, inertia torque 2000 N m/m. from 1 wrap below the surface\): ok]]
             run ${CASES}/newsprint-rider.yaml -o rider-accel.h5 --set winding.accel_torque=2000
             --set material.friction_layer=0.3 --set numerics.rtol=1e-3)
 rs_cli_script(falling_taper_defects_file defects_file.sh ${CASES}/newsprint-falling-taper.yaml)
