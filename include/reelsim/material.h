@@ -80,6 +80,8 @@ typedef struct rs_material {
   rs_prony viscoelastic; /* material.viscoelastic (n = 0: not given) */
   double roughness;      /* m: RMS roughness of the web's two faces combined (entrained air,
                             the default of air.roughness); 0 = not given */
+  double hoop_strength;  /* Pa: machine-direction compressive strength (starring); 0 = not
+                            given */
 } rs_material;
 
 /* Entrained air (docs/roll-model.md, "Entrained air"). The film a web wrapping a roll of

@@ -88,6 +88,10 @@ typedef struct rs_problem {
    * when web_length > 0, until that much web is wound. */
   rs_air_spec air;
   double web_length;       /* m, the roll's size as a length (0: final_radius) */
+  double acceleration;     /* m/s^2 at the roll's surface in a speed change (cinching); 0 = not
+                              given (winding.accel_torque is the alternative) */
+  double core_friction;    /* static web-on-core friction, core.friction (cinching at the core);
+                              0 = not given */
 } rs_problem;
 
 RS_END_DECLS

@@ -38,6 +38,11 @@ const rs_problem *rs_scene_problem(const rs_scene *scene);
 /* Winds a loaded scene: rs_reel_wind of rs_scene_problem(scene). */
 rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts,
                         rs_reel_result **out);
+/* The defect rules (docs/defects.md) on a result of this scene, with the scene's limits:
+ * rs_defects_assess with rs_defect_limits_from_problem. The caller owns *out. */
+struct rs_defect_report;
+rs_status rs_scene_assess_defects(const rs_scene *scene, const rs_reel_result *res,
+                                  struct rs_defect_report **out);
 /* What the scene says of itself: the file as given, its title, the HDF5 output file ("" =
  * none), the resolved scene as YAML (every key with its value, defaults filled in). Owned
  * by the scene. */

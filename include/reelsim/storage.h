@@ -48,11 +48,11 @@ void rs_storage_stage_view(const rs_storage_result *res, const rs_reel_result *w
                            rs_reel_result *view);
 
 /* The stage (0 .. S-1) where each defect rule reads worst, -1 when it was assessed at no
- * stage: hoop compression and buckling by the least hoop stress / margin, pressure by the
+ * stage: hoop compression and starring by the least hoop stress / margin, pressure by the
  * greatest ratio to its limit (or pressure), slip by the least margin, the core by the
  * core pressure. */
 typedef struct rs_storage_worst {
-  int hoop, buckling, pressure, slip, core;
+  int hoop, starring, pressure, slip, core;
 } rs_storage_worst;
 void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *worst);
 

@@ -66,6 +66,10 @@ rs_reel_result_array = _fn("rs_reel_result_array", _c.POINTER(_c.c_double), _VP,
                            _c.POINTER(_c.c_int))
 rs_reel_result_scalar = _fn("rs_reel_result_scalar", _c.c_double, _VP, _CP)
 rs_reel_result_finite = _fn("rs_reel_result_finite", _c.c_int, _VP, _c.POINTER(_CP))
+rs_scene_assess_defects = _fn("rs_scene_assess_defects", _c.c_int, _VP, _VP, _c.POINTER(_VP))
+rs_defect_report_destroy = _fn("rs_defect_report_destroy", None, _c.POINTER(_VP))
+rs_defect_report_value = _fn("rs_defect_report_value", _c.c_double, _VP, _CP)
+rs_defect_report_text = _fn("rs_defect_report_text", _CP, _VP, _CP)
 
 # the values of enum rs_status (include/reelsim/status.h)
 RS_OK, RS_ERR_INPUT, RS_ERR_SOLVER = 0, 1, 2

@@ -48,4 +48,30 @@ def read(path):
                       at_speed_sigma_r=arr("final_at_speed/sigma_r"),
                       at_speed_sigma_theta=arr("final_at_speed/sigma_theta"),
                       at_speed_core_pressure=float(f["final_at_speed/core_pressure"][()])
-                      if "final_at_speed/core_pressure" in f else float("nan"))
+                      if "final_at_speed/core_pressure" in f else float("nan"),
+                      defects=_defects(f))
+
+
+# Result.defects keys -> /defects attributes (docs/output.md)
+_H5_NAMES = {"margin_min": "min_margin", "margin_radius": "min_margin_radius"}
+
+
+def _defects(f):
+    """The starring and slip verdicts of /defects as Result.defects ({} when the file
+    predates the starring rule)."""
+    if "defects/starring" not in f or "defects/interlayer_slip" not in f:
+        return {}
+    from ._run import _SLIP, _STARRING
+
+    def group(g, nums, texts):
+        a = f[g].attrs
+        out = {k: float(a[_H5_NAMES.get(k, k)]) if _H5_NAMES.get(k, k) in a else float("nan")
+               for k in nums}
+        out.update({k: _text(a[k]) if k in a else "" for k in texts})
+        return out
+
+    star = group("defects/starring", _STARRING, ("verdict", "criterion", "interlayers"))
+    slip = group("defects/interlayer_slip", _SLIP, ("verdict",))
+    if star["criterion"] in ("", "none") and star["verdict"] != "not assessed":
+        star["criterion"] = "none"
+    return {"starring": star, "slip": slip}

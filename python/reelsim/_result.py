@@ -29,6 +29,14 @@ class Result:
                           /final_at_speed/sigma_r; sigma_r is then the roll at rest)
     at_speed_sigma_theta  Pa, hoop stress with the roll spinning
     at_speed_core_pressure  Pa, core pressure with the roll spinning
+
+    defects           the starring and cinching verdicts (docs/defects.md):
+                      {"starring": {"verdict", "criterion", "layers", "margin_min",
+                      "margin_radius", "packet_margin", "strength_margin", "mode",
+                      "zone_from_core", "zone_to_core", "interlayers"},
+                      "slip": {"verdict", "layers", "margin_min", "margin_radius",
+                      "capstan_layers"}}; NaN / "" where not assessed; {} from a file
+                      written before the starring rule
     """
 
     radius: np.ndarray
@@ -46,6 +54,7 @@ class Result:
     at_speed_sigma_r: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_core_pressure: float = float("nan")
+    defects: dict = field(default_factory=dict)
 
     @property
     def layers(self):

@@ -71,6 +71,31 @@ def _copy(res, name):
     return np.ctypeslib.as_array(ptr, shape=(n.value,)).copy()
 
 
+_STARRING = ("layers", "margin_min", "margin_radius", "packet_margin", "strength_margin",
+             "mode", "zone_from_core", "zone_to_core")
+_SLIP = ("layers", "margin_min", "margin_radius", "capstan_layers")
+
+
+def _defects(sc, res):
+    rep = ctypes.c_void_p()
+    if _lib.rs_scene_assess_defects(sc, res, ctypes.byref(rep)) != _lib.RS_OK:
+        _raise(_lib.rs_error_status(), _last_message())
+    try:
+        def v(k):
+            return float(_lib.rs_defect_report_value(rep, k.encode()))
+
+        def t(k):
+            return _lib.rs_defect_report_text(rep, k.encode()).decode()
+
+        star = {k: v("starring." + k) for k in _STARRING}
+        star.update({k: t("starring." + k) for k in ("verdict", "criterion", "interlayers")})
+        slip = {k: v("slip." + k) for k in _SLIP}
+        slip["verdict"] = t("slip.verdict")
+        return {"starring": star, "slip": slip}
+    finally:
+        _lib.rs_defect_report_destroy(ctypes.byref(rep))
+
+
 def run(scene, sets=None, *, name=None):
     """Winds a scene and returns its Result.
 
@@ -127,7 +152,8 @@ def run(scene, sets=None, *, name=None):
                       at_speed_sigma_r=a["at_speed_sigma_r"],
                       at_speed_sigma_theta=a["at_speed_sigma_theta"],
                       at_speed_core_pressure=float(
-                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")))
+                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")),
+                      defects=_defects(sc, res))
     finally:
         _lib.rs_reel_result_destroy(ctypes.byref(res))
         _lib.rs_scene_destroy(ctypes.byref(sc))

@@ -88,7 +88,7 @@ static void print_table(const compare_state *c, double wall, int threads)
   }
   /* each run's defect verdicts (rules: docs/defects.md), the rules the run summary lists */
   printf("\n%-24s %-13s %-13s %-13s %-13s %s\n", "defect risk", "hoop stress",
-         "hoop buckling", "pressure", "slip", "core");
+         "starring", "pressure", "slip", "core");
   for (int i = 0; i < c->n; ++i) {
     const rs_defect_report *d = c->defects[i];
     if (!d) {
@@ -96,7 +96,7 @@ static void print_table(const compare_state *c, double wall, int threads)
       continue;
     }
     printf("%-24s %-13s %-13s %-13s %-13s %s\n", c->names[i],
-           rs_defect_verdict_name(d->hoop.verdict), rs_defect_verdict_name(d->buckling.verdict),
+           rs_defect_verdict_name(d->hoop.verdict), rs_defect_verdict_name(d->starring.verdict),
            rs_defect_verdict_name(d->pressure.verdict), rs_defect_verdict_name(d->slip.verdict),
            rs_defect_verdict_name(d->core.verdict));
   }

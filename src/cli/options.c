@@ -191,7 +191,7 @@ const cli_command cli_commands[] = {
      "Winds SCENE at every combination of the --vary values (or R Latin-hypercube samples\n"
      "of their ranges), in parallel, and writes one HDF5 file: /sweep/parameters (the\n"
      "keys), /sweep/values (one row per run) and /sweep/figures/ (core_pressure,\n"
-     "peak_pressure, min_sigma_theta, final_radius, layers, buckling_layers,\n"
+     "peak_pressure, min_sigma_theta, final_radius, layers, starring_layers, slip_margin,\n"
      "wall_seconds, status: 0 ok, 2 refused, 3 solver failed) (docs/output.md). Every\n"
      "run's scene is loaded and checked before any is wound. A run that fails is\n"
      "recorded (status, NaN figures) and the others go on. Under mpirun -n P the runs\n"
@@ -212,7 +212,7 @@ const cli_command cli_commands[] = {
      "as YAML, every run to HDF5",
      "Searches the scene values given by --vary for the one that minimizes or maximizes a\n"
      "figure of the wound reel (core_pressure, peak_pressure, min_sigma_theta,\n"
-     "final_radius, layers, buckling_layers, wall_seconds, status, misfit with\n"
+     "final_radius, layers, starring_layers, slip_margin, wall_seconds, status, misfit with\n"
      "--target-profile, or a varied key itself) subject to --subject-to constraints: a\n"
      "Latin hypercube of 4 K + 4 runs, then NLopt's COBYLA from the best feasible one (at\n"
      "most 30 K + 30 more runs; docs/optimize.md). A run that fails or is refused counts as\n"

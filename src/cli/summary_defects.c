@@ -51,37 +51,57 @@ static void print_hoop(FILE *out, const rs_defect_report *rep)
   fprintf(out, "; least %s at r = %.1f mm\n", a, rep->hoop.min_radius * 1e3);
 }
 
-static void print_buckling(FILE *out, const rs_defect_report *rep)
+/* The zone behind a packet verdict: "zone r = 76.2 .. 97.5 mm (0.0 .. 21.3 mm = 0.0 .. 0.8 in
+ * from the core), 288 layers slipping, mode m = 32" */
+static void print_zone(FILE *out, const rs_defect_report *rep)
 {
-  char a[64], b[64];
-  switch (rep->buckling.verdict) {
+  const double in = 0.0254;
+  fprintf(out, "zone r = %.1f .. %.1f mm (%.1f .. %.1f in from the core), %d layer%s %s, mode %d",
+          rep->starring.zone_inner * 1e3, rep->starring.zone_outer * 1e3,
+          rep->starring.zone_from_core / in, rep->starring.zone_to_core / in,
+          rep->starring.zone_last - rep->starring.zone_first + 1,
+          rep->starring.zone_last > rep->starring.zone_first ? "s" : "",
+          rep->starring.bonded ? "bonded" : "slipping", rep->starring.mode);
+}
+
+static void print_starring(FILE *out, const rs_defect_report *rep)
+{
+  char a[64];
+  switch (rep->starring.verdict) {
   case RS_DEFECT_NOT_ASSESSED:
     if (rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED)
-      fprintf(out, "  hoop buckling      not assessed (no E_theta or radial law)\n");
+      fprintf(out, "  starring           not assessed (no E_theta or radial law)\n");
     return;
   case RS_DEFECT_OK:
-    if (rep->buckling.compressed == 0) {
-      fprintf(out, "  hoop buckling      no hoop compression: ok\n");
+    if (rep->starring.compressed == 0) {
+      fprintf(out, "  starring           no hoop compression: ok\n");
       return;
     }
-    cli_fmt_stress(a, sizeof a, rep->buckling.margin_sigma);
-    cli_fmt_stress(b, sizeof b, rep->buckling.margin_critical);
-    fprintf(out,
-            "  hoop buckling      compression below the critical stress sqrt(E_theta E_r/3): "
-            "least margin %.*f x (%s against -%s at r = %.1f mm): ok\n",
-            rep->buckling.margin_min >= 10.0 ? 0 : 2, rep->buckling.margin_min, a, b,
-            rep->buckling.margin_radius * 1e3);
-    return;
+    break;
   default:
     break;
   }
-  cli_fmt_stress(a, sizeof a, rep->buckling.margin_sigma);
-  cli_fmt_stress(b, sizeof b, rep->buckling.margin_critical);
-  fprintf(out, "  WARNING: hoop buckling (starring) risk in %d layer%s", rep->buckling.layers,
-          rep->buckling.layers == 1 ? "" : "s");
-  print_ranges(out, rep->buckling.ranges, rep->buckling.n_ranges);
-  fprintf(out, ": sigma_theta %s against the critical -%s (sqrt(E_theta E_r/3)) at r = %.1f mm\n",
-          a, b, rep->buckling.margin_radius * 1e3);
+  int risk = rep->starring.verdict == RS_DEFECT_RISK;
+  if (risk) {
+    fprintf(out, "  WARNING: starring risk in %d layer%s", rep->starring.layers,
+            rep->starring.layers == 1 ? "" : "s");
+    print_ranges(out, rep->starring.ranges, rep->starring.n_ranges);
+    fprintf(out, ": ");
+  } else {
+    fprintf(out, "  starring           ");
+  }
+  double m = rep->starring.margin_min;
+  if (rep->starring.criterion == RS_STARRING_STRENGTH) {
+    cli_fmt_stress(a, sizeof a, rep->starring.min_sigma);
+    fprintf(out, "hoop_strength margin %.*f (least sigma_theta %s at r = %.1f mm)", m >= 10.0 ? 0 : 2,
+            m, a, rep->starring.strength_radius * 1e3);
+  } else {
+    fprintf(out, "packet margin N_cr/N = %.*f (N %.4g kN/m against %.4g kN/m; ", m >= 10.0 ? 0 : 2,
+            m, rep->starring.force / 1e3, rep->starring.force_critical / 1e3);
+    print_zone(out, rep);
+    fprintf(out, ")");
+  }
+  fprintf(out, "%s\n", risk ? "" : ": ok");
 }
 
 static void print_pressure(FILE *out, const rs_defect_report *rep)
@@ -116,28 +136,51 @@ static void print_pressure(FILE *out, const rs_defect_report *rep)
   }
 }
 
+/* "(center drive, T R 175 N m/m, inertia torque 2000 N m/m)" */
+static void print_slip_load(FILE *out, const rs_defect_report *rep)
+{
+  double sh = rep->slip.core_share;
+  if (sh == 1.0) fprintf(out, "center drive");
+  else if (sh == 0.0) fprintf(out, "surface drive");
+  else fprintf(out, "%.2f of the drive at the core", sh);
+  fprintf(out, ", T R %.4g N m/m, inertia torque %.4g N m/m; from %d wrap%s below the surface",
+          rep->slip.tension_torque, rep->slip.torque, rep->slip.capstan_layers,
+          rep->slip.capstan_layers == 1 ? "" : "s");
+}
+
 static void print_slip(FILE *out, const rs_defect_report *rep)
 {
   switch (rep->slip.verdict) {
   case RS_DEFECT_NOT_ASSESSED:
     fprintf(out, "  interlayer slip    not assessed (%s)\n",
-            rep->slip.torque > 0.0 ? "no interface between layers" : "no winding.accel_torque");
+            rep->slip.mu > 0.0 ? "no interface between layers" : "no material.friction_layer");
     return;
   case RS_DEFECT_OK:
-    fprintf(out,
-            "  interlayer slip    friction torque capacity >= %.2f x winding.accel_torque %g N m/m "
-            "(least at r = %.1f mm): ok\n",
-            rep->slip.margin_min, rep->slip.torque, rep->slip.margin_radius * 1e3);
+    if (!isfinite(rep->slip.margin_min)) {
+      fprintf(out, "  interlayer slip    no torque through the roll (");
+      print_slip_load(out, rep);
+      fprintf(out, "): ok\n");
+      return;
+    }
+    fprintf(out, "  interlayer slip    friction torque capacity >= %.2f x the torque carried (%.4g "
+                 "N m/m at r = %.1f mm; ",
+            rep->slip.margin_min, rep->slip.margin_torque, rep->slip.margin_radius * 1e3);
+    print_slip_load(out, rep);
+    fprintf(out, "): ok\n");
     return;
   case RS_DEFECT_RISK:
   case RS_DEFECT_PRESENT: /* not a verdict of these rules */
     fprintf(out, "  WARNING: interlayer slip (cinching) risk at %d interface%s", rep->slip.layers,
             rep->slip.layers == 1 ? "" : "s");
     print_ranges(out, rep->slip.ranges, rep->slip.n_ranges);
-    fprintf(out,
-            ": friction torque capacity down to %.2f x winding.accel_torque %g N m/m at r = %.1f "
-            "mm\n",
-            rep->slip.margin_min, rep->slip.torque, rep->slip.margin_radius * 1e3);
+    if (rep->slip.core_margin < 1.0)
+      fprintf(out, "%s on the core (margin %.2f)", rep->slip.layers ? " and" : "",
+              rep->slip.core_margin);
+    fprintf(out, ": friction torque capacity down to %.2f x the torque carried (%.4g N m/m at r = "
+                 "%.1f mm; ",
+            rep->slip.margin_min, rep->slip.margin_torque, rep->slip.margin_radius * 1e3);
+    print_slip_load(out, rep);
+    fprintf(out, ")\n");
     return;
   }
 }
@@ -166,7 +209,7 @@ void cli_print_defects(FILE *out, const rs_defect_report *rep)
 {
   fprintf(out, "defect risk (rules: docs/defects.md):\n");
   print_hoop(out, rep);
-  print_buckling(out, rep);
+  print_starring(out, rep);
   print_pressure(out, rep);
   print_slip(out, rep);
   print_core(out, rep);

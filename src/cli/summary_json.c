@@ -17,17 +17,26 @@ static void defects(cli_json *j, const char *key, const rs_defect_report *d)
   cli_json_number(j, "min_radius", d->hoop.min_radius);
   cli_json_end(j);
 
-  cli_json_object(j, "buckling");
-  cli_json_string(j, "verdict", rs_defect_verdict_name(d->buckling.verdict));
-  cli_json_int(j, "layers", d->buckling.layers);
-  int weighed = d->buckling.verdict != RS_DEFECT_NOT_ASSESSED && d->buckling.compressed > 0;
-  if (weighed) {
-    cli_json_number(j, "margin_min", d->buckling.margin_min);
-    cli_json_number(j, "margin_radius", d->buckling.margin_radius);
-  } else {
-    cli_json_null(j, "margin_min");
-    cli_json_null(j, "margin_radius");
-  }
+  cli_json_object(j, "starring");
+  cli_json_string(j, "verdict", rs_defect_verdict_name(d->starring.verdict));
+  cli_json_string(j, "criterion", rs_starring_criterion_name(d->starring.criterion));
+  cli_json_int(j, "layers", d->starring.layers);
+  int weighed = d->starring.verdict != RS_DEFECT_NOT_ASSESSED && d->starring.compressed > 0;
+  cli_json_number(j, "margin_min", weighed ? d->starring.margin_min : NAN);
+  cli_json_number(j, "margin_radius", weighed ? d->starring.margin_radius : NAN);
+  cli_json_number(j, "strength_margin", weighed ? d->starring.strength_margin : NAN);
+  cli_json_number(j, "packet_margin", weighed ? d->starring.packet_margin : NAN);
+  cli_json_number(j, "zone_inner_radius", weighed ? d->starring.zone_inner : NAN);
+  cli_json_number(j, "zone_outer_radius", weighed ? d->starring.zone_outer : NAN);
+  cli_json_number(j, "zone_from_core", weighed ? d->starring.zone_from_core : NAN);
+  cli_json_number(j, "zone_to_core", weighed ? d->starring.zone_to_core : NAN);
+  cli_json_number(j, "hoop_force", weighed ? d->starring.force : NAN);
+  cli_json_number(j, "critical_force", weighed ? d->starring.force_critical : NAN);
+  cli_json_number(j, "mode", weighed ? d->starring.mode : NAN);
+  if (weighed)
+    cli_json_string(j, "interlayers", d->starring.bonded ? "bonded" : "slipping");
+  else
+    cli_json_null(j, "interlayers");
   cli_json_end(j);
 
   int assessed = d->pressure.verdict != RS_DEFECT_NOT_ASSESSED;
@@ -45,6 +54,12 @@ static void defects(cli_json *j, const char *key, const rs_defect_report *d)
   cli_json_int(j, "layers", d->slip.layers);
   cli_json_number(j, "margin_min", assessed ? d->slip.margin_min : NAN);
   cli_json_number(j, "margin_radius", assessed ? d->slip.margin_radius : NAN);
+  cli_json_number(j, "margin_torque", assessed ? d->slip.margin_torque : NAN);
+  cli_json_number(j, "tension_torque", assessed ? d->slip.tension_torque : NAN);
+  cli_json_number(j, "inertia_torque", assessed ? d->slip.torque : NAN);
+  cli_json_number(j, "core_share", assessed ? d->slip.core_share : NAN);
+  cli_json_number(j, "core_margin", assessed ? d->slip.core_margin : NAN);
+  cli_json_number(j, "capstan_layers", assessed ? d->slip.capstan_layers : NAN);
   cli_json_end(j);
 
   assessed = d->core.verdict != RS_DEFECT_NOT_ASSESSED;
@@ -126,7 +141,7 @@ void cli_json_storage(cli_json *j, const rs_storage_result *sr)
   rs_storage_worst_stages(sr, &w);
   cli_json_object(j, "worst_stage");
   cli_json_int(j, "hoop", w.hoop);
-  cli_json_int(j, "buckling", w.buckling);
+  cli_json_int(j, "starring", w.starring);
   cli_json_int(j, "pressure", w.pressure);
   cli_json_int(j, "slip", w.slip);
   cli_json_int(j, "core", w.core);

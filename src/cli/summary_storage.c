@@ -63,9 +63,9 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
     snprintf(a, sizeof a, "least %s", x);
   }
   worst_line(out, "hoop stress", sr, w.hoop, RS_DEFECT_OK, a);
-  if (w.buckling >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.buckling]->buckling.margin_min);
-  worst_line(out, "hoop buckling", sr, w.buckling,
-             w.buckling >= 0 ? d[w.buckling]->buckling.verdict : RS_DEFECT_NOT_ASSESSED, a);
+  if (w.starring >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.starring]->starring.margin_min);
+  worst_line(out, "starring", sr, w.starring,
+             w.starring >= 0 ? d[w.starring]->starring.verdict : RS_DEFECT_NOT_ASSESSED, a);
   if (w.pressure >= 0) {
     cli_fmt_stress(x, sizeof x, d[w.pressure]->pressure.max);
     if (d[w.pressure]->pressure.verdict == RS_DEFECT_NOT_ASSESSED)

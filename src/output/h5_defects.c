@@ -2,6 +2,7 @@
  * (units in docs/output.md) and the flagged layer ranges as datasets. */
 #include "output/h5_defects.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "output/h5_util.h"
@@ -59,7 +60,7 @@ static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
   hid_t g;
   rs_status st = rule_group(parent, "hoop_compression", rep->hoop.verdict,
                             "information, not a risk: present where sigma_theta < 0 (the "
-                            "buckling rule is /defects/hoop_buckling)",
+                            "starring rule is /defects/starring)",
                             &g);
   if (st != RS_OK) return st;
   if (rep->hoop.verdict != RS_DEFECT_NOT_ASSESSED) {
@@ -72,25 +73,53 @@ static rs_status write_hoop(hid_t parent, const rs_defect_report *rep)
   return st;
 }
 
-static rs_status write_buckling(hid_t parent, const rs_defect_report *rep)
+/* The zone the starring rule found least safe, as attributes (docs/output.md). */
+static rs_status write_zone(hid_t g, const rs_defect_report *rep)
+{
+  const struct { const char *name; double v; } f[] = {
+      {"packet_margin", rep->starring.packet_margin},
+      {"zone_inner_radius", rep->starring.zone_inner},
+      {"zone_outer_radius", rep->starring.zone_outer},
+      {"zone_from_core", rep->starring.zone_from_core},
+      {"zone_to_core", rep->starring.zone_to_core},
+      {"hoop_force", rep->starring.force},
+      {"critical_force", rep->starring.force_critical},
+      {"foundation", rep->starring.foundation},
+      {"bending_stiffness", rep->starring.stiffness},
+  };
+  rs_status st = RS_OK;
+  for (size_t i = 0; st == RS_OK && i < sizeof f / sizeof f[0]; ++i)
+    st = rs_h5_attr_double(g, f[i].name, f[i].v);
+  if (st == RS_OK) st = rs_h5_attr_int64(g, "mode", rep->starring.mode);
+  if (st == RS_OK) st = rs_h5_attr_int64(g, "zone_layers",
+                                         rep->starring.zone_last - rep->starring.zone_first + 1);
+  if (st == RS_OK)
+    st = rs_h5_attr_string(g, "interlayers", rep->starring.bonded ? "bonded" : "slipping");
+  return st;
+}
+
+static rs_status write_starring(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
-  rs_status st = rule_group(parent, "hoop_buckling", rep->buckling.verdict,
-                            "risk where -sigma_theta > sqrt(E_theta E_r / 3), E_r the radial "
-                            "modulus at the softer face of the layer",
+  rs_status st = rule_group(parent, "starring", rep->starring.verdict,
+                            "risk where -sigma_theta > material.hoop_strength or where a "
+                            "compressive zone's hoop force exceeds its ring-packet critical force "
+                            "min_m D (m^2-1)/R^2 + k R^2/(m^2-1) (docs/defects.md)",
                             &g);
   if (st != RS_OK) return st;
-  if (rep->buckling.verdict != RS_DEFECT_NOT_ASSESSED) {
-    st = rs_h5_attr_int64(g, "layers", rep->buckling.layers);
-    if (st == RS_OK) st = rs_h5_attr_int64(g, "compressed_layers", rep->buckling.compressed);
-    if (st == RS_OK && rep->buckling.compressed > 0) {
-      st = rs_h5_attr_double(g, "min_margin", rep->buckling.margin_min);
-      if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin_radius", rep->buckling.margin_radius);
-      if (st == RS_OK)
-        st = rs_h5_attr_double(g, "critical_stress", rep->buckling.margin_critical);
-      if (st == RS_OK) st = rs_h5_attr_double(g, "sigma_theta", rep->buckling.margin_sigma);
+  if (rep->starring.verdict != RS_DEFECT_NOT_ASSESSED) {
+    st = rs_h5_attr_string(g, "criterion", rs_starring_criterion_name(rep->starring.criterion));
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->starring.layers);
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "compressed_layers", rep->starring.compressed);
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "zones", rep->starring.zones);
+    if (st == RS_OK && rep->starring.compressed > 0) {
+      st = rs_h5_attr_double(g, "min_margin", rep->starring.margin_min);
+      if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin_radius", rep->starring.margin_radius);
+      if (st == RS_OK) st = write_zone(g, rep);
+      if (st == RS_OK && isfinite(rep->starring.strength_margin))
+        st = rs_h5_attr_double(g, "strength_margin", rep->starring.strength_margin);
     }
-    if (st == RS_OK) st = write_ranges(g, rep->buckling.ranges, rep->buckling.n_ranges);
+    if (st == RS_OK) st = write_ranges(g, rep->starring.ranges, rep->starring.n_ranges);
   }
   H5Gclose(g);
   return st;
@@ -118,10 +147,18 @@ static rs_status write_slip(hid_t parent, const rs_defect_report *rep)
 {
   hid_t g;
   rs_status st = rule_group(parent, "interlayer_slip", rep->slip.verdict,
-                            "risk where mu P 2 pi r^2 < winding.accel_torque", &g);
+                            "risk where mu P 2 pi r^2 < the torque the interface carries, "
+                            "s T R + |s - f_in| I alpha (docs/defects.md)", &g);
   if (st != RS_OK) return st;
   if (rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) {
     st = rs_h5_attr_double(g, "accel_torque", rep->slip.torque);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "tension_torque", rep->slip.tension_torque);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "core_share", rep->slip.core_share);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "alpha", rep->slip.alpha);
+    if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin_torque", rep->slip.margin_torque);
+    if (st == RS_OK) st = rs_h5_attr_int64(g, "capstan_layers", rep->slip.capstan_layers);
+    if (st == RS_OK && isfinite(rep->slip.core_margin))
+      st = rs_h5_attr_double(g, "core_margin", rep->slip.core_margin);
     if (st == RS_OK) st = rs_h5_attr_double(g, "friction_layer", rep->slip.mu);
     if (st == RS_OK) st = rs_h5_attr_int64(g, "layers", rep->slip.layers);
     if (st == RS_OK) st = rs_h5_attr_double(g, "min_margin", rep->slip.margin_min);
@@ -159,7 +196,7 @@ rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_r
   if (st == RS_OK) {
     st = rs_h5_attr_string(g, "rules", "docs/defects.md");
     if (st == RS_OK) st = write_hoop(g, rep);
-    if (st == RS_OK) st = write_buckling(g, rep);
+    if (st == RS_OK) st = write_starring(g, rep);
     if (st == RS_OK) st = write_pressure(g, rep);
     if (st == RS_OK) st = write_slip(g, rep);
     if (st == RS_OK) st = write_core(g, rep);

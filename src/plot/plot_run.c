@@ -180,13 +180,16 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
   history h;
-  int hoop = 0;
+  int hoop = 0, star = 0;
   if (st == RS_OK) st = history_read(c, d, "sigma_theta", &h);
   if (st != RS_OK) return st;
   plot_title(c, d->title, "hoop stress in the wound reel (compression negative)");
   axes_radius(c);
   rs_gp_printf(&c->gp, "set ylabel 'hoop stress σθ (MPa)'\nset xzeroaxis linetype -1\n");
   st = defect_bands(c, d, "hoop_compression", "#d62728", &hoop);
+  /* the layers at starring risk over it (older files: the single-layer rule's group) */
+  if (st == RS_OK) st = defect_bands(c, d, "starring", "#7f0000", &star);
+  if (st == RS_OK && !star) st = defect_bands(c, d, "hoop_buckling", "#7f0000", &star);
   if (st == RS_OK) st = history_curves(c, d, &h, 1e-6);
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
@@ -195,6 +198,7 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
     st = plot_curve(c, d->r_mm, d->spin_hoop_mpa, d->n, spin_style,
                     "spinning at the last layer's speed (/final at rest)", NULL);
   if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
+  if (st == RS_OK && star) plot_band_key(c, "#7f0000", "starring risk (docs/defects.md §2)");
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);

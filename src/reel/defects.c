@@ -1,7 +1,7 @@
 /* Defect-risk indicators (docs/defects.md): each rule compares the final stress profile
  * with a threshold and says where the roll is prone to a defect. They are screening
  * rules from winding practice, not models of the defects. */
-#include "reelsim/defects.h"
+#include "reel/defects_internal.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,6 +20,30 @@ const char *rs_defect_verdict_name(rs_defect_verdict v)
   return "?";
 }
 
+const char *rs_starring_criterion_name(rs_starring_criterion c)
+{
+  switch (c) {
+  case RS_STARRING_NONE: return "none";
+  case RS_STARRING_STRENGTH: return "hoop_strength";
+  case RS_STARRING_PACKET: return "packet_buckling";
+  }
+  return "?";
+}
+
+/* The drive's share at the core: center winding (and unwinding on a core brake) puts the
+ * whole torque there, surface winding none (the drum drives the surface), center-surface
+ * its torque_share. */
+double rs_defect_core_share(const rs_problem *pb)
+{
+  if (pb->nip.model == RS_NIP_NONE) return 1.0;
+  switch (pb->nip.winder) {
+  case RS_WINDER_CENTER: return 1.0;
+  case RS_WINDER_SURFACE: return 0.0;
+  case RS_WINDER_CENTER_SURFACE: return pb->nip.torque_share;
+  }
+  return 0.0; /* a winder driven at the surface */
+}
+
 void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
 {
   lim->pressure_limit = pb->material.pressure_limit;
@@ -28,59 +52,23 @@ void rs_defect_limits_from_problem(const rs_problem *pb, rs_defect_limits *lim)
   lim->friction_layer = pb->material.friction_layer;
   lim->E_theta = pb->material.E_theta;
   lim->radial = &pb->material.radial;
-}
-
-double rs_defect_critical_hoop_stress(double E_theta, double E_r)
-{
-  return E_theta > 0.0 && E_r > 0.0 ? sqrt(E_theta * E_r / 3.0) : 0.0;
-}
-
-/* Coulomb friction on the cylindrical interface of radius r (per unit width): shear
- * stress at most mu P over the area 2 pi r, acting at lever arm r (Roisum 1994; the
- * "torque transmission capacity" of cinching, Walker 2007). A gap (P <= 0) carries none. */
-double rs_defect_slip_capacity(double mu, double P, double r)
-{
-  return P > 0.0 ? mu * P * 2.0 * pi * r * r : 0.0;
+  lim->caliper = pb->material.caliper;
+  lim->hoop_strength = pb->material.hoop_strength;
+  lim->core_stiffness = rs_core_stiffness(&pb->core);
+  lim->acceleration = pb->acceleration;
+  lim->density = pb->material.density;
+  lim->core_share = rs_defect_core_share(pb);
+  lim->core_friction = pb->core_friction;
 }
 
 void rs_defect_report_destroy(rs_defect_report **rep)
 {
   if (!rep || !*rep) return;
   free((*rep)->hoop.ranges);
-  free((*rep)->buckling.ranges);
+  free((*rep)->starring.ranges);
   free((*rep)->slip.ranges);
   free(*rep);
   *rep = NULL;
-}
-
-/* Collects the runs of consecutive flagged layers 0..n-1 into *ranges (malloc'd, NULL
- * when none). Returns the number of flagged layers, or -1 when out of memory. */
-static int flag_ranges(const unsigned char *flag, int n, const double *radius,
-                       rs_defect_range **ranges, int *n_ranges)
-{
-  int runs = 0, count = 0;
-  *ranges = NULL;
-  *n_ranges = 0;
-  for (int j = 0; j < n; ++j) {
-    count += flag[j];
-    runs += flag[j] && (j == 0 || !flag[j - 1]);
-  }
-  if (runs == 0) return 0;
-  rs_defect_range *r = malloc((size_t)runs * sizeof *r);
-  if (!r) return -1;
-  int k = -1;
-  for (int j = 0; j < n; ++j) {
-    if (!flag[j]) continue;
-    if (j == 0 || !flag[j - 1]) r[++k].first = j;
-    r[k].last = j;
-  }
-  for (int i = 0; i < runs; ++i) {
-    r[i].r_first = radius[r[i].first];
-    r[i].r_last = radius[r[i].last];
-  }
-  *ranges = r;
-  *n_ranges = runs;
-  return count;
 }
 
 /* Hoop compression, sigma_theta < 0: reported as information. It is the necessary
@@ -100,60 +88,9 @@ static rs_status assess_hoop(const rs_reel_result *res, unsigned char *flag, rs_
       rep->hoop.min_radius = res->radius[j];
     }
   }
-  rep->hoop.layers = flag_ranges(flag, n, res->radius, &rep->hoop.ranges, &rep->hoop.n_ranges);
+  rep->hoop.layers = rs_defect_flag_ranges(flag, n, res->radius, &rep->hoop.ranges, &rep->hoop.n_ranges);
   if (rep->hoop.layers < 0) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the hoop ranges");
   rep->hoop.verdict = rep->hoop.layers > 0 ? RS_DEFECT_PRESENT : RS_DEFECT_OK;
-  return RS_OK;
-}
-
-/* Interlayer pressure (Pa, compression positive, a gap as 0) on the inner face of layer j
- * (the core contact for the first) and on its outer face. */
-static double pressure_below(const rs_reel_result *res, int j)
-{
-  double P = j == 0 ? res->core_pressure : 0.0 - res->sigma_r[j - 1];
-  return P > 0.0 ? P : 0.0;
-}
-
-static double pressure_above(const rs_reel_result *res, int j)
-{
-  double P = 0.0 - res->sigma_r[j];
-  return P > 0.0 ? P : 0.0;
-}
-
-/* Hoop buckling (starring): layer j buckles on the stack's elastic foundation where its
- * compression exceeds sigma_cr = sqrt(E_theta E_r / 3) (rs_defect_critical_hoop_stress),
- * E_r the stack's tangent radial modulus at the softer of its two faces (the lesser
- * E_r(P) of the interfaces below and above it). Risk where -sigma_theta > sigma_cr. */
-static rs_status assess_buckling(const rs_reel_result *res, const rs_defect_limits *lim,
-                                 unsigned char *flag, rs_defect_report *rep)
-{
-  int n = res->n_layers;
-  rep->buckling.verdict = RS_DEFECT_NOT_ASSESSED;
-  if (n == 0 || !lim->radial || !(lim->E_theta > 0.0)) return RS_OK;
-  rep->buckling.margin_min = INFINITY;
-  for (int j = 0; j < n; ++j) {
-    flag[j] = 0;
-    double c = 0.0 - res->sigma_theta[j];
-    if (!(c > 0.0)) continue;
-    double E_lo = rs_radial_modulus(lim->radial, pressure_below(res, j));
-    double E_hi = rs_radial_modulus(lim->radial, pressure_above(res, j));
-    double crit = rs_defect_critical_hoop_stress(lim->E_theta, E_lo < E_hi ? E_lo : E_hi);
-    double margin = crit / c;
-    rep->buckling.compressed++;
-    flag[j] = c > crit;
-    if (margin < rep->buckling.margin_min) {
-      rep->buckling.margin_min = margin;
-      rep->buckling.margin_radius = res->radius[j];
-      rep->buckling.margin_critical = crit;
-      rep->buckling.margin_sigma = res->sigma_theta[j];
-    }
-  }
-  if (rep->buckling.compressed == 0) rep->buckling.margin_min = 0.0;
-  rep->buckling.layers =
-      flag_ranges(flag, n, res->radius, &rep->buckling.ranges, &rep->buckling.n_ranges);
-  if (rep->buckling.layers < 0)
-    return RS_ERROR(RS_ERR_MEMORY, "out of memory for the buckling ranges");
-  rep->buckling.verdict = rep->buckling.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
   return RS_OK;
 }
 
@@ -179,30 +116,60 @@ static void assess_pressure(const rs_reel_result *res, double limit, rs_defect_r
 }
 
 /* Interlayer slip (cinching): the interface at the outer radius r_j of layer j (between
- * layers j and j+1; the outer surface has none) transmits at most
- * M_f = mu P_j 2 pi r_j^2 (N m/m). Risk where M_f < M, M the applied torque: taking the
- * whole torque at every interface is conservative, since an interface only passes on
- * the torque that accelerates the layers outside it. */
-static rs_status assess_slip(const rs_reel_result *res, double torque, double mu,
+ * layers j and j+1; the outer surface has none) transmits at most M_f = mu P_j 2 pi r_j^2
+ * (N m/m) and carries rs_defect_interface_torque; risk where M_f < the torque. The web
+ * on the core likewise with core.friction and the core pressure. */
+static rs_status assess_slip(const rs_reel_result *res, const rs_defect_limits *lim,
                              unsigned char *flag, rs_defect_report *rep)
 {
   int n = res->n_layers, m = n - 1; /* interfaces */
+  const double mu = lim->friction_layer;
   rep->slip.verdict = RS_DEFECT_NOT_ASSESSED;
-  rep->slip.torque = torque;
   rep->slip.mu = mu;
-  if (!(torque > 0.0 && mu > 0.0) || m < 1) return RS_OK;
+  rep->slip.core_margin = NAN;
+  rep->slip.margin_min = NAN;
+  if (!(mu > 0.0) || m < 1) return RS_OK;
+  rs_slip_load L;
+  rs_defect_slip_load(res, lim, &L);
+  const double R = L.R, rc = res->core_radius, s = L.s, TR = L.TR, M_acc = L.M_acc;
+  rep->slip.alpha = L.alpha;
+  rep->slip.torque = M_acc;
+  rep->slip.tension_torque = TR;
+  rep->slip.core_share = s;
   rep->slip.margin_min = INFINITY;
-  for (int j = 0; j < m; ++j) {
-    double margin = rs_defect_slip_capacity(mu, 0.0 - res->sigma_r[j], res->radius[j]) / torque;
+  /* The outermost wraps take the torque entering at the surface, M(R) over the outermost
+   * interface, by capstan friction (Euler-Eytelwein: tension T0 + M/R held against T0 over
+   * k wraps while 1 + M / (T0 R) <= e^(2 pi mu k)), not by a uniform shear on the pressure
+   * of the layers above them: the check starts k_c wraps below the surface. */
+  const double T0 = res->wound_on_tension ? res->wound_on_tension[n - 1] : TR / R;
+  const double M_out = rs_defect_interface_torque(s, TR, M_acc, res->radius[m - 1], rc, R);
+  int kc = 1;
+  if (T0 > 0.0 && M_out > 0.0) {
+    double k = ceil(log1p(M_out / (T0 * R)) / (2.0 * pi * mu));
+    kc = k < 1.0 ? 1 : k > m ? m : (int)k;
+  }
+  rep->slip.capstan_layers = kc;
+  for (int j = 0; j < m; ++j) flag[j] = 0;
+  for (int j = 0; j < m - kc; ++j) {
+    double M = rs_defect_interface_torque(s, TR, M_acc, res->radius[j], rc, R);
+    double cap = rs_defect_slip_capacity(mu, 0.0 - res->sigma_r[j], res->radius[j]);
+    double margin = M > 0.0 ? cap / M : INFINITY;
     flag[j] = margin < 1.0;
     if (margin < rep->slip.margin_min) {
       rep->slip.margin_min = margin;
       rep->slip.margin_radius = res->radius[j];
+      rep->slip.margin_torque = M;
     }
   }
-  rep->slip.layers = flag_ranges(flag, m, res->radius, &rep->slip.ranges, &rep->slip.n_ranges);
+  if (lim->core_friction > 0.0) {
+    double M = rs_defect_interface_torque(s, TR, M_acc, rc, rc, R);
+    double cap = rs_defect_slip_capacity(lim->core_friction, res->core_pressure, rc);
+    rep->slip.core_margin = M > 0.0 ? cap / M : INFINITY;
+  }
+  rep->slip.layers = rs_defect_flag_ranges(flag, m, res->radius, &rep->slip.ranges, &rep->slip.n_ranges);
   if (rep->slip.layers < 0) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the slip ranges");
-  rep->slip.verdict = rep->slip.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
+  rep->slip.verdict = rep->slip.layers > 0 || rep->slip.core_margin < 1.0 ? RS_DEFECT_RISK
+                                                                           : RS_DEFECT_OK;
   return RS_OK;
 }
 
@@ -231,13 +198,50 @@ rs_status rs_defects_assess(const rs_reel_result *res, const rs_defect_limits *l
     st = RS_ERROR(RS_ERR_MEMORY, "out of memory assessing %d layers", res->n_layers);
   } else {
     st = assess_hoop(res, flag, rep);
-    if (st == RS_OK) st = assess_buckling(res, lim, flag, rep);
+    if (st == RS_OK) st = rs_defects_starring(res, lim, flag, rep);
     assess_pressure(res, lim->pressure_limit, rep);
-    if (st == RS_OK) st = assess_slip(res, lim->accel_torque, lim->friction_layer, flag, rep);
+    if (st == RS_OK) st = assess_slip(res, lim, flag, rep);
     assess_core(res, lim->core_rating, rep);
   }
   free(flag);
   if (st != RS_OK) rs_defect_report_destroy(&rep);
   *out = rep;
   return st;
+}
+
+double rs_defect_report_value(const rs_defect_report *rep, const char *name)
+{
+  if (!rep || !name) return NAN;
+  const int st = rep->starring.verdict != RS_DEFECT_NOT_ASSESSED && rep->starring.compressed > 0;
+  const int sl = rep->slip.verdict != RS_DEFECT_NOT_ASSESSED;
+  const struct { const char *name; int ok; double v; } f[] = {
+      {"starring.layers", rep->starring.verdict != RS_DEFECT_NOT_ASSESSED, rep->starring.layers},
+      {"starring.margin_min", st, rep->starring.margin_min},
+      {"starring.margin_radius", st, rep->starring.margin_radius},
+      {"starring.packet_margin", st, rep->starring.packet_margin},
+      {"starring.strength_margin", st, rep->starring.strength_margin},
+      {"starring.mode", st, rep->starring.mode},
+      {"starring.zone_from_core", st, rep->starring.zone_from_core},
+      {"starring.zone_to_core", st, rep->starring.zone_to_core},
+      {"slip.layers", sl, rep->slip.layers},
+      {"slip.margin_min", sl, rep->slip.margin_min},
+      {"slip.margin_radius", sl, rep->slip.margin_radius},
+      {"slip.capstan_layers", sl, rep->slip.capstan_layers},
+  };
+  for (size_t i = 0; i < sizeof f / sizeof f[0]; ++i)
+    if (strcmp(f[i].name, name) == 0) return f[i].ok ? f[i].v : NAN;
+  return NAN;
+}
+
+const char *rs_defect_report_text(const rs_defect_report *rep, const char *name)
+{
+  if (!rep || !name) return "";
+  const int st = rep->starring.verdict != RS_DEFECT_NOT_ASSESSED && rep->starring.compressed > 0;
+  if (strcmp(name, "starring.verdict") == 0) return rs_defect_verdict_name(rep->starring.verdict);
+  if (strcmp(name, "starring.criterion") == 0)
+    return rs_starring_criterion_name(rep->starring.criterion);
+  if (strcmp(name, "starring.interlayers") == 0)
+    return st ? (rep->starring.bonded ? "bonded" : "slipping") : "";
+  if (strcmp(name, "slip.verdict") == 0) return rs_defect_verdict_name(rep->slip.verdict);
+  return "";
 }

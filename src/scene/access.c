@@ -1,5 +1,6 @@
 /* What applications ask of a loaded scene: the problem it winds, winding it, its name and
  * what it says of itself. */
+#include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "scene/scene_type.h"
@@ -17,6 +18,16 @@ rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts, rs_r
     return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_wind: no scene");
   }
   return rs_reel_wind(&scene->problem, opts, out);
+}
+
+rs_status rs_scene_assess_defects(const rs_scene *scene, const rs_reel_result *res,
+                                  rs_defect_report **out)
+{
+  *out = NULL;
+  if (!scene) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_assess_defects: no scene");
+  rs_defect_limits lim;
+  rs_defect_limits_from_problem(&scene->problem, &lim);
+  return rs_defects_assess(res, &lim, out);
 }
 
 const char *rs_scene_path(const rs_scene *scene) { return scene ? scene->path : ""; }

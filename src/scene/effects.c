@@ -111,6 +111,16 @@ static void print_defect_checks(FILE *out, const rs_scene *s)
     fprintf(out,
             "  - interlayer slip check: winding.accel_torque %s N m/m, web-on-web friction %s\n",
             f(a, s->problem.accel_torque), f(b, s->problem.material.friction_layer));
+  else if (s->problem.acceleration > 0.0)
+    fprintf(out,
+            "  - interlayer slip check: winding.acceleration %s m/s^2, web-on-web friction %s\n",
+            f(a, s->problem.acceleration), f(b, s->problem.material.friction_layer));
+  else if (s->problem.material.friction_layer > 0.0)
+    fprintf(out, "  - interlayer slip check: the tension's torque, web-on-web friction %s\n",
+            f(a, s->problem.material.friction_layer));
+  if (s->problem.material.hoop_strength > 0.0)
+    fprintf(out, "  - starring check: material.hoop_strength %s Pa\n",
+            f(a, s->problem.material.hoop_strength));
   if (s->problem.core.rating > 0.0)
     fprintf(out, "  - core check: core.rating %s Pa\n", f(a, s->problem.core.rating));
 }

@@ -64,6 +64,37 @@ static rs_status resolve_core(const yn *root, rs_core *c)
   return RS_OK;
 }
 
+/* The cinching check's keys: core.friction (web on core), winding.acceleration (m/s^2 at
+ * the surface, the speed change): the roll's inertia needs material.density, the check
+ * material.friction_layer; one of it and winding.accel_torque. */
+static rs_status resolve_acceleration(const yn *root, rs_scene *s)
+{
+  const char *key = "winding.acceleration";
+  s->problem.acceleration = 0.0;
+  s->problem.core_friction = 0.0;
+  if (ys_has(root, "core.friction")) {
+    const double mu = ys_num(root, "core.friction");
+    if (!(mu > 0.0))
+      return ys_fail(root, "core.friction", "must be > 0 (got %g; omit the key to skip the check)",
+                     mu);
+    s->problem.core_friction = mu;
+  }
+  if (!ys_has(root, key)) return RS_OK;
+  const double a = ys_num(root, key);
+  if (!(a > 0.0))
+    return ys_fail(root, key, "must be > 0 m/s^2 (got %g; omit the key to skip the check)", a);
+  if (ys_has(root, "winding.accel_torque"))
+    return ys_fail(root, key, "give either winding.acceleration or winding.accel_torque, not both");
+  if (!(s->problem.material.density > 0.0))
+    return ys_fail(root, key, "the roll's inertia needs material.density (kg/m^3)");
+  if (!(s->problem.material.friction_layer > 0.0))
+    return ys_fail(root, key,
+                   "the interlayer slip check needs material.friction_layer (the web-on-web "
+                   "friction coefficient)");
+  s->problem.acceleration = a;
+  return RS_OK;
+}
+
 /* Final radius and layer count. Web length L on a core of radius r_c, caliper t:
  * the wound cross-section pi (r^2 - r_c^2) equals L t, so r = sqrt(r_c^2 + L t / pi).
  * The size is one of final_radius, final_diameter (d = 2 r) and web_length. */
@@ -128,7 +159,7 @@ static rs_status resolve_winding(const yn *root, rs_scene *s)
                      "friction coefficient)");
     s->problem.accel_torque = accel_torque;
   }
-  return RS_OK;
+  return resolve_acceleration(root, s);
 }
 
 static rs_status resolve_drum(const yn *root, rs_drum *d)

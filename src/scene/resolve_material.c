@@ -123,6 +123,13 @@ rs_status ys_resolve_material(const yn *root, rs_material *m)
                    "must be > 0 (got %g; omit the key to skip the check)", friction_layer);
   m->pressure_limit = pressure_limit;
   m->friction_layer = friction_layer;
+  if (ys_has(root, "material.hoop_strength")) {
+    const double hs = ys_num(root, "material.hoop_strength");
+    if (!(hs > 0.0))
+      return ys_fail(root, "material.hoop_strength",
+                     "must be > 0 Pa (got %g; omit the key to skip the check)", hs);
+    m->hoop_strength = hs;
+  }
   /* the sheet in the contact nip (docs/nip.md): 0 = derived (E_z: the roll's nip E_r,
    * E_cd: E_theta); nu_md_cd defaults to 0.3, a typical in-plane Poisson ratio of paper */
   if (ys_has(root, "material.E_z") && !(E_z > 0.0))

@@ -91,6 +91,7 @@ static const ys_field material_fields[] = {
     OPT("viscoelastic", &v_viscoelastic),
     OPT("model", &v_name), /* a shipped model these keys change (models.c); gone once inlined */
     OPT("roughness", &v_float),
+    OPT("hoop_strength", &v_float),
     END};
 static const ys_value v_material = MAP(material_fields);
 
@@ -100,14 +101,14 @@ static const ys_field core_fields[] = {
     OPT("modulus", &v_float), OPT("poisson", &v_float),   OPT("rating", &v_float),
     OPT("alpha", &v_float),   OPT("beta", &v_float),
     OPT("diameter", &v_float), OPT("inner_diameter", &v_float), OPT("wall", &v_float),
-    END}; /* new keys go last: messages list the keys in order */
+    OPT("friction", &v_float), END}; /* new keys go last: messages list the keys in order */
 static const ys_value v_core = MAP(core_fields);
 
 static const ys_field winding_fields[] = {
     OPT("final_radius", &v_float), OPT("web_length", &v_float), REQ("tension", &v_recipe),
     OPT("accel_torque", &v_float), DEF("temperature", &v_float, "23"),
     DEF("humidity", &v_float, "50"), OPT("final_diameter", &v_float), OPT("speed", &v_recipe),
-    END};
+    OPT("acceleration", &v_float), END};
 static const ys_value v_winding = MAP(winding_fields);
 
 /* ---- storage after the winder (docs/storage.md) ----------------------------------------- */

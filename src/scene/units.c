@@ -113,6 +113,7 @@ static void describe(const char *unit, const char **what, const char **examples)
            {"N/m", "a force per width", "kN/m, N/mm, pli, lbf/in"},
            {"m/s", "a speed", "m/min, ft/min, km/h"},
            {"kg/m3", "a density", "g/cm3"},
+           {"m/s2", "an acceleration", "ft/s2, g"},
            {"h", "a time", "min, s, d"},
            {"degC", "a temperature", "degF, K"},
            {"1/K", "an expansion per degree", "1/degC"},

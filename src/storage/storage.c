@@ -132,7 +132,7 @@ static int first_or_less(double v, double best, int have) { return !have || v < 
 void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *w)
 {
   double hoop = 0, buck = 0, pres = 0, slip = 0, core = 0;
-  w->hoop = w->buckling = w->pressure = w->slip = w->core = -1;
+  w->hoop = w->starring = w->pressure = w->slip = w->core = -1;
   for (int s = 0; res && s < res->n_stages; ++s) {
     const rs_defect_report *d = res->defects[s];
     if (!d) continue;
@@ -140,10 +140,10 @@ void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *w)
       hoop = d->hoop.min;
       w->hoop = s;
     }
-    if (d->buckling.verdict != RS_DEFECT_NOT_ASSESSED && d->buckling.compressed > 0 &&
-        first_or_less(d->buckling.margin_min, buck, w->buckling >= 0)) {
-      buck = d->buckling.margin_min;
-      w->buckling = s;
+    if (d->starring.verdict != RS_DEFECT_NOT_ASSESSED && d->starring.compressed > 0 &&
+        first_or_less(d->starring.margin_min, buck, w->starring >= 0)) {
+      buck = d->starring.margin_min;
+      w->starring = s;
     }
     /* the greatest pressure and the core pressure are figures with or without a limit */
     if (res->n_layers > 0 && first_or_less(-d->pressure.max, -pres, w->pressure >= 0)) {

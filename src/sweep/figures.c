@@ -13,7 +13,8 @@ const sweep_figure_info sweep_figures[SWEEP_N_FIGURES] = {
     [SWEEP_FIG_MIN_SIGMA_THETA] = {"min_sigma_theta", "Pa", "least hoop stress (negative: compression)"},
     [SWEEP_FIG_FINAL_RADIUS] = {"final_radius", "m", "outer radius of the wound reel"},
     [SWEEP_FIG_LAYERS] = {"layers", "", "layers wound"},
-    [SWEEP_FIG_BUCKLING_LAYERS] = {"buckling_layers", "", "layers at hoop-buckling risk (docs/defects.md)"},
+    [SWEEP_FIG_STARRING_LAYERS] = {"starring_layers", "", "layers at starring risk (docs/defects.md)"},
+    [SWEEP_FIG_SLIP_MARGIN] = {"slip_margin", "", "least interlayer slip (cinching) margin, capacity / torque"},
     [SWEEP_FIG_WALL_SECONDS] = {"wall_seconds", "s", "wall-clock time of the run"},
     [SWEEP_FIG_STATUS] = {"status", "", "0 ok, 2 refused, 3 solver failed, 1 other"},
 };
@@ -22,6 +23,8 @@ int sweep_figure_find(const char *name)
 {
   for (int i = 0; name && i < SWEEP_N_FIGURES; ++i)
     if (strcmp(sweep_figures[i].name, name) == 0) return i;
+  /* the name of the single-layer rule starring_layers replaced, for older commands */
+  if (name && strcmp(name, "buckling_layers") == 0) return SWEEP_FIG_STARRING_LAYERS;
   return -1;
 }
 
@@ -69,8 +72,9 @@ rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result 
   rs_defect_report *rep = NULL;
   rs_status ds = rs_defects_assess(res, &lim, &rep);
   if (ds != RS_OK) return ds;
-  if (rep->buckling.verdict != RS_DEFECT_NOT_ASSESSED)
-    fig[SWEEP_FIG_BUCKLING_LAYERS] = rep->buckling.layers;
+  if (rep->starring.verdict != RS_DEFECT_NOT_ASSESSED)
+    fig[SWEEP_FIG_STARRING_LAYERS] = rep->starring.layers;
+  if (rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) fig[SWEEP_FIG_SLIP_MARGIN] = rep->slip.margin_min;
   rs_defect_report_destroy(&rep);
   return RS_OK;
 }

@@ -17,7 +17,8 @@ typedef enum sweep_figure {
   SWEEP_FIG_MIN_SIGMA_THETA, /* Pa, least hoop stress (negative: compression) */
   SWEEP_FIG_FINAL_RADIUS,    /* m */
   SWEEP_FIG_LAYERS,          /* layers wound */
-  SWEEP_FIG_BUCKLING_LAYERS, /* layers at hoop-buckling risk (rs_defects_assess) */
+  SWEEP_FIG_STARRING_LAYERS, /* layers at starring risk (rs_defects_assess) */
+  SWEEP_FIG_SLIP_MARGIN,     /* least interlayer slip (cinching) margin */
   SWEEP_FIG_WALL_SECONDS,    /* s, wall-clock time of the run */
   SWEEP_FIG_STATUS,          /* 0 ok, 2 refused, 3 solver failed, 1 other */
   SWEEP_N_FIGURES
@@ -37,12 +38,14 @@ int sweep_figure_find(const char *name);
 void sweep_figure_names(char *buf, size_t size);
 
 /* The figures of one run into fig[SWEEP_N_FIGURES]. `st` is the run's status, `res` its
- * result (may be NULL when st != RS_OK), `problem` what was wound (for the buckling rule's
- * moduli; may be NULL when st != RS_OK). A failed run (st != RS_OK, or a summary figure
+ * result (may be NULL when st != RS_OK), `problem` what was wound (for the defect rules'
+ * inputs; may be NULL when st != RS_OK). A failed run (st != RS_OK, or a summary figure
  * that is not a finite number: status 3) has NaN for every figure but status and
- * wall_seconds. buckling_layers is NaN when the rule cannot be assessed (no
- * E_theta or radial law: docs/defects.md). Returns RS_OK, or the defect assessment's
- * failure (RS_ERR_MEMORY; buckling_layers is then NaN, the other figures are filled). */
+ * wall_seconds. starring_layers is NaN when the rule cannot be assessed (no E_theta or
+ * radial law), slip_margin when the slip rule cannot (no material.friction_layer; it is
+ * infinite where no torque passes through the roll): docs/defects.md. Returns RS_OK, or
+ * the defect assessment's failure (RS_ERR_MEMORY; the two are then NaN, the other
+ * figures are filled). */
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
                                 rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES]);
 

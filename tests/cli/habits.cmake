@@ -27,7 +27,7 @@ rs_cli_script(json_summary json_summary.sh ${SC}/small.yaml ${CASES}/pet-topweb.
 rs_cli_script(set_not_utf8 not_utf8.sh ${SC}/small.yaml)
 # compare prints each run's defect verdicts under its table.
 rs_cli_script(compare_verdicts summary_lines.sh
-              [[^defect risk +hoop stress +hoop buckling +pressure +slip +core$]]
+              [[^defect risk +hoop stress +starring +pressure +slip +core$]]
               [[^1-small +ok +ok +not assessed +not assessed +not assessed$]]
               [[^2-pet-topweb +present +ok +not assessed +not assessed +not assessed$]]
               -- compare ${SC}/small.yaml ${CASES}/pet-topweb.yaml -o compare-verdicts.h5)

@@ -23,7 +23,7 @@ assert s["hours"][0] == 0 and s["hours"] == sorted(s["hours"]), s["hours"]
 assert s["core_pressure"][0] == j["core_pressure"], (s["core_pressure"][0], j["core_pressure"])
 assert len(s["defects"]) == S and all(d["hoop"]["verdict"] in ("ok", "present") for d in s["defects"])
 w = s["worst_stage"]
-assert set(w) == {"hoop", "buckling", "pressure", "slip", "core"}, w
+assert set(w) == {"hoop", "starring", "pressure", "slip", "core"}, w
 assert all(-1 <= v < S for v in w.values()), w
 # the hoop rule's worst stage holds the least hoop stress of all stages
 least = min(d["hoop"]["min"] for d in s["defects"])

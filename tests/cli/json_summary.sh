@@ -44,8 +44,11 @@ assert j["wall_seconds"] >= j["solver_seconds"] >= 0
 assert j["increments"] >= 1 and j["cvode_steps"] >= 1
 d = j["defects"]
 verdicts = {"not assessed", "ok", "risk", "present"}
-for rule in ("hoop", "buckling", "pressure", "slip", "core"):
+for rule in ("hoop", "starring", "pressure", "slip", "core"):
     assert d[rule]["verdict"] in verdicts, (rule, d[rule])
+st = d["starring"]
+assert st["criterion"] in ("none", "hoop_strength", "packet_buckling"), st
+assert st["verdict"] == "ok" or st["margin_min"] is not None, st
 assert d["pressure"]["verdict"] == "not assessed" and d["pressure"]["limit"] is None
 assert d["core"]["rating"] is None and d["core"]["pressure"] == j["core_pressure"]
 print("run --json: ok")

@@ -64,7 +64,7 @@ linear)
   # the history file's contract
   [ "$(h5 best.h5 /optimize/parameters | tr -d '"')" = "winding.tension" ] || fail "parameters"
   n=$(h5 best.h5 /optimize/values | wc -l)
-  for f in core_pressure peak_pressure min_sigma_theta final_radius layers wall_seconds status buckling_layers; do
+  for f in core_pressure peak_pressure min_sigma_theta final_radius layers wall_seconds status starring_layers slip_margin; do
     [ "$(h5 best.h5 "/optimize/figures/$f" | wc -l)" -eq "$n" ] || fail "figure $f has not $n values"
   done
   h5dump -a /optimize/objective best.h5 | grep -q '"winding.tension"' || fail "objective attribute"

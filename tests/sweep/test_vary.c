@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "sweep/figures.h"
@@ -134,17 +135,28 @@ static void figures_of_a_run(void)
   CHECK(fig[SWEEP_FIG_FINAL_RADIUS] == sum.final_radius);
   CHECK(fig[SWEEP_FIG_LAYERS] == res->n_layers && res->n_layers == 200);
   CHECK(fig[SWEEP_FIG_WALL_SECONDS] == 0.5 && fig[SWEEP_FIG_STATUS] == 0);
-  /* buckling: the count of layers whose hoop compression exceeds sqrt(E_theta E_r / 3) */
-  double crit = sqrt(4.0e9 * 20.0e6 / 3.0);
-  int risk = 0;
-  for (int i = 0; i < res->n_layers; ++i) risk += -res->sigma_theta[i] > crit;
-  CHECK(fig[SWEEP_FIG_BUCKLING_LAYERS] == risk && risk == 0);
-  /* Five layers pressed beyond sigma_cr = sqrt(E_theta E_r / 3) = 163.3 MPa (a linear law:
-   * E_r = 20 MPa at any pressure) and three in compression below it: five at risk. */
+  /* starring: the count of layers at risk from rs_defects_assess; none here */
+  rs_defect_limits lim;
+  rs_defect_limits_from_problem(rs_scene_problem(scene), &lim);
+  rs_defect_report *rep = NULL;
+  CHECK(rs_defects_assess(res, &lim, &rep) == RS_OK);
+  CHECK(fig[SWEEP_FIG_STARRING_LAYERS] == rep->starring.layers && rep->starring.layers == 0);
+  CHECK(isnan(fig[SWEEP_FIG_SLIP_MARGIN])); /* no material.friction_layer */
+  rs_defect_report_destroy(&rep);
+  /* Five layers pressed beyond a hoop strength of 1 MPa, three in compression below it:
+   * five at risk; with a friction coefficient the slip margin is the report's. */
+  const double crit = 1.0e6;
+  rs_problem pb = *rs_scene_problem(scene);
+  pb.material.hoop_strength = crit;
+  pb.material.friction_layer = 0.3;
   for (int i = 10; i < 15; ++i) res->sigma_theta[i] = -1.2 * crit;
   for (int i = 20; i < 23; ++i) res->sigma_theta[i] = -0.8 * crit;
-  CHECK(sweep_figures_compute(rs_scene_problem(scene), res, RS_OK, 0.5, fig) == RS_OK);
-  CHECK(fig[SWEEP_FIG_BUCKLING_LAYERS] == 5);
+  CHECK(sweep_figures_compute(&pb, res, RS_OK, 0.5, fig) == RS_OK);
+  CHECK(fig[SWEEP_FIG_STARRING_LAYERS] == 5);
+  rs_defect_limits_from_problem(&pb, &lim);
+  CHECK(rs_defects_assess(res, &lim, &rep) == RS_OK);
+  CHECK(fig[SWEEP_FIG_SLIP_MARGIN] == rep->slip.margin_min && rep->slip.margin_min > 0.0);
+  rs_defect_report_destroy(&rep);
   CHECK_CLOSE(fig[SWEEP_FIG_MIN_SIGMA_THETA], -1.2 * crit, 1e-15);
   CHECK(sweep_figures_compute(NULL, NULL, RS_ERR_SOLVER, 0.25, fig) == RS_OK);
   CHECK(isnan(fig[SWEEP_FIG_CORE_PRESSURE]) && isnan(fig[SWEEP_FIG_LAYERS]));
@@ -158,7 +170,9 @@ static void figure_names(void)
 {
   for (int i = 0; i < SWEEP_N_FIGURES; ++i) CHECK(sweep_figure_find(sweep_figures[i].name) == i);
   CHECK(sweep_figure_find("core_presure") == -1);
-  CHECK(sweep_figure_find("buckling_layers") == SWEEP_FIG_BUCKLING_LAYERS);
+  CHECK(sweep_figure_find("starring_layers") == SWEEP_FIG_STARRING_LAYERS);
+  CHECK(sweep_figure_find("slip_margin") == SWEEP_FIG_SLIP_MARGIN);
+  CHECK(sweep_figure_find("buckling_layers") == SWEEP_FIG_STARRING_LAYERS); /* the old name */
   char names[512];
   sweep_figure_names(names, sizeof names);
   CHECK(strncmp(names, "core_pressure, peak_pressure, ", 30) == 0);
