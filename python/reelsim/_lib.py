@@ -69,3 +69,10 @@ rs_reel_result_finite = _fn("rs_reel_result_finite", _c.c_int, _VP, _c.POINTER(_
 
 # the values of enum rs_status (include/reelsim/status.h)
 RS_OK, RS_ERR_INPUT, RS_ERR_SOLVER = 0, 1, 2
+
+# the stack fit (include/reelsim/fit.h)
+RS_FIT_MAX_PARAMS = 16
+rs_fit_stack_flat = _fn("rs_fit_stack_flat", _c.c_int, _c.c_int, _c.POINTER(_c.c_double),
+                        _c.POINTER(_c.c_double), _CP, _c.c_int, _c.POINTER(_c.c_int),
+                        _c.c_char_p, _c.POINTER(_c.c_double), _c.POINTER(_c.c_double),
+                        _c.POINTER(_c.c_double))

@@ -96,10 +96,12 @@ static void print_text(const fit_args *f, const rs_fit_stack_result *r, const do
   printf("stack law fitted to %s: %s, %d points, %.4g .. %.4g Pa (%d evaluations)\n", f->csv,
          f->law, r->n_points, r->P_min, r->P_max, r->evaluations);
   printf("  %-12s %-14s %s\n", "parameter", "value", "95 % confidence interval");
-  for (int i = 0; i < r->n_params; ++i)
-    printf("  %-12s %-14.6g %.6g .. %.6g (+- %.2g %%)\n", r->name[i], r->value[i],
-           r->value[i] - r->half_width[i], r->value[i] + r->half_width[i],
-           r->value[i] != 0.0 ? 100.0 * r->half_width[i] / fabs(r->value[i]) : INFINITY);
+  for (int i = 0; i < r->n_params; ++i) {
+    printf("  %-12s %-14.6g %.6g .. %.6g", r->name[i], r->value[i], r->value[i] - r->half_width[i],
+           r->value[i] + r->half_width[i]);
+    if (r->value[i] != 0.0) printf(" (+- %.2g %%)", 100.0 * r->half_width[i] / fabs(r->value[i]));
+    printf("%s\n", r->value[i] == 0.0 ? " (at its bound 0)" : "");
+  }
   printf("  RMS residual %.3g (strain)\n", r->rms);
   printf("  worst point  #%d: P = %.6g Pa, strain %.6g measured, %.6g fitted (%+.3g)\n",
          r->worst + 1, P[r->worst], eps[r->worst], eps[r->worst] + r->worst_residual,
@@ -113,6 +115,7 @@ static void print_json(const fit_args *f, const rs_fit_stack_result *r, const do
 {
   cli_json j;
   cli_json_init(&j, stdout);
+  cli_json_object(&j, NULL);
   cli_json_string(&j, "reelsim", RS_VERSION_STRING);
   cli_json_string(&j, "command", "fit stack");
   cli_json_string(&j, "data", f->csv);
