@@ -61,6 +61,13 @@ rs_status rs_fit_stack_write_model(const char *path, const rs_fit_stack_result *
 rs_status rs_fit_stack_plot(const char *path, int n, const double *P, const double *eps,
                             const rs_fit_stack_result *fit, const char *title);
 
+/* 95 % confidence half widths of p parameters fitted to n > p residuals: t(0.975, n - p)
+ * sqrt(diag(s^2 (J^T J)^-1)), s^2 = ssr/(n - p), J the n x p Jacobian (row-major) of the
+ * residuals at the optimum; LAPACK's Cholesky on J^T J with unit-norm columns. rcond (may
+ * be NULL): J^T J's reciprocal condition. RS_ERR_INPUT when J is rank-deficient. */
+rs_status rs_fit_intervals(int n, int p, const double *J, double ssr, double *half_width,
+                           double *rcond);
+
 /* The law's name from a string ("pfeiffer" ..); -1 when unknown. */
 int rs_fit_law_parse(const char *s);
 

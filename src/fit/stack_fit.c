@@ -180,12 +180,51 @@ static rs_status check_data(int n, const double *P, const double *eps, int p, co
   return RS_OK;
 }
 
+rs_status rs_fit_intervals(int n, int p, const double *J, double ssr, double *half_width,
+                           double *rcond_out)
+{
+  double A[RS_FIT_MAX_PARAMS * RS_FIT_MAX_PARAMS] = {0}, sc[RS_FIT_MAX_PARAMS];
+  if (p < 1 || p > RS_FIT_MAX_PARAMS || n <= p)
+    return RS_ERROR(RS_ERR_INPUT, "%d points cannot give intervals for %d parameters", n, p);
+  for (int k = 0; k < p; ++k) {
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) s += J[(size_t)i * p + k] * J[(size_t)i * p + k];
+    sc[k] = s > 0.0 ? 1.0 / sqrt(s) : 0.0;
+  }
+  for (int a = 0; a < p; ++a)
+    for (int b = 0; b < p; ++b) {
+      double s = 0.0;
+      for (int i = 0; i < n; ++i) s += J[(size_t)i * p + a] * J[(size_t)i * p + b];
+      A[a * p + b] = s * sc[a] * sc[b];
+    }
+  double anorm = 0.0;
+  for (int a = 0; a < p; ++a) {
+    double s = 0.0;
+    for (int b = 0; b < p; ++b) s += fabs(A[a * p + b]);
+    anorm = fmax(anorm, s);
+  }
+  lapack_int info = LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'U', p, A, p);
+  double rcond = 0.0;
+  if (info == 0) info = LAPACKE_dpocon(LAPACK_ROW_MAJOR, 'U', p, A, p, anorm, &rcond);
+  for (int k = 0; k < p && info == 0; ++k)
+    if (sc[k] == 0.0) info = 1;
+  if (rcond_out) *rcond_out = rcond;
+  if (info != 0 || rcond < 1e3 * DBL_EPSILON)
+    return RS_ERROR(RS_ERR_INPUT,
+                    "the data do not determine the parameters (the Jacobian at the fit is "
+                    "rank-deficient, reciprocal condition %.3g)", rcond);
+  LAPACKE_dpotri(LAPACK_ROW_MAJOR, 'U', p, A, p);
+  const double s2 = ssr / (n - p), t = student_t95(n - p);
+  for (int k = 0; k < p; ++k) half_width[k] = t * sqrt(s2 * A[k * p + k]) * sc[k];
+  return RS_OK;
+}
+
 /* covariance of theta: s^2 (J^T J)^-1, the half widths t95 sqrt(diag) */
 static rs_status intervals(fit_ctx *c, const rs_radial_law *L, double ssr, rs_fit_stack_result *out)
 {
   const int n = c->n, p = c->p;
-  double th[RS_FIT_MAX_PARAMS], A[RS_FIT_MAX_PARAMS * RS_FIT_MAX_PARAMS] = {0}, sc[RS_FIT_MAX_PARAMS];
-  double *J = malloc((size_t)n * p * sizeof *J), *rp = malloc((size_t)n * sizeof *rp),
+  double th[RS_FIT_MAX_PARAMS];
+  double *J = calloc((size_t)n * p, sizeof *J), *rp = malloc((size_t)n * sizeof *rp),
          *rm = malloc((size_t)n * sizeof *rm);
   rs_status st = RS_OK;
   if (!J || !rp || !rm) {
@@ -213,43 +252,12 @@ static rs_status intervals(fit_ctx *c, const rs_radial_law *L, double ssr, rs_fi
     ssr_of(c, &Lm, rm);
     for (int i = 0; i < n; ++i) J[(size_t)i * p + k] = (rp[i] - rm[i]) / (2 * h);
   }
-  for (int k = 0; k < p; ++k) {
-    double s = 0.0;
-    for (int i = 0; i < n; ++i) s += J[(size_t)i * p + k] * J[(size_t)i * p + k];
-    sc[k] = s > 0.0 ? 1.0 / sqrt(s) : 0.0;
-  }
-  for (int a = 0; a < p; ++a)
-    for (int b = 0; b < p; ++b) {
-      double s = 0.0;
-      for (int i = 0; i < n; ++i) s += J[(size_t)i * p + a] * J[(size_t)i * p + b];
-      A[a * p + b] = s * sc[a] * sc[b];
-    }
-  double anorm = 0.0;
-  for (int a = 0; a < p; ++a) {
-    double s = 0.0;
-    for (int b = 0; b < p; ++b) s += fabs(A[a * p + b]);
-    anorm = fmax(anorm, s);
-  }
-  lapack_int info = LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'U', p, A, p);
-  double rcond = 0.0;
-  if (info == 0) info = LAPACKE_dpocon(LAPACK_ROW_MAJOR, 'U', p, A, p, anorm, &rcond);
-  for (int k = 0; k < p && info == 0; ++k)
-    if (sc[k] == 0.0) info = 1;
-  if (info != 0 || rcond < 1e3 * DBL_EPSILON) {
-    st = RS_ERROR(RS_ERR_INPUT,
-                  "the data do not determine the %s law's parameters (the Jacobian at the fit "
-                  "is rank-deficient, reciprocal condition %.3g): fewer parameters (--terms), "
-                  "or points over a wider pressure range",
+  st = rs_fit_intervals(n, p, J, ssr, out->half_width, NULL);
+  if (st)
+    rs_error_wrap("%s law: fewer parameters (--terms), or points over a wider pressure range",
                   c->kind == RS_RADIAL_TABLE ? "table" : c->kind == RS_RADIAL_HAKIEL ? "hakiel"
-                  : c->kind == RS_RADIAL_PFEIFFER ? "pfeiffer" : "linear", rcond);
-    goto out;
-  }
-  LAPACKE_dpotri(LAPACK_ROW_MAJOR, 'U', p, A, p);
-  const double s2 = ssr / (n - p), t = student_t95(n - p);
-  for (int k = 0; k < p; ++k) {
-    out->value[k] = th[k];
-    out->half_width[k] = t * sqrt(s2 * A[k * p + k]) * sc[k];
-  }
+                  : c->kind == RS_RADIAL_PFEIFFER ? "pfeiffer" : "linear");
+  for (int k = 0; k < p; ++k) out->value[k] = th[k];
 out:
   free(J);
   free(rp);
