@@ -186,6 +186,8 @@ static int fit_stack(int argc, char **argv)
 int cli_fit(int argc, char **argv)
 {
   if (argc >= 3 && strcmp(argv[2], "stack") == 0) return fit_stack(argc, argv);
+  if (argc >= 3 && strcmp(argv[2], "roll") == 0) return cli_fit_roll(argc, argv);
   return cli_fail(CLI_EXIT_USAGE, "fit: what to fit: 'reelsim fit stack TEST.csv --law LAW ...' "
+                                  "or 'reelsim fit roll SCENE --measured DATA.csv --vary KEY=LO:HI' "
                                   "(docs/calibrate.md)");
 }
