@@ -35,7 +35,7 @@ layer_of() {
     include/reelsim/scene.h | src/scene/*) echo 4 ;;
     include/reelsim/output.h | include/reelsim/reader.h | src/output/*) echo 5 ;;
     include/reelsim/plot.h | src/plot/*) echo 6 ;;
-    include/reelsim/study.h | src/study/*) echo 7 ;;
+    include/reelsim/study.h | src/study/* | include/reelsim/fit.h | src/fit/*) echo 7 ;; # study, fit
     src/sweep/*) echo 8 ;;                          # recipe search: an application
     include/reelsim/reelsim.h | src/cli/*) echo 9 ;; # the umbrella header: applications only
   esac

@@ -46,6 +46,15 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *P, double *E, i
 int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *sigma, double *P, double *E,
                                int n);
 
+/* The stack's strain at pressure P >= 0 (compression positive) loaded from zero,
+ * eps(P) = integral over [0, P] of dp / E_r(p) (dimensionless; 0 for P <= 0): what a stack
+ * test measures and what compresses a layer of the roll at pressure P. For Pfeiffer's law
+ * it is ln(1 + P/K1)/K2. */
+double rs_radial_strain(const rs_radial_law *law, double P);
+/* eps(b) - eps(a) for 0 <= a <= b: Gauss-Legendre (8 points) on [a, b], split at a table's
+ * points; accurate where 1/E_r varies little over [a, b] (a tabulation's step). */
+double rs_radial_strain_step(const rs_radial_law *law, double a, double b);
+
 /* A Prony series of the web's relaxation (storage creep, docs/storage.md): term i relaxes
  * the fraction w_i of a modulus with relaxation time tau_i,
  *   E(t) = E (1 - sum_i w_i (1 - exp(-t / tau_i))),

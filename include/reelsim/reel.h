@@ -60,6 +60,12 @@ typedef struct rs_reel_result {
   int n_profiles;
   double *profile_radius;    /* m, roll radius of each profile */
   struct rs_nip_solution *profiles;
+  /* What gauges read (docs/output.md): per layer, the roll's outer radius with the stack
+   * compressed (rs_reel_deformed_radius) in the finished roll and as the layer went on,
+   * and the wound-in tension sigma_theta t of the finished roll. */
+  double *deformed_radius;   /* m */
+  double *wound_radius;      /* m */
+  double *wound_in_tension;  /* N/m */
 } rs_reel_result;
 
 /* Optional observer: called after each increment with the layers wound so far.
@@ -78,6 +84,18 @@ typedef struct rs_reel_options {
 rs_status rs_reel_wind(const rs_problem *problem, const rs_reel_options *opts,
                        rs_reel_result **out);
 void rs_reel_result_destroy(rs_reel_result **res);
+
+/* The deformed outer radius of each layer j = 0..n-1 of a roll (m) in the state given: the
+ * core's displacement -r_c P_c/E_c, the calipers, the air films (film: as entrained, per
+ * layer, compressed here by their node's pressure; NULL: none) less the stack's radial
+ * compression, the trapezoid rule of t eps(P) over the nodes (eps = rs_radial_strain,
+ * tabulated). core_pressure Pa (compression positive), sigma_r[j] Pa at layer j's outer
+ * face (compression negative; the outer face free). src/reel/gauge.c. */
+rs_status rs_reel_deformed_radius(const rs_problem *problem, double core_pressure,
+                                  const double *sigma_r, const double *film, int n, double *out);
+/* The wound-in tension sigma_theta t (N/m) of n layers. */
+void rs_reel_wound_in_tension(const rs_problem *problem, const double *sigma_theta, int n,
+                              double *out);
 
 /* Summary figures a user reads first. */
 typedef struct rs_reel_summary {
@@ -103,6 +121,8 @@ int rs_reel_summary_finite(const rs_reel_summary *sum, const char **what);
  * metre of web width is rho t L, known only when the material's density is. */
 typedef struct rs_reel_sizes {
   double diameter;     /* m, twice the outer radius of the last layer */
+  double deformed_diameter; /* m, twice the deformed outer radius (what a gauge reads; the
+                               same as diameter when the result has no deformed radius) */
   double wound_length; /* m */
   int has_mass;        /* 1 when material.density is given */
   double mass;         /* kg per metre of width (0 when has_mass is 0) */
@@ -142,7 +162,8 @@ rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
  * call the library through a foreign-function interface (the Python package): they stay
  * right when fields are added. rs_reel_result_layers: n_layers (0 for NULL).
  * rs_reel_result_array: the per-layer array called `name` ("radius", "wound_on_tension",
- * "web_tension", "nip_load", "sigma_r", "sigma_theta"; with entrained air "air_film",
+ * "web_tension", "nip_load", "sigma_r", "sigma_theta", "deformed_radius", "wound_radius",
+ * "wound_in_tension"; with entrained air "air_film",
  * "air_film_entrained"; with the centrifugal load "at_speed_sigma_r",
  * "at_speed_sigma_theta"; owned by the result) with its length in *n (may be NULL); NULL
  * and *n = 0 for an unknown name, an effect the problem did not have, or a NULL result.

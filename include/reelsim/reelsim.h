@@ -39,6 +39,7 @@
 
 /* applications' libraries: accuracy study, plots */
 #include "reelsim/study.h"
+#include "reelsim/fit.h"
 #include "reelsim/plot.h"
 
 #endif

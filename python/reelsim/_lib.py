@@ -73,3 +73,10 @@ rs_defect_report_text = _fn("rs_defect_report_text", _CP, _VP, _CP)
 
 # the values of enum rs_status (include/reelsim/status.h)
 RS_OK, RS_ERR_INPUT, RS_ERR_SOLVER = 0, 1, 2
+
+# the stack fit (include/reelsim/fit.h)
+RS_FIT_MAX_PARAMS = 16
+rs_fit_stack_flat = _fn("rs_fit_stack_flat", _c.c_int, _c.c_int, _c.POINTER(_c.c_double),
+                        _c.POINTER(_c.c_double), _CP, _c.c_int, _c.POINTER(_c.c_int),
+                        _c.c_char_p, _c.POINTER(_c.c_double), _c.POINTER(_c.c_double),
+                        _c.POINTER(_c.c_double))

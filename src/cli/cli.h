@@ -20,6 +20,11 @@ int cli_plot(const cli_args *a);
 int cli_study(const cli_args *a);
 /* reelsim nip SCENE --radius R [--json] [--set k=v]...: one contact nip (cmd_nip.c). */
 int cli_nip(const cli_args *a);
+/* reelsim fit stack TEST.csv --law LAW ...: the stack law fitted to a stack test
+ * (cmd_fit.c; parses its own arguments). */
+int cli_fit(int argc, char **argv);
+/* reelsim fit roll SCENE --measured DATA.csv --vary KEY=LO:HI ... (cmd_fit_roll.c). */
+int cli_fit_roll(int argc, char **argv);
 /* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...
  * (cmd_optimize.c). */
 int cli_optimize(const cli_args *a);

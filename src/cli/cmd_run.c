@@ -50,7 +50,8 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   rs_reel_sizes z;
   rs_reel_sizes_of(res, rs_scene_problem(scene), &z);
   printf("  final radius       %.1f mm\n", s->final_radius * 1e3);
-  printf("  diameter           %.1f mm\n", z.diameter * 1e3);
+  printf("  diameter           %.1f mm (free r_c + N t: %.1f mm; the stack compressed, what a "
+         "gauge reads)\n", z.deformed_diameter * 1e3, z.diameter * 1e3);
   printf("  layers             %d\n", s->layers);
   printf("  wound length       %.1f m (the layers' circumferences at mid-thickness)\n",
          z.wound_length);

@@ -34,6 +34,7 @@ int main(int argc, char **argv)
     printf("reelsim %s\n", RS_VERSION_STRING);
     return CLI_EXIT_OK;
   }
+  if (strcmp(cmd, "fit") == 0) return cli_fit(argc, argv); /* its own arguments: cmd_fit.c */
   if (strcmp(cmd, "--bash-completion") == 0) return cli_bash_completion(stdout);
   if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
     if (strcmp(cmd, "help") != 0 || argc < 3 || strcmp(argv[2], "help") == 0 ||

@@ -88,7 +88,8 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   cli_json_int(j, "layers", s.layers);
   cli_json_number(j, "core_radius", res->core_radius);
   cli_json_number(j, "final_radius", s.final_radius);
-  cli_json_number(j, "final_diameter", z.diameter);
+  cli_json_number(j, "final_diameter", z.deformed_diameter);
+  cli_json_number(j, "free_diameter", z.diameter);
   cli_json_number(j, "wound_length", z.wound_length);
   cli_json_number(j, "roll_mass", z.has_mass ? z.mass : NAN);
   if (z.has_air) {

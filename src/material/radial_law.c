@@ -195,3 +195,45 @@ double rs_radial_modulus(const rs_radial_law *law, double P)
   }
   return NAN;
 }
+
+/* The stack's strain at pressure P (compression positive), loaded from zero:
+ *     eps(P) = integral over [0, P] of dp / E_r(p)                      (1)
+ * the tangent modulus being dP/d eps. What a stack test measures (strain against pressure)
+ * and what a layer of the roll at pressure P is compressed by. Gauss-Legendre (8 points)
+ * on panels graded geometrically towards 0 (P 2^-k, k = 0..30: the laws' 1/E_r varies
+ * most at low pressure), each split at the table's points (the monotone cubic is C^1
+ * only there); below P 2^-30 the zero-pressure modulus. Linear: P/E_r exactly. */
+static double strain_panel(const rs_radial_law *law, double a, double b)
+{
+  static const double x[4] = {0.18343464249564980, 0.52553240991632899, 0.79666647741362674,
+                              0.96028985649753623};
+  static const double w[4] = {0.36268378337836198, 0.31370664587788729, 0.22238103445337447,
+                              0.10122853629037626};
+  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double s = 0.0;
+  for (int i = 0; i < 4; ++i)
+    s += w[i] * (1.0 / rs_radial_modulus(law, c - h * x[i]) + 1.0 / rs_radial_modulus(law, c + h * x[i]));
+  return s * h;
+}
+
+double rs_radial_strain_step(const rs_radial_law *law, double a, double b)
+{
+  if (!(b > a)) return 0.0;
+  double eps = 0.0, x = a;
+  if (law->law == RS_RADIAL_TABLE)
+    for (int i = 0; i < law->n_points; ++i)
+      if (law->P[i] > x && law->P[i] < b) {
+        eps += strain_panel(law, x, law->P[i]);
+        x = law->P[i];
+      }
+  return eps + strain_panel(law, x, b);
+}
+
+double rs_radial_strain(const rs_radial_law *law, double P)
+{
+  if (!(P > 0.0)) return 0.0; /* a layer never pulls on its neighbour */
+  if (law->law == RS_RADIAL_LINEAR) return P / law->E_r;
+  double lo = ldexp(P, -30), eps = lo / rs_radial_modulus(law, 0.0);
+  for (int k = 30; k >= 1; --k) eps += rs_radial_strain_step(law, ldexp(P, -k), ldexp(P, -k + 1));
+  return eps;
+}

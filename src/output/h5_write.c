@@ -78,6 +78,12 @@ static rs_status write_layers(hid_t loc, const rs_reel_result *res)
   if (st == RS_OK)
     st = rs_h5_write_1d(g, "nip_load", res->nip_load, n, "N/m",
                         "nip load when each layer was wound on (0 without a nip)");
+  if (st == RS_OK && res->wound_radius)
+    st = rs_h5_write_1d(g, "wound_radius", res->wound_radius, n, "m",
+                        "the roll's real outer radius when each layer went on: the core's "
+                        "displacement, the calipers, the air films and the stack's radial "
+                        "compression at that moment (what a diameter gauge reads against the "
+                        "wound length)");
   if (st == RS_OK && res->air_film)
     st = rs_h5_write_1d(g, "air_film", res->air_film, n, "m",
                         "entrained air film under each layer in the wound reel: the film that "
@@ -116,6 +122,15 @@ static rs_status write_final(hid_t loc, const rs_reel_result *res)
   if (st == RS_OK)
     st = rs_h5_write_1d(g, "radius", res->radius, n, "m",
                         "outer radius of each layer (the same as /layers/radius)");
+  if (st == RS_OK && res->deformed_radius)
+    st = rs_h5_write_1d(g, "deformed_radius", res->deformed_radius, n, "m",
+                        "outer radius of each layer in the finished roll with the core's "
+                        "displacement and the stack's radial compression (radius is the free "
+                        "r_c + sum of calipers and films)");
+  if (st == RS_OK && res->wound_in_tension)
+    st = rs_h5_write_1d(g, "wound_in_tension", res->wound_in_tension, n, "N/m",
+                        "wound-in tension of each layer, sigma_theta times the caliper (what WIT "
+                        "gauges and pull-out methods measure)");
   if (st == RS_OK)
     st = rs_h5_write_scalar(g, "core_pressure", res->core_pressure, "Pa",
                             "pressure on the core in the wound reel; compression positive");

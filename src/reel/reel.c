@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/gauge.h"
 #include "reel/nip_policy.h"
 #include "reel/reel_air.h"
 #include "reel/spin.h"
@@ -42,6 +43,9 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   for (int i = 0; res->profiles && i < res->n_profiles; ++i) rs_nip_solution_free(&res->profiles[i]);
   free(res->profiles);
   free(res->profile_radius);
+  free(res->deformed_radius);
+  free(res->wound_radius);
+  free(res->wound_in_tension);
   free(res);
   *resp = NULL;
 }
@@ -213,6 +217,26 @@ static void history_rewind(rs_reel_result *res, int layers, int every, long *nex
   if (every > 0) *next_stage = (layers / every + 1) * (long)every;
 }
 
+/* What gauges read, from the finished roll: the deformed radii (now and as each layer went
+ * on) and the wound-in tension (src/reel/gauge.c) */
+static rs_status reel_gauges(const rs_problem *pb, rs_reel_result *res, rs_reel_gauge *g,
+                             const double *film)
+{
+  const int n = res->n_layers;
+  res->deformed_radius = malloc((size_t)n * sizeof(double));
+  res->wound_radius = malloc((size_t)n * sizeof(double));
+  res->wound_in_tension = malloc((size_t)n * sizeof(double));
+  if (!res->deformed_radius || !res->wound_radius || !res->wound_in_tension)
+    return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the gauges' radii (%d layers)", n);
+  rs_status st = rs_reel_deformed_radius(pb, res->core_pressure, res->sigma_r, film, n,
+                                         res->deformed_radius);
+  if (!st) st = rs_reel_gauge_record(g, pb, n, res->core_pressure, res->sigma_r, film, 1);
+  if (st) return st;
+  rs_reel_gauge_finish(g, pb, n, res->wound_radius);
+  rs_reel_wound_in_tension(pb, res->sigma_theta, n, res->wound_in_tension);
+  return RS_OK;
+}
+
 static int compare_doubles(const void *a, const void *b)
 {
   double x = *(const double *)a, y = *(const double *)b;
@@ -250,6 +274,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   const int has_air = pb->air.on;
   rs_reel_air air = {0};
   int air_end = 0;
+  rs_reel_gauge gauge = {0}; /* the wound radius: the roll's deformed radius as it grew */
   double prof_r[RS_MAX_PROFILES];
   if (!res || !block) {
     st = RS_ERROR(RS_ERR_MEMORY, "cannot allocate the results of %d layers", N);
@@ -257,6 +282,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   }
   res->core_radius = pb->core.radius;
   if (every > 0 && (st = history_alloc(res, N, per_step, every, &hist_cap))) goto done;
+  if ((st = rs_reel_gauge_init(&gauge, N))) goto done;
   if (has_air) {
     if ((st = rs_reel_air_create(&air, N))) goto done;
     params.air_film = air.film;
@@ -331,6 +357,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
           if ((st = rs_roll_restore(roll, snap))) goto done;
           first = pol.j2;
           history_rewind(res, first, every, &next_stage);
+          rs_reel_gauge_rewind(&gauge, first);
           continue;
         }
         rs_nip_report rep;
@@ -444,6 +471,9 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
       if (has_air) res->stage_radius[res->n_stages - 1] = R_air;
       next_stage = (first / every + 1) * (long)every;
     }
+    if ((st = rs_reel_gauge_record(&gauge, pb, first, rs_roll_core_pressure(roll), rs_roll_sigma_r(roll),
+                                   has_air ? air.film : NULL, 0)))
+      goto done;
     if (opts && opts->progress && opts->progress(opts->user, first, N)) {
       st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted after layer %d of %d", first, N);
       goto done;
@@ -472,6 +502,10 @@ done:
     if (res->n_stages > 0 && res->stage_layers[res->n_stages - 1] == res->n_layers)
       res->stage_radius[res->n_stages - 1] = res->radius[res->n_layers - 1];
   }
+  if (res && res->n_layers > 0 && gauge.layers) {
+    rs_status gst = reel_gauges(pb, res, &gauge, has_air ? air.film : NULL);
+    if (st == RS_OK) st = gst;
+  }
   if (st == RS_OK) {
     for (int j = 0; j < res->n_layers; ++j)
       if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j])) {
@@ -482,6 +516,7 @@ done:
       st = RS_ERROR(RS_ERR_SOLVER, "non-finite core pressure after winding");
   }
   free(block);
+  rs_reel_gauge_free(&gauge);
   rs_reel_air_free(&air);
   rs_roll_state_destroy(&snap);
   rs_nip_destroy(&nip);

@@ -22,6 +22,8 @@ const double *rs_reel_result_array(const rs_reel_result *res, const char *name, 
       {"air_film", res->air_film},       {"air_film_entrained", res->air_film_entrained},
       {"at_speed_sigma_r", res->at_speed_sigma_r},
       {"at_speed_sigma_theta", res->at_speed_sigma_theta},
+      {"deformed_radius", res->deformed_radius}, {"wound_radius", res->wound_radius},
+      {"wound_in_tension", res->wound_in_tension},
   };
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i)
     if (strcmp(name, a[i].name) == 0) {

@@ -39,6 +39,8 @@ void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_r
   /* with entrained air the radii hold the films: the web is what was wound */
   if (res->air_film) L = res->air_wound_length;
   out->diameter = res->n_layers > 0 ? 2.0 * res->radius[res->n_layers - 1] : 2.0 * inner;
+  out->deformed_diameter = res->n_layers > 0 && res->deformed_radius
+                               ? 2.0 * res->deformed_radius[res->n_layers - 1] : out->diameter;
   out->wound_length = L;
   out->has_mass = problem && problem->material.density > 0.0;
   out->mass = out->has_mass ? problem->material.density * problem->material.caliper * L : 0.0;

@@ -2,7 +2,7 @@
 # changes, --set KEY=null.
 rs_cli_script(summary_sizes summary_lines.sh
               [[^  final radius +318\.0 mm$]]
-              [[^  diameter +636\.0 mm$]]
+              [[^  diameter +627\.0 mm \(free r_c \+ N t: 636\.0 mm; the stack compressed, what a gauge reads\)$]]
               [[^  wound length +3000\.2 m \(the layers' circumferences at mid-thickness\)$]]
               [[^  roll mass +417\.03 kg per metre of width$]]
               -- run ${CASES}/pet-topweb.yaml -o summary-sizes.h5)

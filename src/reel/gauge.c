@@ -1,0 +1,160 @@
+/* What gauges read (docs/output.md, "What gauges read"): the roll's real radii, with the
+ * stack compressed by its pressure, and the wound-in tension.
+ *
+ * A layer j of caliper t between nodes j and j + 1 (node 0 the core's face; node j + 1
+ * under sigma_r[j]) at node pressures P_j, P_j+1 is compressed by
+ *     t (eps(P_j) + eps(P_j+1)) / 2,    eps(P) = integral over [0, P] of dp / E_r(p)
+ * (the trapezoid rule of the integral of eps_r through the stack; the stack law loaded
+ * from zero, path independent: the strain a stack test measures at that pressure). The
+ * core gives way by u_c = -r_c P_c / E_c (the core condition's effective modulus; rigid 0),
+ * and the air films (entrained air) are compressed by the pressure at their node:
+ *     R_j = r_c + u_c + sum over i <= j of (t + h_i(P_i) - t (eps(P_i) + eps(P_i+1)) / 2).
+ * The web's Poisson strain through the thickness under its hoop stress (nu sigma_theta /
+ * E_theta, ~1e-5) is left out, as the engine's compatibility cancels it. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reelsim/material.h"
+#include "reel/gauge.h"
+#include "reelsim/reel.h"
+
+enum { STRAIN_TABLE = 256 };
+
+/* eps(P) on [0, P_max] at the nodes P_max (i/M)^2 (closer near 0, where 1/E_r varies most),
+ * a cubic Hermite between them with the exact slopes 1/E_r: O(h^4), one tabulation for a
+ * whole roll instead of a quadrature per layer */
+typedef struct strain_table {
+  double Pmax, eps[STRAIN_TABLE + 1], inv[STRAIN_TABLE + 1];
+} strain_table;
+
+static void strain_table_fill(strain_table *tb, const rs_radial_law *law, double Pmax)
+{
+  tb->Pmax = Pmax;
+  tb->eps[0] = 0.0;
+  tb->inv[0] = 1.0 / rs_radial_modulus(law, 0.0);
+  double prev = 0.0;
+  for (int i = 1; i <= STRAIN_TABLE; ++i) {
+    const double s = (double)i / STRAIN_TABLE, P = Pmax * s * s;
+    tb->eps[i] = tb->eps[i - 1] + rs_radial_strain_step(law, prev, P);
+    tb->inv[i] = 1.0 / rs_radial_modulus(law, P);
+    prev = P;
+  }
+}
+
+static double strain_table_eval(const strain_table *tb, double P)
+{
+  if (!(P > 0.0) || !(tb->Pmax > 0.0)) return 0.0;
+  int i = (int)(STRAIN_TABLE * sqrt(P / tb->Pmax));
+  if (i >= STRAIN_TABLE) i = STRAIN_TABLE - 1;
+  const double s0 = (double)i / STRAIN_TABLE, s1 = (double)(i + 1) / STRAIN_TABLE;
+  const double a = tb->Pmax * s0 * s0, h = tb->Pmax * s1 * s1 - a, x = (P - a) / h;
+  const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+  const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+  return h00 * tb->eps[i] + h10 * h * tb->inv[i] + h01 * tb->eps[i + 1] + h11 * h * tb->inv[i + 1];
+}
+
+rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, const double *sigma_r,
+                                  const double *film, int n, double *out)
+{
+  if (n < 1) return RS_OK;
+  strain_table *tb = malloc(sizeof *tb);
+  if (!tb) return RS_ERROR(RS_ERR_MEMORY, "deformed radius: out of memory");
+  const double t = pb->material.caliper, pa = pb->air.pressure;
+  double Pmax = core_pressure;
+  for (int j = 0; j < n; ++j) Pmax = fmax(Pmax, -sigma_r[j]);
+  strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
+  const double Ec = rs_core_stiffness(&pb->core);
+  double r = pb->core.radius, P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
+  if (isfinite(Ec)) r -= pb->core.radius * (core_pressure > 0.0 ? core_pressure : 0.0) / Ec;
+  for (int j = 0; j < n; ++j) {
+    const double P_out = j + 1 < n ? -sigma_r[j] : 0.0, e_out = strain_table_eval(tb, P_out);
+    r += t * (1.0 - 0.5 * (e_in + e_out));
+    if (film) r += rs_air_compressed_film(film[j], P_in, pa);
+    out[j] = r;
+    P_in = P_out;
+    e_in = e_out;
+  }
+  free(tb);
+  return RS_OK;
+}
+
+/* T_w = sigma_theta t, N/m */
+void rs_reel_wound_in_tension(const rs_problem *pb, const double *sigma_theta, int n, double *out)
+{
+  for (int j = 0; j < n; ++j) out[j] = sigma_theta[j] * pb->material.caliper;
+}
+
+/* ---- the wound radius: the deformed outer radius as each layer went on --------------- */
+
+/* the next state recorded after n layers: every layer up to 1/RS_GAUGE_STEP, then at
+ * n (1 + RS_GAUGE_STEP) (the pressure builds fastest over the first layers: the shortfall's
+ * curvature falls like 1/n); ln(N)/RS_GAUGE_STEP states, O(N/RS_GAUGE_STEP) work in all */
+static int gauge_next(int n)
+{
+  const int step = (int)(n * RS_GAUGE_STEP);
+  return n + (step > 1 ? step : 1);
+}
+
+rs_status rs_reel_gauge_init(rs_reel_gauge *g, int N)
+{
+  memset(g, 0, sizeof *g);
+  g->cap = 2;
+  for (int n = 0; n < N; n = gauge_next(n)) ++g->cap;
+  g->layers = malloc((size_t)g->cap * sizeof(int));
+  g->shortfall = malloc((size_t)g->cap * sizeof(double));
+  g->radius = malloc((size_t)N * sizeof(double));
+  if (!g->layers || !g->shortfall || !g->radius) {
+    rs_reel_gauge_free(g);
+    return RS_ERROR(RS_ERR_MEMORY, "wound radius: out of memory (%d layers)", N);
+  }
+  g->layers[0] = 0;
+  g->shortfall[0] = 0.0;
+  g->n = 1;
+  return RS_OK;
+}
+
+void rs_reel_gauge_free(rs_reel_gauge *g)
+{
+  free(g->layers);
+  free(g->shortfall);
+  free(g->radius);
+  g->layers = NULL;
+  g->shortfall = g->radius = NULL;
+}
+
+rs_status rs_reel_gauge_record(rs_reel_gauge *g, const rs_problem *pb, int n, double core_pressure,
+                               const double *sigma_r, const double *film, int force)
+{
+  if (n <= g->layers[g->n - 1] || (!force && n < gauge_next(g->layers[g->n - 1]))) return RS_OK;
+  while (g->n > 1 && g->layers[g->n - 1] >= n) g->n--; /* a rewind (adaptive nip) */
+  if (g->n == g->cap) return RS_OK;
+  rs_status st = rs_reel_deformed_radius(pb, core_pressure, sigma_r, film, n, g->radius);
+  if (st) return st;
+  g->layers[g->n] = n;
+  g->shortfall[g->n++] = pb->core.radius + n * pb->material.caliper - g->radius[n - 1];
+  return RS_OK;
+}
+
+void rs_reel_gauge_rewind(rs_reel_gauge *g, int layers)
+{
+  while (g->n > 1 && g->layers[g->n - 1] > layers) g->n--;
+}
+
+/* wound[j] = r_c + (j + 1) t - shortfall(j + 1), the shortfall (core, stack, films)
+ * interpolated linearly in the layers between the states recorded */
+void rs_reel_gauge_finish(const rs_reel_gauge *g, const rs_problem *pb, int n, double *wound)
+{
+  int k = 0;
+  for (int j = 0; j < n; ++j) {
+    const int m = j + 1;
+    while (k + 2 < g->n && g->layers[k + 1] < m) ++k;
+    double s;
+    if (k + 1 >= g->n) s = g->shortfall[k];
+    else {
+      const double x = (double)(m - g->layers[k]) / (g->layers[k + 1] - g->layers[k]);
+      s = g->shortfall[k] + x * (g->shortfall[k + 1] - g->shortfall[k]);
+    }
+    wound[j] = pb->core.radius + m * pb->material.caliper - s;
+  }
+}
