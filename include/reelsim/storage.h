@@ -56,5 +56,19 @@ typedef struct rs_storage_worst {
 } rs_storage_worst;
 void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *worst);
 
+/* The figures of a stored roll (compare's table, sweep's and optimize's storage_*
+ * figures): at the end of the last stage, and the greatest over the stages (stage 0, the
+ * wound roll, included). Pa; peak_pressure is the greatest interlayer pressure or the
+ * core pressure if larger (as rs_reel_summary's). buckling_layers: the most layers at
+ * hoop-buckling risk after any stage, NaN when the rule was assessed at no stage. All NaN
+ * for NULL or an empty result. */
+typedef struct rs_storage_summary {
+  double core_pressure, peak_pressure, min_hoop;
+  double max_core_pressure, max_peak_pressure;
+  double buckling_layers;
+  double hours; /* h of storage in all */
+} rs_storage_summary;
+void rs_storage_summarize(const rs_storage_result *res, rs_storage_summary *sum);
+
 RS_END_DECLS
 #endif

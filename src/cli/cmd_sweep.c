@@ -58,7 +58,6 @@ static int prepare(sweep_state *s, const cli_args *a)
   }
   if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
     return cli_fail_status(st);
-  cli_note_storage_ignored(s->base, "sweep");
   for (int k = 0; k < s->n_vary; ++k)
     if ((st = sweep_vary_check(a->scene, a->n_sets, a->sets, &s->vary[k])) != RS_OK)
       return cli_fail_status(st);
@@ -105,7 +104,7 @@ static int write_files(const sweep_state *s, const cli_args *a)
       .words = words,
       .n_runs = n,
       .values = s->plan.points,
-      .n_figures = SWEEP_N_FIGURES,
+      .n_figures = sweep_figure_count(rs_scene_problem(s->base)),
       .figure_names = names,
       .figure_units = units,
       .figure_help = help,

@@ -20,8 +20,22 @@ typedef enum sweep_figure {
   SWEEP_FIG_BUCKLING_LAYERS, /* layers at hoop-buckling risk (rs_defects_assess) */
   SWEEP_FIG_WALL_SECONDS,    /* s, wall-clock time of the run */
   SWEEP_FIG_STATUS,          /* 0 ok, 2 refused, 3 solver failed, 1 other */
+  /* after the storage stages (docs/storage.md; NaN when the scene has none) */
+  SWEEP_FIG_STORAGE_CORE_PRESSURE,     /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_PEAK_PRESSURE,     /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_MIN_SIGMA_THETA,   /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_MAX_CORE_PRESSURE, /* Pa, the greatest at the end of any stage */
+  SWEEP_FIG_STORAGE_MAX_PEAK_PRESSURE, /* Pa, the greatest at the end of any stage */
+  SWEEP_FIG_STORAGE_BUCKLING_LAYERS,   /* the most layers at buckling risk after any stage */
   SWEEP_N_FIGURES
 } sweep_figure;
+
+/* The figures of the winding alone: those a scene without storage stages has (a sweep
+ * file of such a scene holds these only, as before storage was wound). */
+enum { SWEEP_N_WIND_FIGURES = SWEEP_FIG_STATUS + 1 };
+
+/* SWEEP_N_FIGURES when the problem has storage stages, else SWEEP_N_WIND_FIGURES. */
+int sweep_figure_count(const rs_problem *problem);
 
 typedef struct sweep_figure_info {
   const char *name; /* "core_pressure": the HDF5 dataset, the CSV column, optimize's FIGURE */
@@ -41,7 +55,9 @@ void sweep_figure_names(char *buf, size_t size);
  * moduli; may be NULL when st != RS_OK). A failed run (st != RS_OK, or a summary figure
  * that is not a finite number: status 3) has NaN for every figure but status and
  * wall_seconds. buckling_layers is NaN when the rule cannot be assessed (no
- * E_theta or radial law: docs/defects.md). Returns RS_OK, or the defect assessment's
+ * E_theta or radial law: docs/defects.md). A problem with storage stages has them wound
+ * here (rs_storage_run) into the storage_* figures, their time in wall_seconds; a storage
+ * run that fails leaves the winding's figures and sets the status. Returns RS_OK, or the defect assessment's
  * failure (RS_ERR_MEMORY; buckling_layers is then NaN, the other figures are filled). */
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
                                 rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES]);
