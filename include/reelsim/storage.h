@@ -70,5 +70,26 @@ typedef struct rs_storage_summary {
 } rs_storage_summary;
 void rs_storage_summarize(const rs_storage_result *res, rs_storage_summary *sum);
 
+/* By name, for a foreign-function interface (Python's ctypes) that does not mirror the
+ * structs (storage/access.c). rs_storage_result_array: "hours", "temperature",
+ * "humidity", "core_pressure" (S values) or "sigma_r", "sigma_theta" (S x N, row-major);
+ * NULL and *n = 0 for another name. rs_storage_result_defects: stage s's defect report. */
+int rs_storage_result_stages(const rs_storage_result *res);
+const double *rs_storage_result_array(const rs_storage_result *res, const char *name, int *n);
+const rs_defect_report *rs_storage_result_defects(const rs_storage_result *res, int s);
+/* A defect report's figure "<rule>/<name>" as a run file's /defects/<rule> attribute of
+ * that name has it ("core/ratio", "hoop_buckling/min_margin", ...); "<rule>/verdict" the
+ * verdict's rs_defect_verdict value. NaN for an unknown name. */
+double rs_defect_report_value(const rs_defect_report *rep, const char *name);
+/* rs_defects_assess with the problem's limits (rs_defect_limits_from_problem). */
+rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result *res,
+                                rs_defect_report **out);
+/* A result's stress history (record.history_every): the stages (0 without), and
+ * "radius" (S values) or "sigma_r", "sigma_theta" (S x N) by name; the layers wound at
+ * each stage. */
+int rs_reel_result_stages(const rs_reel_result *res);
+const double *rs_reel_result_stage_array(const rs_reel_result *res, const char *name, int *n);
+const int *rs_reel_result_stage_layers(const rs_reel_result *res, int *n);
+
 RS_END_DECLS
 #endif
