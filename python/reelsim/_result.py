@@ -29,6 +29,17 @@ class Result:
                           /final_at_speed/sigma_r; sigma_r is then the roll at rest)
     at_speed_sigma_theta  Pa, hoop stress with the roll spinning
     at_speed_core_pressure  Pa, core pressure with the roll spinning
+
+    Beyond the final profile (None, {} when absent):
+    defects   {rule: {"verdict": "ok" | "risk" | "present" | "not assessed", figures...}},
+              the rules of docs/defects.md on the final reel, named as a run file's
+              /defects/<rule> ("hoop_compression", "hoop_buckling", "pressure",
+              "interlayer_slip", "core")
+    storage   a reelsim.Storage: the roll through the scene's storage stages
+              (docs/storage.md), None when the scene has none
+    history   a reelsim.History: the roll at stages of the winding
+              (output.history_every), None without
+    name      the run's name in a compare file ("2-lo"), else ""
     """
 
     radius: np.ndarray
@@ -46,6 +57,10 @@ class Result:
     at_speed_sigma_r: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_core_pressure: float = float("nan")
+    defects: dict = field(default_factory=dict)
+    storage: object = None
+    history: object = None
+    name: str = ""
 
     @property
     def layers(self):

@@ -14,6 +14,7 @@ import numpy as np
 from . import _lib
 from ._errors import Error, InputError, SolverError
 from ._result import Result
+from . import _stored
 
 _ARRAYS = ("radius", "sigma_r", "sigma_theta", "wound_on_tension", "web_tension", "nip_load",
            "air_film", "air_film_entrained", "at_speed_sigma_r", "at_speed_sigma_theta")
@@ -116,7 +117,10 @@ def run(scene, sets=None, *, name=None):
         if not _lib.rs_reel_result_finite(res, ctypes.byref(what)):
             raise SolverError(f"the {what.value.decode()} is not a finite number", "solver")
         a = {k: _copy(res, k) for k in _ARRAYS}
-        return Result(radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
+        more = _stored.extras(sc, res, int(a["radius"].shape[0]),
+                              lambda st: _raise(st, _last_message()))
+        return Result(**more,
+                      radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
                       pressure=0.0 - a["sigma_r"],  # as the HDF5 file: +0 where sigma_r = +0
                       wound_on_tension=a["wound_on_tension"],
                       core_pressure=float(_lib.rs_reel_result_scalar(res, b"core_pressure")),
