@@ -158,6 +158,10 @@ int cli_sweep(const cli_args *a)
   if (root && st != RS_OK) code = cli_fail_status(st);
   if ((code = sweep_mpi_agree(code)) != CLI_EXIT_OK) goto done;
 
+  if (!a->quiet && root && sweep_mpi_size() == 2) /* docs/scale.md */
+    fprintf(stderr, "reelsim: note: under mpirun rank 0 only hands out the runs: -n 2 winds "
+                    "them on one rank, slower than one process (--threads); give -n P+1 for P "
+                    "winding ranks\n");
   if (!a->quiet && root)
     printf("sweep: %d run%s of %s (%d key%s)\n", s.plan.n_runs, s.plan.n_runs == 1 ? "" : "s",
            a->scene, s.n_vary, s.n_vary == 1 ? "" : "s");
