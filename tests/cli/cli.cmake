@@ -137,3 +137,4 @@ rs_cli_test(storage_compare_table 0 [[after storage +hours +core P]]
             --set winding.final_radius=0.1)
 rs_cli_script(storage_everywhere storage_everywhere.sh ${CASES}/pet-storage.yaml)
 rs_cli_script(compare_variants compare_variants.sh ${CASES}/pet-storage.yaml)
+rs_cli_script(plot_readable plot_readable.sh ${CASES})
