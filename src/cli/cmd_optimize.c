@@ -287,6 +287,21 @@ int cli_optimize(const cli_args *a)
       if (st != RS_OK) code = cli_fail_status(st);
     }
   }
+  if (code < 0) { /* a storage figure asked of a scene without storage stages: never met */
+    rs_scene *base = NULL;
+    if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK &&
+        sweep_figure_count(rs_scene_problem(base)) == SWEEP_N_WIND_FIGURES) {
+      int q[64], nq = 0;
+      q[nq++] = p.objective;
+      for (int j = 0; j < p.n_cons && nq < 64; ++j) q[nq++] = p.cons[j].quantity;
+      for (int k = 0; k < nq && code < 0; ++k)
+        if (q[k] >= SWEEP_N_WIND_FIGURES && q[k] < SWEEP_N_FIGURES)
+          code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
+                          opt_figure_name(q[k]), a->scene);
+    }
+    rs_error_clear();
+    rs_scene_destroy(&base);
+  }
   if (code >= 0) goto done;
 
   cli_signals sig;

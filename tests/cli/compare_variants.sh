@@ -29,6 +29,18 @@ assert "rating: 4000000" in scene or "rating: 4e6" in scene or "4.0e+06" in scen
 assert abs(f["runs/1-base/final/core_pressure"][()] - f["runs/4-newsprint-rider/final/core_pressure"][()]) > 0
 PY
 
+# --json: each variant's run names its variant and carries its storage
+run "$bin" compare "$scene" --variant 'lo: winding.tension=100' --set winding.final_radius=0.1 \
+  -o "$tmp/j.h5" --json
+[ "$got" = 0 ] || fail "compare --json: exit $got"
+printf '%s\n' "$out" | grep -v '^exit status' | "$py" -c '
+import json, sys
+j = json.loads(sys.stdin.read())
+r = j["runs"][0]
+assert r["name"] == "1-lo" and r["variant"] == "lo: winding.tension=100", r["name"]
+assert r["storage"]["stages"] == 5 and r["storage"]["core_pressure"][0] == r["core_pressure"]
+' || fail "compare --json of a variant"
+
 # the base alone is a compare of one run; a variant's bad key names the variant
 run "$bin" compare "$scene" --variant 'only' --set winding.final_radius=0.1 -o "$tmp/one.h5" -q
 [ "$got" = 0 ] && [ -f "$tmp/one.h5" ] || fail "one variant: exit $got"

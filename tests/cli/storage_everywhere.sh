@@ -92,4 +92,10 @@ run "$bin" optimize "$cases/newsprint-rider.yaml" "${small[@]}" --vary winding.t
   --minimize core_pressure -o "$tmp/best2.yaml" -q
 "$py" -c 'import h5py,sys; assert "storage_core_pressure" not in h5py.File(sys.argv[1])["optimize/figures"]' \
   "$tmp/best2.h5" || fail "storage figures in the history of a scene without stages"
+# a storage figure of a scene without stages is refused before anything is wound
+run "$bin" optimize "$cases/newsprint-rider.yaml" "${small[@]}" --vary winding.tension=200:400 \
+  --minimize core_pressure --subject-to 'storage_core_pressure<=1e6' -o "$tmp/best3.yaml"
+[ "$got" = 2 ] || fail "storage figure without stages: exit $got"
+has 'storage_core_pressure: .*newsprint-rider.yaml has no storage stages'
+[ -e "$tmp/best3.h5" ] && fail "a refused optimize wrote its history"
 echo PASS
