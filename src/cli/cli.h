@@ -39,5 +39,7 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr);
  * storage stages (storage[i] NULL). */
 void cli_print_compare_storage(FILE *out, int n, const char (*names)[256],
                                const rs_storage_result *const *storage);
+/* warnings.c: the scene's slip warnings on stderr ("reelsim: warning: ..."), one a line */
+void cli_scene_warnings(const rs_scene *scene);
 
 #endif

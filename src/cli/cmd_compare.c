@@ -58,7 +58,10 @@ static int load_all(compare_state *c)
   for (int i = 0; i < c->n; ++i) {
     const compare_run *r = &c->runs.run[i];
     rs_status st = rs_scene_load(r->scene, r->n_sets, r->sets, &c->scenes[i]);
-    if (st == RS_OK) continue;
+    if (st == RS_OK) {
+      cli_scene_warnings(c->scenes[i]);
+      continue;
+    }
     if (r->variant) rs_error_wrap("--variant '%s'", r->variant);
     int k = cli_fail_status(st);
     /* bad input decides the status; an I/O or memory failure only if there is none */

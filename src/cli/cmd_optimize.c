@@ -303,6 +303,10 @@ int cli_optimize(const cli_args *a)
     rs_scene_destroy(&base);
   }
   if (code >= 0) goto done;
+  rs_scene *base = NULL;
+  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK) cli_scene_warnings(base);
+  rs_error_clear();
+  rs_scene_destroy(&base);
 
   cli_signals sig;
   cli_signals_install(&sig);
