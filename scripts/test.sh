@@ -6,6 +6,8 @@
 #   3. the scene loader fuzzed with libFuzzer for 60 s (build-fuzz/, clang; scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+echo "reelsim test.sh: the three passes take about 15-20 minutes on 2 cores (setup.sh's first"
+echo "build longer); a failure stops it at once"
 bash scripts/setup.sh
 echo "== tests (build/) =="
 (cd build && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)

@@ -145,9 +145,13 @@ void rs_defect_report_destroy(rs_defect_report **rep);
  * "starring.margin_min", "starring.margin_radius", "starring.packet_margin",
  * "starring.strength_margin", "starring.mode", "starring.zone_from_core",
  * "starring.zone_to_core", "slip.layers", "slip.margin_min", "slip.margin_radius",
- * "slip.capstan_layers"; NaN for an unknown name or one not assessed. */
+ * "slip.capstan_layers", "hoop_compression.layers", "hoop_compression.min_sigma_theta",
+ * "hoop_compression.min_sigma_theta_radius", "pressure.max_pressure",
+ * "pressure.max_pressure_radius", "pressure.limit", "pressure.ratio", "core.core_pressure",
+ * "core.rating", "core.ratio"; NaN for an unknown name or one not assessed. */
 double rs_defect_report_value(const rs_defect_report *rep, const char *name);
-/* "starring.verdict", "starring.criterion", "starring.interlayers", "slip.verdict"; ""
+/* "starring.verdict", "starring.criterion", "starring.interlayers", "slip.verdict",
+ * "hoop_compression.verdict", "pressure.verdict", "core.verdict"; ""
  * for an unknown name. */
 const char *rs_defect_report_text(const rs_defect_report *rep, const char *name);
 

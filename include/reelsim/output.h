@@ -23,16 +23,27 @@ rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
 /* CSV export (docs/output.md): writes DIR/<name>-profile.csv (layer, radius_m, sigma_r_Pa,
  * sigma_theta_Pa, pressure_Pa, wound_on_tension_N_per_m) and DIR/<name>-wot.csv (radius_m,
  * web_tension_N_per_m, nip_load_N_per_m, wound_on_tension_N_per_m): a header line, one row
- * per layer, %.17g; and when the result has history stages, DIR/<name>-history.csv (stage,
+ * per layer, each number the shortest that reads back as the same double; and when the result has history stages, DIR/<name>-history.csv (stage,
  * layers_wound, roll_radius_m, layer, radius_m, sigma_r_Pa, sigma_theta_Pa: one row per
  * wound layer per stage). Each file goes to a temporary that is renamed into place only
  * when all are complete. DIR must be an existing, writable directory (RS_ERR_INPUT). */
 rs_status rs_output_write_csv(const char *dir, const char *name, const rs_reel_result *res);
+/* The same, and with a storage result (rs_storage_run; NULL: exactly rs_output_write_csv)
+ * also DIR/<name>-storage.csv (stage, hours, temperature_C, humidity_pct, core_pressure_Pa,
+ * layer, radius_m, sigma_r_Pa, sigma_theta_Pa, pressure_Pa: one row per layer per stage,
+ * stage 0 the wound roll). Numbers in the CSV files are the shortest form that reads back
+ * as the same double. */
+rs_status rs_output_write_csv_stored(const char *dir, const char *name, const rs_reel_result *res,
+                                     const rs_storage_result *storage);
 /* The check rs_output_write_csv starts with, for callers that want it before winding. */
 rs_status rs_output_check_csv_dir(const char *dir);
 /* DIR/<name>-<which>.csv into buf (RS_ERR_INPUT when it does not fit). */
 rs_status rs_output_csv_path(const char *dir, const char *name, const char *which, char *buf,
                              size_t size);
+
+/* v in the shortest decimal form that reads back as the same double, as reelsim's CSV
+ * files write numbers ("0.07622", "150"); buf of at least 32 bytes. Returns buf. */
+const char *rs_output_shortest(char *buf, double v);
 
 /* The check every writer starts with, for callers that want it before a long run:
  * RS_ERR_IO naming `path` when its directory is missing, not a directory or not
@@ -50,6 +61,14 @@ typedef struct rs_output_run {
  * /runs/<rs_output_run_name(i, n)>, and /summary with the key figures of every run, in
  * order. */
 rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *runs);
+/* The same with each run's storage stages (storage[i], rs_storage_run, or NULL: none) under
+ * /runs/<name>/storage as in a run file, and run i named names[i] when names is not NULL
+ * (a variant's name: the group "<i+1>-<name>") instead of by its scene file. The
+ * /summary gains the storage_* figures (NaN for a run without stages) when a run has them.
+ * storage NULL and names NULL: exactly rs_output_write_compare. */
+rs_status rs_output_write_compare_stored(const char *path, int n, const rs_output_run *runs,
+                                         const rs_storage_result *const *storage,
+                                         const char *const *names);
 
 /* The group name of run i (0-based) of n: "<i+1>-<scene file name without directory and
  * extension>", the number zero-padded to the width of n ("01-rider" .. "12-taper") so
@@ -92,7 +111,7 @@ typedef struct rs_output_sweep {
 rs_status rs_output_write_sweep(const char *path, const rs_output_sweep *sw);
 
 /* The same as CSV, staged likewise: a header line (the keys, then the figures), one row
- * per run; numbers as %.17g, a word-valued key as its word, a NaN figure as an empty field. */
+ * per run; numbers in their shortest round-trip form, a word-valued key as its word, a NaN figure as an empty field. */
 rs_status rs_output_write_sweep_csv(const char *path, const rs_output_sweep *sw);
 
 RS_END_DECLS

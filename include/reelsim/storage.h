@@ -56,5 +56,36 @@ typedef struct rs_storage_worst {
 } rs_storage_worst;
 void rs_storage_worst_stages(const rs_storage_result *res, rs_storage_worst *worst);
 
+/* The figures of a stored roll (compare's table, sweep's and optimize's storage_*
+ * figures): at the end of the last stage, and the greatest over the stages (stage 0, the
+ * wound roll, included). Pa; peak_pressure is the greatest interlayer pressure or the
+ * core pressure if larger (as rs_reel_summary's). starring_layers: the most layers at
+ * starring risk after any stage, NaN when the rule was assessed at no stage. All NaN
+ * for NULL or an empty result. */
+typedef struct rs_storage_summary {
+  double core_pressure, peak_pressure, min_hoop;
+  double max_core_pressure, max_peak_pressure;
+  double starring_layers;
+  double hours; /* h of storage in all */
+} rs_storage_summary;
+void rs_storage_summarize(const rs_storage_result *res, rs_storage_summary *sum);
+
+/* By name, for a foreign-function interface (Python's ctypes) that does not mirror the
+ * structs (storage/access.c). rs_storage_result_array: "hours", "temperature",
+ * "humidity", "core_pressure" (S values) or "sigma_r", "sigma_theta" (S x N, row-major);
+ * NULL and *n = 0 for another name. rs_storage_result_defects: stage s's defect report. */
+int rs_storage_result_stages(const rs_storage_result *res);
+const double *rs_storage_result_array(const rs_storage_result *res, const char *name, int *n);
+const rs_defect_report *rs_storage_result_defects(const rs_storage_result *res, int s);
+/* rs_defects_assess with the problem's limits (rs_defect_limits_from_problem). */
+rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result *res,
+                                rs_defect_report **out);
+/* A result's stress history (record.history_every): the stages (0 without), and
+ * "radius" (S values) or "sigma_r", "sigma_theta" (S x N) by name; the layers wound at
+ * each stage. */
+int rs_reel_result_stages(const rs_reel_result *res);
+const double *rs_reel_result_stage_array(const rs_reel_result *res, const char *name, int *n);
+const int *rs_reel_result_stage_layers(const rs_reel_result *res, int *n);
+
 RS_END_DECLS
 #endif

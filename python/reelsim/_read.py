@@ -52,26 +52,16 @@ def read(path):
                       defects=_defects(f))
 
 
-# Result.defects keys -> /defects attributes (docs/output.md)
-_H5_NAMES = {"margin_min": "min_margin", "margin_radius": "min_margin_radius"}
-
-
 def _defects(f):
-    """The starring and slip verdicts of /defects as Result.defects ({} when the file
-    predates the starring rule)."""
-    if "defects/starring" not in f or "defects/interlayer_slip" not in f:
-        return {}
-    from ._run import _SLIP, _STARRING
+    """Result.defects from the file's /defects groups ({} when it has none)."""
+    from ._stored import defects_from_file
 
-    def group(g, nums, texts):
+    def number(g, k):
         a = f[g].attrs
-        out = {k: float(a[_H5_NAMES.get(k, k)]) if _H5_NAMES.get(k, k) in a else float("nan")
-               for k in nums}
-        out.update({k: _text(a[k]) if k in a else "" for k in texts})
-        return out
+        return float(a[k]) if k in a else float("nan")
 
-    star = group("defects/starring", _STARRING, ("verdict", "criterion", "interlayers"))
-    slip = group("defects/interlayer_slip", _SLIP, ("verdict",))
-    if star["criterion"] in ("", "none") and star["verdict"] != "not assessed":
-        star["criterion"] = "none"
-    return {"starring": star, "slip": slip}
+    def text(g, k):
+        a = f[g].attrs
+        return _text(a[k]) if k in a else ""
+
+    return defects_from_file(lambda g: g.lstrip("/") in f, number, text)

@@ -30,13 +30,19 @@ class Result:
     at_speed_sigma_theta  Pa, hoop stress with the roll spinning
     at_speed_core_pressure  Pa, core pressure with the roll spinning
 
-    defects           the starring and cinching verdicts (docs/defects.md):
-                      {"starring": {"verdict", "criterion", "layers", "margin_min",
-                      "margin_radius", "packet_margin", "strength_margin", "mode",
-                      "zone_from_core", "zone_to_core", "interlayers"},
-                      "slip": {"verdict", "layers", "margin_min", "margin_radius",
-                      "capstan_layers"}}; NaN / "" where not assessed; {} from a file
-                      written before the starring rule
+    Beyond the final profile (None, {} when absent):
+    defects   the verdicts of docs/defects.md on the final reel, {rule: {"verdict": "ok" |
+              "risk" | "present" | "not assessed", figures...}} for the rules "starring"
+              (figures "criterion", "layers", "margin_min", "margin_radius",
+              "packet_margin", "strength_margin", "mode", "zone_from_core", "zone_to_core",
+              "interlayers"), "slip" ("layers", "margin_min", "margin_radius",
+              "capstan_layers"), "hoop_compression", "pressure", "core" (figures as the
+              run file's /defects/<rule> attributes); NaN / "" where not assessed
+    storage   a reelsim.Storage: the roll through the scene's storage stages
+              (docs/storage.md), None when the scene has none
+    history   a reelsim.History: the roll at stages of the winding
+              (output.history_every), None without
+    name      the run's name in a compare file ("2-lo"), else ""
     """
 
     radius: np.ndarray
@@ -55,6 +61,9 @@ class Result:
     at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_core_pressure: float = float("nan")
     defects: dict = field(default_factory=dict)
+    storage: object = None
+    history: object = None
+    name: str = ""
 
     @property
     def layers(self):

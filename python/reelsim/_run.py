@@ -14,6 +14,7 @@ import numpy as np
 from . import _lib
 from ._errors import Error, InputError, SolverError
 from ._result import Result
+from . import _stored
 
 _ARRAYS = ("radius", "sigma_r", "sigma_theta", "wound_on_tension", "web_tension", "nip_load",
            "air_film", "air_film_entrained", "at_speed_sigma_r", "at_speed_sigma_theta")
@@ -71,31 +72,6 @@ def _copy(res, name):
     return np.ctypeslib.as_array(ptr, shape=(n.value,)).copy()
 
 
-_STARRING = ("layers", "margin_min", "margin_radius", "packet_margin", "strength_margin",
-             "mode", "zone_from_core", "zone_to_core")
-_SLIP = ("layers", "margin_min", "margin_radius", "capstan_layers")
-
-
-def _defects(sc, res):
-    rep = ctypes.c_void_p()
-    if _lib.rs_scene_assess_defects(sc, res, ctypes.byref(rep)) != _lib.RS_OK:
-        _raise(_lib.rs_error_status(), _last_message())
-    try:
-        def v(k):
-            return float(_lib.rs_defect_report_value(rep, k.encode()))
-
-        def t(k):
-            return _lib.rs_defect_report_text(rep, k.encode()).decode()
-
-        star = {k: v("starring." + k) for k in _STARRING}
-        star.update({k: t("starring." + k) for k in ("verdict", "criterion", "interlayers")})
-        slip = {k: v("slip." + k) for k in _SLIP}
-        slip["verdict"] = t("slip.verdict")
-        return {"starring": star, "slip": slip}
-    finally:
-        _lib.rs_defect_report_destroy(ctypes.byref(rep))
-
-
 def run(scene, sets=None, *, name=None):
     """Winds a scene and returns its Result.
 
@@ -141,7 +117,10 @@ def run(scene, sets=None, *, name=None):
         if not _lib.rs_reel_result_finite(res, ctypes.byref(what)):
             raise SolverError(f"the {what.value.decode()} is not a finite number", "solver")
         a = {k: _copy(res, k) for k in _ARRAYS}
-        return Result(radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
+        more = _stored.extras(sc, res, int(a["radius"].shape[0]),
+                              lambda st: _raise(st, _last_message()))
+        return Result(**more,
+                      radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
                       pressure=0.0 - a["sigma_r"],  # as the HDF5 file: +0 where sigma_r = +0
                       wound_on_tension=a["wound_on_tension"],
                       core_pressure=float(_lib.rs_reel_result_scalar(res, b"core_pressure")),
@@ -152,8 +131,7 @@ def run(scene, sets=None, *, name=None):
                       at_speed_sigma_r=a["at_speed_sigma_r"],
                       at_speed_sigma_theta=a["at_speed_sigma_theta"],
                       at_speed_core_pressure=float(
-                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")),
-                      defects=_defects(sc, res))
+                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")))
     finally:
         _lib.rs_reel_result_destroy(ctypes.byref(res))
         _lib.rs_scene_destroy(ctypes.byref(sc))

@@ -80,6 +80,10 @@ void cli_args_free(cli_args *a)
   free(a->vary);
   free(a->scenes);
   free(a->subject_to);
+  free(a->variants);
+  free(a->variant_of);
+  a->variants = NULL;
+  a->variant_of = NULL;
   free(a->owned);
   a->sets = NULL;
   a->vary = NULL;
@@ -119,6 +123,10 @@ static int take(cli_args *a, const cli_option *o, const char *typed, const char 
   case CLI_OPT_SUBJECT_TO: a->subject_to[a->n_subject_to++] = arg; break;
   case CLI_OPT_TARGET_PROFILE: a->target_profile = arg; break;
   case CLI_OPT_HISTORY: a->history = arg; break;
+  case CLI_OPT_VARIANT:
+    a->variant_of[a->n_variants] = a->n_scenes - 1;
+    a->variants[a->n_variants++] = arg;
+    break;
   case CLI_OPT_SAMPLE: a->sample = arg; break;
   case CLI_OPT_PROFILES: a->profiles = 1; break;
   case CLI_OPT_THREADS: {
@@ -154,7 +162,9 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
   a->scenes = calloc((size_t)argc + 1, sizeof *a->scenes);
   a->vary = calloc((size_t)argc + 1, sizeof *a->vary);
   a->subject_to = calloc((size_t)argc + 1, sizeof *a->subject_to);
-  if (!a->sets || !a->scenes || !a->vary || !a->subject_to) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  a->variants = calloc((size_t)argc + 1, sizeof *a->variants);
+  a->variant_of = calloc((size_t)argc + 1, sizeof *a->variant_of);
+  if (!a->sets || !a->scenes || !a->vary || !a->subject_to || !a->variants || !a->variant_of) return cli_fail(CLI_EXIT_OTHER, "out of memory");
   tables t;
   build(&t);
   /* getopt sees the command's name as its argv[0] */

@@ -29,6 +29,9 @@ typedef struct cli_args {
   const char **subject_to;
   const char *target_profile; /* optimize --target-profile FILE.csv */
   const char *history;  /* optimize --history FILE.h5 */
+  int n_variants;       /* compare --variant 'NAME: KEY=VALUE ...', in order */
+  const char **variants;
+  int *variant_of;      /* per variant: the index in scenes of the scene before it (-1: none) */
   int n_sets;           /* --set key.path=value, in order; run/check/compare -o adds
                            output.file=FILE last */
   const char **sets;

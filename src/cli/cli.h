@@ -40,9 +40,10 @@ void cli_fmt_stress(char *buf, size_t size, double pa);
 void cli_print_defects(FILE *out, const rs_defect_report *rep);
 /* The storage stages and the stage where each defect rule reads worst (summary_storage.c). */
 void cli_print_storage(FILE *out, const rs_storage_result *sr);
-/* A note on stderr when the scene has storage stages that `command` does not simulate
- * (only `reelsim run` does; docs/storage.md). */
-void cli_note_storage_ignored(const rs_scene *scene, const char *command);
+/* compare's table of its runs after storage (summary_storage.c): nothing when no run has
+ * storage stages (storage[i] NULL). */
+void cli_print_compare_storage(FILE *out, int n, const char (*names)[256],
+                               const rs_storage_result *const *storage);
 /* warnings.c: the scene's slip warnings on stderr ("reelsim: warning: ..."), one a line */
 void cli_scene_warnings(const rs_scene *scene);
 

@@ -13,8 +13,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli/cli.h"
+#include "cli/compare_runs.h"
+#include "cli/outdir.h"
 #include "cli/summary_json.h"
 #include "reelsim/version.h"
 #include "reelsim/clock.h"
@@ -22,6 +25,7 @@
 #include "reelsim/output.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "reelsim/storage.h"
 
 static const char default_output[] = "compare.h5";
 
@@ -40,22 +44,25 @@ typedef struct compare_state {
   rs_reel_job *jobs;
   rs_reel_summary *sums;
   rs_defect_report **defects; /* each successful run's verdicts */
+  rs_storage_result **storage; /* each run's storage stages, NULL without */
   char (*names)[256];
   const char *output;
+  compare_runs runs;           /* the scenes and variants */
 } compare_state;
 
 /* Loads every scene; prints the error of each bad one. Returns the exit status of the
  * worst failure (2 for bad input), or CLI_EXIT_OK. */
-static int load_all(compare_state *c, const cli_args *a, int n_sets, const char **sets)
+static int load_all(compare_state *c)
 {
   int code = CLI_EXIT_OK;
   for (int i = 0; i < c->n; ++i) {
-    rs_status st = rs_scene_load(a->scenes[i], n_sets, sets, &c->scenes[i]);
+    const compare_run *r = &c->runs.run[i];
+    rs_status st = rs_scene_load(r->scene, r->n_sets, r->sets, &c->scenes[i]);
     if (st == RS_OK) {
       cli_scene_warnings(c->scenes[i]);
-      cli_note_storage_ignored(c->scenes[i], "compare");
       continue;
     }
+    if (r->variant) rs_error_wrap("--variant '%s'", r->variant);
     int k = cli_fail_status(st);
     /* bad input decides the status; an I/O or memory failure only if there is none */
     if (code != CLI_EXIT_USAGE && (k == CLI_EXIT_USAGE || code == CLI_EXIT_OK)) code = k;
@@ -100,6 +107,8 @@ static void print_table(const compare_state *c, double wall, int threads)
            rs_defect_verdict_name(d->pressure.verdict), rs_defect_verdict_name(d->slip.verdict),
            rs_defect_verdict_name(d->core.verdict));
   }
+  cli_print_compare_storage(stdout, c->n, (const char(*)[256])c->names,
+                            (const rs_storage_result *const *)c->storage);
   printf("\nwall time %.2f s in all\n", wall);
 }
 
@@ -124,6 +133,8 @@ static void print_json(const compare_state *c, double wall, int threads, const c
     if (job->status == RS_OK) {
       cli_json_null(&j, "error");
       cli_json_run_fields(&j, c->scenes[i], job->result, c->defects[i]);
+      if (c->storage[i]) cli_json_storage(&j, c->storage[i]);
+      if (c->runs.run[i].name) cli_json_string(&j, "variant", c->runs.run[i].variant);
     } else {
       cli_json_string(&j, "error", job->message);
       cli_json_string(&j, "scene", rs_scene_path(c->scenes[i]));
@@ -147,6 +158,45 @@ static int assess_all(compare_state *c)
     rs_status st = rs_defects_assess(c->jobs[i].result, &limits, &c->defects[i]);
     if (st != RS_OK) return cli_fail_status(st);
   }
+  return CLI_EXIT_OK;
+}
+
+/* The storage stages of every run that succeeded and whose scene has them (docs/storage.md):
+ * a failure is the run's failure. */
+static void store_all(compare_state *c)
+{
+  for (int i = 0; i < c->n; ++i) {
+    rs_reel_job *job = &c->jobs[i];
+    const rs_problem *p = rs_scene_problem(c->scenes[i]);
+    if (job->status != RS_OK || !rs_storage_requested(p)) continue;
+    double t0 = rs_clock_wall();
+    rs_status st = rs_storage_run(p, job->result, &c->storage[i]);
+    job->wall_seconds += rs_clock_wall() - t0;
+    if (st == RS_OK) continue;
+    job->status = st;
+    snprintf(job->message, sizeof job->message, "during storage: %s", rs_error_message());
+    job->where[0] = '\0';
+    rs_storage_result_destroy(&c->storage[i]);
+  }
+}
+
+/* compare --csv DIR: each run's CSV files, named by the run (01-taper-profile.csv, ...). */
+static int write_csv(const compare_state *c, const char *dir)
+{
+  cli_outdir made;
+  int code = cli_outdir_make("--csv", dir, &made);
+  if (code != CLI_EXIT_OK) {
+    cli_outdir_undo(&made);
+    return code;
+  }
+  rs_status st = RS_OK;
+  for (int i = 0; st == RS_OK && i < c->n; ++i)
+    st = rs_output_write_csv_stored(dir, c->names[i], c->jobs[i].result, c->storage[i]);
+  if (st != RS_OK) {
+    cli_outdir_undo(&made);
+    return cli_fail_status(st);
+  }
+  cli_outdir_free(&made);
   return CLI_EXIT_OK;
 }
 
@@ -185,7 +235,10 @@ static void free_state(compare_state *c)
   for (int i = 0; c->jobs && i < c->n; ++i) rs_reel_result_destroy(&c->jobs[i].result);
   for (int i = 0; c->scenes && i < c->n; ++i) rs_scene_destroy(&c->scenes[i]);
   for (int i = 0; c->defects && i < c->n; ++i) rs_defect_report_destroy(&c->defects[i]);
+  for (int i = 0; c->storage && i < c->n; ++i) rs_storage_result_destroy(&c->storage[i]);
   free(c->defects);
+  free(c->storage);
+  compare_runs_free(&c->runs);
   free(c->scenes);
   free(c->jobs);
   free(c->sums);
@@ -195,12 +248,7 @@ static void free_state(compare_state *c)
 int cli_compare(const cli_args *a)
 {
   double t0 = rs_clock_wall();
-  compare_state c = {.n = a->n_scenes, .output = a->output ? a->output : default_output};
-  c.scenes = calloc((size_t)c.n, sizeof *c.scenes);
-  c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
-  c.sums = calloc((size_t)c.n, sizeof *c.sums);
-  c.names = calloc((size_t)c.n, sizeof *c.names);
-  c.defects = calloc((size_t)c.n, sizeof *c.defects);
+  compare_state c = {.n = 0, .output = a->output ? a->output : default_output};
   /* every stored scene names the file it went to, as with run -o */
   const char **sets = calloc((size_t)a->n_sets + 1, sizeof *sets);
   char *out_set = NULL;
@@ -208,7 +256,7 @@ int cli_compare(const cli_args *a)
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
 
-  if (!c.scenes || !c.jobs || !c.sums || !c.names || !c.defects || !sets) {
+  if (!sets) {
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
     goto done;
   }
@@ -222,13 +270,34 @@ int cli_compare(const cli_args *a)
     snprintf(out_set, len, "output.file=%s", c.output);
     sets[n_sets++] = out_set;
   }
+  if ((code = compare_runs_make(a, n_sets, sets, &c.runs)) >= 0) {
+    fprintf(stderr, "reelsim: compare: nothing was wound\n");
+    goto done;
+  }
+  c.n = c.runs.n;
+  code = CLI_EXIT_OK;
+  c.scenes = calloc((size_t)c.n, sizeof *c.scenes);
+  c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
+  c.sums = calloc((size_t)c.n, sizeof *c.sums);
+  c.names = calloc((size_t)c.n, sizeof *c.names);
+  c.defects = calloc((size_t)c.n, sizeof *c.defects);
+  c.storage = calloc((size_t)c.n, sizeof *c.storage);
+  if (!c.scenes || !c.jobs || !c.sums || !c.names || !c.defects || !c.storage) {
+    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+    goto done;
+  }
 
-  if ((code = load_all(&c, a, n_sets, sets)) != CLI_EXIT_OK) {
+  if ((code = load_all(&c)) != CLI_EXIT_OK) {
     if (code == CLI_EXIT_USAGE) fprintf(stderr, "reelsim: compare: nothing was wound\n");
     goto done;
   }
   /* a missing output directory should not cost the whole comparison */
   rs_status st = rs_output_check_target(c.output);
+  if (st == RS_OK && a->csv_dir) {
+    struct stat sb; /* a --csv that cannot be a directory is found before the winding */
+    if (stat(a->csv_dir, &sb) == 0 && !S_ISDIR(sb.st_mode))
+      st = RS_ERROR(RS_ERR_INPUT, "--csv '%s' is not a directory", a->csv_dir);
+  }
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
@@ -237,7 +306,8 @@ int cli_compare(const cli_args *a)
   for (int i = 0; i < c.n; ++i) {
     c.jobs[i].problem = rs_scene_problem(c.scenes[i]);
     c.jobs[i].opts.progress = on_progress;
-    rs_output_run_name(i, c.n, rs_scene_path(c.scenes[i]), c.names[i], sizeof c.names[i]);
+    rs_output_run_name(i, c.n, c.runs.run[i].name ? c.runs.run[i].name : rs_scene_path(c.scenes[i]),
+                       c.names[i], sizeof c.names[i]);
   }
   if ((st = rs_reel_wind_many(c.n, c.jobs, 0, &threads)) != RS_OK) {
     code = cli_fail_status(st);
@@ -250,6 +320,7 @@ int cli_compare(const cli_args *a)
     goto done;
   }
 
+  if (!cli_signal_caught()) store_all(&c);
   code = check_jobs(&c);
   int assessed = assess_all(&c);
   if (code == CLI_EXIT_OK) code = assessed;
@@ -265,12 +336,19 @@ int cli_compare(const cli_args *a)
     code = cli_fail(CLI_EXIT_OTHER, "out of memory");
     goto done;
   }
+  const char **names = calloc((size_t)c.n, sizeof *names);
   for (int i = 0; i < c.n; ++i) runs[i] = (rs_output_run){c.scenes[i], c.jobs[i].result};
-  st = rs_output_write_compare(c.output, c.n, runs);
+  for (int i = 0; names && i < c.n; ++i) names[i] = c.runs.run[i].name;
+  st = names ? rs_output_write_compare_stored(c.output, c.n, runs,
+                                              (const rs_storage_result *const *)c.storage, names)
+             : RS_ERROR(RS_ERR_MEMORY, "out of memory");
   free(runs);
+  free(names);
   if (st != RS_OK) code = cli_fail_status(st);
-  else if (a->json) print_json(&c, rs_clock_wall() - t0, threads, c.output);
-  else if (!a->quiet) printf("output %s\n", c.output);
+  else if (a->csv_dir) code = write_csv(&c, a->csv_dir);
+  if (st != RS_OK || code != CLI_EXIT_OK) {
+  } else if (a->json) print_json(&c, rs_clock_wall() - t0, threads, c.output);
+  else if (!a->quiet) printf("output %s%s%s\n", c.output, a->csv_dir ? " and " : "", a->csv_dir ? a->csv_dir : "");
 
 done:
   free_state(&c);

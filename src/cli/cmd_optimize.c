@@ -12,6 +12,7 @@
 
 #include "cli/cli.h"
 #include "cli/signals.h"
+#include "reelsim/output.h"
 #include "reelsim/scene.h"
 #include "sweep/optimize.h"
 
@@ -55,10 +56,18 @@ static int after_each(void *user, const opt_history *h)
     printf(" %*.6g", width(p->vars[k].key), h->values[(size_t)i * (size_t)p->n_vars + (size_t)k]);
   double st = h->figures[(size_t)i * OPT_N_FIGURES + OPT_STATUS];
   int w = width(quantity_name(p, p->objective));
-  if (st != 0) printf(" %*s  %s\n", w, "-", st == 2 ? "refused" : st == 3 ? "solver failed" : "failed");
-  else
-    printf(" %*.6g  %s\n", w, opt_quantity(p, h, i, p->objective),
-           opt_feasible(p, h, i) ? "feasible" : "infeasible");
+  if (st != 0) {
+    printf(" %*s", w, "-");
+    for (int j = 0; j < p->n_cons; ++j) printf(" %*s", width(quantity_name(p, p->cons[j].quantity)), "-");
+    printf("  %s\n", st == 2 ? "refused" : st == 3 ? "solver failed" : "failed");
+  } else {
+    printf(" %*.6g", w, opt_quantity(p, h, i, p->objective));
+    /* each constraint's quantity, so that "infeasible" says by how much */
+    for (int j = 0; j < p->n_cons; ++j)
+      printf(" %*.6g", width(quantity_name(p, p->cons[j].quantity)),
+             opt_quantity(p, h, i, p->cons[j].quantity));
+    printf("  %s\n", opt_feasible(p, h, i) ? "feasible" : "infeasible");
+  }
   fflush(stdout);
   return cli_signal_caught() != 0;
 }
@@ -182,14 +191,44 @@ static int write_text(const char *path, const char *text)
 
 /* The best scene, resolved (defaults filled, overrides and the best values applied), to
  * c->output; then loaded back to be sure it stands on its own. */
+/* The best scene's title: the scene's own, then what made it the best ("..., optimized:
+ * winding.tension=133.5 for the greatest winding.tension"), so the file does not pass for
+ * the scene it came from. */
+static void best_title(const opt_problem *p, const opt_history *h, const char *old, char *buf,
+                       size_t size)
+{
+  size_t used = (size_t)snprintf(buf, size, "title=%s, optimized:", old && old[0] ? old : "reelsim scene");
+  for (int k = 0; k < p->n_vars && used < size; ++k) {
+    char num[32];
+    used += (size_t)snprintf(buf + used, size - used, "%s %s=%s", k ? "," : "", p->vars[k].key,
+                             rs_output_shortest(num, h->values[(size_t)h->best * (size_t)p->n_vars + (size_t)k]));
+  }
+  if (used < size)
+    snprintf(buf + used, size - used, " for the %s %s", p->maximize ? "greatest" : "least",
+             quantity_name(p, p->objective));
+}
+
+/* The best scene, resolved (defaults filled, overrides and the best values applied, a
+ * title that says so), to c->output; then loaded back to be sure it stands on its own. */
 static int write_best(const cli_args *a, const opt_cli *c, const opt_problem *p, const opt_history *h)
 {
   int n;
   char **sets = opt_sets_of(p, h, h->best, &n);
   if (!sets) return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  const char **all = calloc((size_t)n + 2, sizeof *all);
+  char title[1024];
   rs_scene *scene = NULL;
-  rs_status st = rs_scene_load(a->scene, n, (const char *const *)sets, &scene);
+  rs_status st = all ? rs_scene_load(a->scene, n, (const char *const *)sets, &scene)
+                     : RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (st == RS_OK) {
+    best_title(p, h, rs_scene_title(scene), title, sizeof title);
+    rs_scene_destroy(&scene);
+    memcpy(all, sets, (size_t)n * sizeof *all);
+    all[n] = title;
+    st = rs_scene_load(a->scene, n + 1, all, &scene);
+  }
   free(sets);
+  free(all);
   if (st != RS_OK) return cli_fail_status(st);
   int code = -1;
   if (write_text(c->output, rs_scene_resolved_text(scene)) != 0)
@@ -216,11 +255,16 @@ static void print_head(const opt_problem *p)
   int maxeval = p->settings.maxeval > 0 ? p->settings.maxeval : 30 * K + 30;
   printf("\n  over");
   for (int k = 0; k < K; ++k) printf(" %s in [%.10g, %.10g]", p->vars[k].key, p->vars[k].lo, p->vars[k].hi);
+  printf("\n  values rounded to");
+  for (int k = 0; k < K; ++k) printf("%s %g (%s)", k ? "," : "", opt_resolution(&p->vars[k]), p->vars[k].key);
   printf("\n  %d Latin-hypercube points, then COBYLA from the best (at most %d runs, xtol_rel %g)\n",
          n0, maxeval, p->settings.xtol_rel);
   printf("\n%4s %-6s", "run", "phase");
   for (int k = 0; k < K; ++k) printf(" %*s", width(p->vars[k].key), p->vars[k].key);
-  printf(" %*s\n", width(quantity_name(p, p->objective)), quantity_name(p, p->objective));
+  printf(" %*s", width(quantity_name(p, p->objective)), quantity_name(p, p->objective));
+  for (int j = 0; j < p->n_cons; ++j)
+    printf(" %*s", width(quantity_name(p, p->cons[j].quantity)), quantity_name(p, p->cons[j].quantity));
+  printf("\n");
 }
 
 int cli_optimize(const cli_args *a)
@@ -243,11 +287,25 @@ int cli_optimize(const cli_args *a)
       if (st != RS_OK) code = cli_fail_status(st);
     }
   }
+  if (code < 0) { /* a storage figure asked of a scene without storage stages: never met */
+    rs_scene *base = NULL;
+    if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK &&
+        sweep_figure_count(rs_scene_problem(base)) == SWEEP_N_WIND_FIGURES) {
+      int q[64], nq = 0;
+      q[nq++] = p.objective;
+      for (int j = 0; j < p.n_cons && nq < 64; ++j) q[nq++] = p.cons[j].quantity;
+      for (int k = 0; k < nq && code < 0; ++k)
+        if (q[k] >= SWEEP_N_WIND_FIGURES && q[k] < SWEEP_N_FIGURES)
+          code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
+                          opt_figure_name(q[k]), a->scene);
+    }
+    rs_error_clear();
+    rs_scene_destroy(&base);
+  }
   if (code >= 0) goto done;
   rs_scene *base = NULL;
-  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK)
-    cli_scene_warnings(base);
-  if (base) cli_note_storage_ignored(base, "optimize");
+  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK) cli_scene_warnings(base);
+  rs_error_clear();
   rs_scene_destroy(&base);
 
   cli_signals sig;
@@ -292,7 +350,9 @@ int cli_optimize(const cli_args *a)
   for (int k = 0; k < p.n_vars; ++k) print_quantity(&p, &h, h.best, OPT_N_FIGURES + k);
   printf("figures:\n");
   for (int f = 0; f < OPT_N_FIGURES; ++f)
-    if (f != OPT_STATUS && (f != OPT_MISFIT || p.target)) print_quantity(&p, &h, h.best, f);
+    if (f != OPT_STATUS && (f != OPT_MISFIT || p.target) &&
+        (f < SWEEP_N_WIND_FIGURES || f >= SWEEP_N_FIGURES || h.storage))
+      print_quantity(&p, &h, h.best, f);
   printf("wrote %s (the best scene) and %s (every run)\n", c.output, c.history);
 done:
   for (int k = 0; k < c.n_vars; ++k) sweep_vary_clear(&c.vars[k]);

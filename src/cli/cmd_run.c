@@ -226,7 +226,7 @@ int cli_run(const cli_args *a)
       goto done;
     }
     rs_scene_name(scene, stem, sizeof stem);
-    st = rs_output_write_csv(a->csv_dir, stem, res);
+    st = rs_output_write_csv_stored(a->csv_dir, stem, res, storage);
     if (st != RS_OK) cli_outdir_undo(&made);
     else cli_outdir_free(&made);
   }

@@ -59,7 +59,6 @@ static int prepare(sweep_state *s, const cli_args *a)
   if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
     return cli_fail_status(st);
   cli_scene_warnings(s->base);
-  cli_note_storage_ignored(s->base, "sweep");
   for (int k = 0; k < s->n_vary; ++k)
     if ((st = sweep_vary_check(a->scene, a->n_sets, a->sets, &s->vary[k])) != RS_OK)
       return cli_fail_status(st);
@@ -106,7 +105,7 @@ static int write_files(const sweep_state *s, const cli_args *a)
       .words = words,
       .n_runs = n,
       .values = s->plan.points,
-      .n_figures = SWEEP_N_FIGURES,
+      .n_figures = sweep_figure_count(rs_scene_problem(s->base)),
       .figure_names = names,
       .figure_units = units,
       .figure_help = help,
@@ -160,6 +159,10 @@ int cli_sweep(const cli_args *a)
   if (root && st != RS_OK) code = cli_fail_status(st);
   if ((code = sweep_mpi_agree(code)) != CLI_EXIT_OK) goto done;
 
+  if (!a->quiet && root && sweep_mpi_size() == 2) /* docs/scale.md */
+    fprintf(stderr, "reelsim: note: under mpirun rank 0 only hands out the runs: -n 2 winds "
+                    "them on one rank, slower than one process (--threads); give -n P+1 for P "
+                    "winding ranks\n");
   if (!a->quiet && root)
     printf("sweep: %d run%s of %s (%d key%s)\n", s.plan.n_runs, s.plan.n_runs == 1 ? "" : "s",
            a->scene, s.n_vary, s.n_vary == 1 ? "" : "s");

@@ -55,11 +55,20 @@ const cli_option cli_options[] = {
      "RMS difference of the final pressure profile from them"},
     {CLI_OPT_HISTORY, "history", 0, "FILE.h5", "a file name", CLI_OPTIMIZE,
      "write every run here (default: the -o name with .h5)"},
+    {CLI_OPT_VARIANT, "variant", 0, "'NAME: KEY=VALUE ...'", "'NAME: KEY=VALUE ...'", CLI_COMPARE,
+     "a run of the scene before it with these overrides (after\n"
+     "--set), named NAME, e.g. --variant 'hyp30: winding.tension.end=84';\n"
+     "separate several KEY=VALUE by spaces or ';'; 'NAME:' alone is\n"
+     "the scene as it is. A scene followed by variants runs as its\n"
+     "variants only (repeatable)"},
+    {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_COMPARE,
+     "also write each run's CSV files (as run --csv) to DIR,\n"
+     "named by the run (01-taper-profile.csv, ...)"},
     {CLI_OPT_CSV, "csv", 0, "DIR", "a directory", CLI_RUN,
      "also write DIR/<scene>-profile.csv and\n"
-     "DIR/<scene>-wot.csv, and DIR/<scene>-history.csv when the\n"
-     "scene records a history (DIR made if missing, as mkdir -p\n"
-     "does)"},
+     "DIR/<scene>-wot.csv, DIR/<scene>-history.csv when the\n"
+     "scene records a history, DIR/<scene>-storage.csv when it\n"
+     "has storage stages (DIR made if missing, as mkdir -p does)"},
     {CLI_OPT_RADIUS, "radius", 0, "R", "a roll radius in metres", CLI_NIP,
      "the roll radius (m) at which to solve the nip (required)"},
     {CLI_OPT_SET, "set", 's', "key.path=value", "key.path=value", SCENE_CMDS & ~CLI_COMPARE & ~CLI_STUDY & ~CLI_SWEEP,
@@ -127,14 +136,16 @@ const cli_command cli_commands[] = {
      "exit status: 0 the scene is good, 2 bad input\n"},
     {"compare", CLI_COMPARE, "scene file", 1,
      "reelsim compare SCENE1 SCENE2 ... [-o FILE] [--set key.path=value ...] [--quiet]\n"
-     "                         [--json]",
+     "                         [--json] [--csv DIR] [SCENE --variant 'NAME: KEY=VALUE ...' ...]",
      "wind several scenes in parallel, print their key figures\n"
      "side by side and write them all to one HDF5 file (compare.h5)",
      "Loads and checks every scene first (bad input in any: exit 2, nothing wound), winds\n"
      "them in parallel (one thread per core), prints a table of their key figures (layers,\n"
      "final radius, core pressure, peak pressure, least hoop stress, wound-on tension\n"
      "range, wall time) and writes all of them to one HDF5 file: /runs/<n>-<scene>/ per\n"
-     "scene (the layout of a run file) and /summary (docs/output.md).\n",
+     "scene (the layout of a run file) and /summary (docs/output.md). Scenes with\n"
+     "storage stages are stored too: a second table gives the figures after storage.\n"
+     "A recipe is a --variant of a scene: its name and the overrides that make it.\n",
      "If a run fails the others still finish and are reported, but no file is written.\n"
      "exit status: 0 ok, 2 bad input in any scene, 3 a run's solver failed,\n"
      "             130 interrupted, 143 terminated, 1 other\n"},

@@ -37,6 +37,7 @@ typedef enum cli_opt {
   CLI_OPT_SUBJECT_TO,
   CLI_OPT_TARGET_PROFILE,
   CLI_OPT_HISTORY,
+  CLI_OPT_VARIANT,
   CLI_N_OPTS
 } cli_opt;
 

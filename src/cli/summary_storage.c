@@ -89,11 +89,41 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
              a);
 }
 
-void cli_note_storage_ignored(const rs_scene *scene, const char *command)
+/* compare's table of the runs after storage: the end of the last stage and the worst
+ * over the stages (rs_storage_summarize), then the rules' verdicts where each reads worst. */
+void cli_print_compare_storage(FILE *out, int n, const char (*names)[256],
+                               const rs_storage_result *const *storage)
 {
-  if (!scene || !rs_storage_requested(rs_scene_problem(scene))) return;
-  fprintf(stderr,
-          "reelsim: note: %s has storage stages; `reelsim %s` winds the reel only (the stages "
-          "are simulated by `reelsim run`)\n",
-          rs_scene_path(scene), command);
+  int any = 0;
+  for (int i = 0; i < n; ++i) any |= storage[i] != NULL;
+  if (!any) return;
+  fprintf(out, "\n%-24s %7s %10s %10s %10s %10s %10s\n", "after storage", "hours", "core P",
+          "peak P", "min hoop", "max core P", "max peak P");
+  fprintf(out, "%-24s %7s %10s %10s %10s %10s %10s\n", "", "h", "kPa", "kPa", "kPa", "kPa", "kPa");
+  for (int i = 0; i < n; ++i) {
+    if (!storage[i]) {
+      fprintf(out, "%-24s -\n", names[i]);
+      continue;
+    }
+    rs_storage_summary s;
+    rs_storage_summarize(storage[i], &s);
+    fprintf(out, "%-24s %7.1f %10.2f %10.2f %10.2f %10.2f %10.2f\n", names[i], s.hours,
+            s.core_pressure / 1e3, s.peak_pressure / 1e3, s.min_hoop / 1e3,
+            s.max_core_pressure / 1e3, s.max_peak_pressure / 1e3);
+  }
+  fprintf(out, "\n%-24s %-13s %-13s %-13s %-13s %s\n", "risk in storage", "hoop stress",
+          "starring", "pressure", "slip", "core");
+  for (int i = 0; i < n; ++i) {
+    const rs_storage_result *sr = storage[i];
+    if (!sr) continue;
+    rs_storage_worst w;
+    rs_storage_worst_stages(sr, &w);
+    const rs_defect_report *const *d = (const rs_defect_report *const *)sr->defects;
+    fprintf(out, "%-24s %-13s %-13s %-13s %-13s %s\n", names[i],
+            rs_defect_verdict_name(w.hoop >= 0 ? d[w.hoop]->hoop.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.starring >= 0 ? d[w.starring]->starring.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.pressure >= 0 ? d[w.pressure]->pressure.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.slip >= 0 ? d[w.slip]->slip.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.core >= 0 ? d[w.core]->core.verdict : RS_DEFECT_NOT_ASSESSED));
+  }
 }

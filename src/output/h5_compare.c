@@ -24,6 +24,7 @@ typedef struct compare_ctx {
   int n;
   const rs_output_run *runs;
   char (*names)[256];
+  const rs_storage_result *const *storage; /* n, or NULL */
 } compare_ctx;
 
 static rs_status write_runs(hid_t file, const compare_ctx *c)
@@ -35,6 +36,7 @@ static rs_status write_runs(hid_t file, const compare_ctx *c)
     st = rs_h5_group_create(runs, c->names[i], &g);
     if (st != RS_OK) break;
     st = rs_h5_write_run(g, c->runs[i].scene, c->runs[i].result);
+    if (st == RS_OK && c->storage && c->storage[i]) st = rs_h5_write_storage(g, c->storage[i]);
     H5Gclose(g);
   }
   if (runs >= 0) H5Gclose(runs);
@@ -59,6 +61,38 @@ static const struct {
     {"wot_max", "N/m", "greatest wound-on tension T0 over the layers"},
     {"wall_seconds", "s", "wall-clock time of the winding"},
 };
+
+/* The after-storage figures (rs_storage_summarize), when any run has storage stages; NaN
+ * for a run without. col: room for N_FIGURES x n doubles. */
+static rs_status write_storage_summary(hid_t g, const compare_ctx *c, double *col)
+{
+  enum { S_CORE, S_PEAK, S_HOOP, S_MAX_CORE, S_MAX_PEAK, S_HOURS, N_S };
+  static const struct {
+    const char *name, *units, *description;
+  } sfig[N_S] = {
+      {"storage_core_pressure", "Pa", "pressure on the core after the last storage stage"},
+      {"storage_peak_pressure", "Pa", "greatest interlayer pressure after the last storage stage"},
+      {"storage_min_hoop_stress", "Pa", "least hoop stress after the last storage stage"},
+      {"storage_max_core_pressure", "Pa", "greatest core pressure after any storage stage"},
+      {"storage_max_peak_pressure", "Pa", "greatest interlayer pressure after any storage stage"},
+      {"storage_hours", "h", "hours of storage in all"},
+  };
+  int any = 0;
+  for (int i = 0; c->storage && i < c->n; ++i) any |= c->storage[i] != NULL;
+  if (!any) return RS_OK;
+  size_t n = (size_t)c->n;
+  for (size_t i = 0; i < n; ++i) {
+    rs_storage_summary s;
+    rs_storage_summarize(c->storage[i], &s);
+    double v[N_S] = {s.core_pressure, s.peak_pressure, s.min_hoop, s.max_core_pressure,
+                     s.max_peak_pressure, s.hours};
+    for (int f = 0; f < N_S; ++f) col[f * n + i] = v[f];
+  }
+  rs_status st = RS_OK;
+  for (int f = 0; st == RS_OK && f < N_S; ++f)
+    st = rs_h5_write_1d(g, sfig[f].name, col + f * n, n, sfig[f].units, sfig[f].description);
+  return st;
+}
 
 static rs_status write_summary(hid_t file, const compare_ctx *c)
 {
@@ -94,6 +128,7 @@ static rs_status write_summary(hid_t file, const compare_ctx *c)
   for (int f = 0; st == RS_OK && f < N_FIGURES; ++f)
     st = rs_h5_write_1d(g, figures[f].name, col + f * n, n, figures[f].units,
                         figures[f].description);
+  if (st == RS_OK) st = write_storage_summary(g, c, col);
 done:
   if (g >= 0) H5Gclose(g);
   free(col);
@@ -115,6 +150,13 @@ static rs_status build_compare(hid_t file, const void *ctx)
 
 rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *runs)
 {
+  return rs_output_write_compare_stored(path, n, runs, NULL, NULL);
+}
+
+rs_status rs_output_write_compare_stored(const char *path, int n, const rs_output_run *runs,
+                                         const rs_storage_result *const *storage,
+                                         const char *const *names)
+{
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
   if (n < 1 || !runs) return RS_ERROR(RS_ERR_INTERNAL, "no runs to write");
   rs_status st = RS_OK;
@@ -122,12 +164,14 @@ rs_status rs_output_write_compare(const char *path, int n, const rs_output_run *
     if (!runs[i].scene || !runs[i].result)
       return RS_ERROR(RS_ERR_INTERNAL, "run %d has no scene or no result", i + 1);
     st = rs_h5_check_result(runs[i].result);
+    if (st == RS_OK && storage) st = rs_h5_check_storage(storage[i], runs[i].result);
   }
   if (st != RS_OK) return st;
-  compare_ctx c = {n, runs, malloc((size_t)n * sizeof *c.names)};
+  compare_ctx c = {n, runs, malloc((size_t)n * sizeof *c.names), storage};
   if (!c.names) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %d run names", n);
   for (int i = 0; i < n; ++i)
-    rs_output_run_name(i, n, rs_scene_path(runs[i].scene), c.names[i], sizeof c.names[i]);
+    rs_output_run_name(i, n, names && names[i] ? names[i] : rs_scene_path(runs[i].scene),
+                       c.names[i], sizeof c.names[i]);
   st = rs_h5_write_staged(path, build_compare, &c);
   free(c.names);
   return st;

@@ -8,6 +8,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
+#include "reelsim/storage.h"
 
 /* Root attributes every reelsim file has: program, version, created. */
 rs_status rs_h5_write_file_attributes(hid_t file);
@@ -19,6 +20,10 @@ rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result
 
 /* RS_ERR_INTERNAL when a result lacks an array it claims to have. */
 rs_status rs_h5_check_result(const rs_reel_result *res);
+/* /storage (docs/output.md, "Storage") under loc: the stages of a storage result. */
+rs_status rs_h5_write_storage(hid_t loc, const rs_storage_result *sr);
+/* RS_ERR_INTERNAL when a storage result does not fit the reel it stored (NULL fits). */
+rs_status rs_h5_check_storage(const rs_storage_result *sr, const rs_reel_result *res);
 
 /* Fills an in-memory file (after the file attributes) with what ctx describes. */
 typedef rs_status (*rs_h5_build_fn)(hid_t file, const void *ctx);

@@ -7,7 +7,7 @@
 #include "reelsim/output.h"
 #include "reelsim/storage.h"
 
-static rs_status write_storage(hid_t loc, const rs_storage_result *sr)
+rs_status rs_h5_write_storage(hid_t loc, const rs_storage_result *sr)
 {
   const size_t S = (size_t)sr->n_stages, n = (size_t)sr->n_layers;
   hid_t g;
@@ -41,6 +41,14 @@ static rs_status write_storage(hid_t loc, const rs_storage_result *sr)
   return st;
 }
 
+rs_status rs_h5_check_storage(const rs_storage_result *sr, const rs_reel_result *res)
+{
+  if (sr && (sr->n_stages < 1 || sr->n_layers != res->n_layers))
+    return RS_ERROR(RS_ERR_INTERNAL, "storage result of %d stages, %d layers for a reel of %d",
+                    sr->n_stages, sr->n_layers, res->n_layers);
+  return RS_OK;
+}
+
 typedef struct stored_run {
   const rs_scene *scene;
   const rs_reel_result *res;
@@ -51,7 +59,7 @@ static rs_status build_stored(hid_t file, const void *ctx)
 {
   const stored_run *run = ctx;
   rs_status st = rs_h5_write_run(file, run->scene, run->res);
-  if (st == RS_OK && run->storage) st = write_storage(file, run->storage);
+  if (st == RS_OK && run->storage) st = rs_h5_write_storage(file, run->storage);
   return st;
 }
 
@@ -62,9 +70,7 @@ rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
   if (!scene || !res) return RS_ERROR(RS_ERR_INTERNAL, "no scene or no result to write");
   rs_status st = rs_h5_check_result(res);
   if (st != RS_OK) return st;
-  if (storage && (storage->n_stages < 1 || storage->n_layers != res->n_layers))
-    return RS_ERROR(RS_ERR_INTERNAL, "storage result of %d stages, %d layers for a reel of %d",
-                    storage->n_stages, storage->n_layers, res->n_layers);
+  if ((st = rs_h5_check_storage(storage, res)) != RS_OK) return st;
   stored_run run = {scene, res, storage};
   return rs_h5_write_staged(path, build_stored, &run);
 }

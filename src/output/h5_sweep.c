@@ -9,6 +9,7 @@
 #include "output/h5_util.h"
 #include "reelsim/output.h"
 #include "util/atomic_file.h"
+#include "util/shortest.h"
 
 static rs_status check_sweep(const rs_output_sweep *sw)
 {
@@ -171,16 +172,17 @@ rs_status rs_output_write_sweep_csv(const char *path, const rs_output_sweep *sw)
   for (int k = 0; k < sw->n_keys; ++k) put(&b, "%s%s", k ? "," : "", sw->keys[k]);
   for (int f = 0; f < sw->n_figures; ++f) put(&b, ",%s", sw->figure_names[f]);
   put(&b, "\n");
+  char num[RS_SHORTEST_SIZE];
   for (int i = 0; i < sw->n_runs; ++i) {
     for (int k = 0; k < sw->n_keys; ++k) {
       double v = sw->values[(size_t)i * (size_t)sw->n_keys + (size_t)k];
       int w = sw->n_words && sw->n_words[k] > 0;
       if (w && v >= 0 && v < sw->n_words[k]) put(&b, "%s%s", k ? "," : "", sw->words[k][(int)v]);
-      else put(&b, "%s%.17g", k ? "," : "", v);
+      else put(&b, "%s%s", k ? "," : "", rs_shortest(num, v));
     }
     for (int f = 0; f < sw->n_figures; ++f) {
       double v = sw->figures[(size_t)f * (size_t)sw->n_runs + (size_t)i];
-      if (isfinite(v)) put(&b, ",%.17g", v);
+      if (isfinite(v)) put(&b, ",%s", rs_shortest(num, v));
       else put(&b, ",");
     }
     put(&b, "\n");

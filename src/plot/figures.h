@@ -13,5 +13,8 @@ rs_status plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run); /* p
  * figures (plot_sweep.c). */
 int plot_is_search_file(const plot_ctx *c);
 rs_status plot_search_figures(plot_ctx *c);
+/* <stem>-optimize.png: the objective (a figure or a varied key) at each evaluation,
+ * feasible and infeasible runs apart, the best marked (plot_optimize.c). */
+rs_status plot_optimize_history(plot_ctx *c);
 
 #endif

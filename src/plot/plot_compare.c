@@ -4,6 +4,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "reelsim/reader.h"
+
 #include "plot/plot_internal.h"
 
 typedef enum quantity { Q_PRESSURE, Q_HOOP, Q_TENSION, Q_AIR } quantity;
@@ -22,6 +24,29 @@ static const struct {
                "air film (µm)"},
 };
 
+/* Each run's material.pressure_limit (its /defects/pressure limit), dashed in the run's
+ * colour; one line when the runs share it. */
+static void limits(plot_ctx *c, const run_data *runs, int n, double scale)
+{
+  double drawn = NAN;
+  for (int i = 0; i < n; ++i) {
+    char path[PLOT_PATH], title[128];
+    double limit;
+    plot_at(path, "%s/defects/pressure", runs[i].base);
+    if (!rs_reader_exists(c->rd, path) ||
+        rs_reader_attr_double(c->rd, path, "limit", &limit) != RS_OK || !isfinite(limit) ||
+        !(limit > 0)) {
+      rs_error_clear();
+      continue;
+    }
+    if (limit == drawn) continue;
+    snprintf(title, sizeof title, "pressure limit %.4g %s (%s)", limit * scale,
+             scale < 1e-3 ? "MPa" : "kPa", runs[i].name);
+    plot_hline(c, limit * scale, plot_color(i), title);
+    drawn = limit;
+  }
+}
+
 static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
 {
   char *out = plot_path(c, figs[q].file), head[512], style[160], title[768];
@@ -31,9 +56,17 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
   if (st != RS_OK) return st;
   snprintf(head, sizeof head, "comparison of %d run%s (%s)", n, n == 1 ? "" : "s", c->stem);
   plot_title(c, head, figs[q].what);
+  /* the pressures in kPa, or MPa once any reaches 1000 kPa */
+  double top = 0.0, scale = 1e-3, f = 1.0;
+  for (int i = 0; q == Q_PRESSURE && i < n; ++i)
+    for (size_t j = 0; runs[i].p_kpa && j < runs[i].n; ++j) top = fmax(top, runs[i].p_kpa[j]);
+  if (top >= 1000.0) {
+    scale = 1e-6;
+    f = 1e-3;
+  }
   rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset ylabel '%s'\nset grid\n"
                        "set key below left Left reverse height 1.5\n",
-               figs[q].ylabel);
+               f < 1 ? "interlayer pressure P = −σr (MPa)" : figs[q].ylabel);
   if (q == Q_HOOP) rs_gp_printf(&c->gp, "set xzeroaxis linetype -1\n");
   if (q == Q_TENSION) { /* from 0: constant recipes would otherwise sit on the border */
     double t_max = 0.0;
@@ -47,16 +80,31 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
     const double *y = q == Q_PRESSURE ? d->p_kpa : q == Q_HOOP ? d->hoop_mpa
                     : q == Q_AIR    ? d->air_um : d->t0;
     if (!y) continue; /* Q_AIR: a run without air */
+    double *ys = NULL;
+    if (q == Q_PRESSURE && f < 1) { /* in MPa */
+      ys = malloc((d->n ? d->n : 1) * sizeof *ys);
+      if (!ys) {
+        st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+        break;
+      }
+      for (size_t j = 0; j < d->n; ++j) ys[j] = y[j] * f;
+      y = ys;
+    }
     snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", plot_color(i));
     snprintf(title, sizeof title, "%s: %s", d->name, d->title);
     st = plot_curve(c, d->r_mm, y, d->n, style, title, NULL);
+    free(ys);
     /* the centrifugal load: the roll spinning (/final_at_speed), dashed in the run's colour */
     const double *spin = q == Q_PRESSURE ? d->spin_p_kpa : q == Q_HOOP ? d->spin_hoop_mpa : NULL;
     if (st == RS_OK && spin) {
       snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
                plot_color(i));
       snprintf(title, sizeof title, "%s spinning (/final_at_speed)", d->name);
-      st = plot_curve(c, d->r_mm, spin, d->n, style, title, NULL);
+      double *ss = q == Q_PRESSURE && f < 1 ? malloc((d->n ? d->n : 1) * sizeof *ss) : NULL;
+      for (size_t j = 0; ss && j < d->n; ++j) ss[j] = spin[j] * f;
+      if (q == Q_PRESSURE && f < 1 && !ss) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+      else st = plot_curve(c, d->r_mm, ss ? ss : spin, d->n, style, title, NULL);
+      free(ss);
     }
     if (st == RS_OK && q == Q_TENSION) {
       snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
@@ -64,6 +112,7 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
       st = plot_curve(c, d->r_mm, d->web, d->n, style, "", NULL);
     }
   }
+  if (st == RS_OK && q == Q_PRESSURE) limits(c, runs, n, scale);
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   return st;

@@ -126,7 +126,8 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
   if (st == RS_OK) {
     rs_gp_printf(&c->gp, "set multiplot layout %d,1 title ", sx ? 2 : 1);
     rs_gp_string(&c->gp, head);
-    rs_gp_printf(&c->gp, "\nset grid\nset key top right box opaque\n"
+    /* the legends beside the frames, and the same margins so both panels share x */
+    rs_gp_printf(&c->gp, "\nset grid\nset key outside right top\nset lmargin 10\nset rmargin 34\n"
                          "set xlabel 'position across the nip x (mm)'\n"
                          "set ylabel 'contact pressure p (kPa)'\n");
     st = plot_curve(c, f.x, f.p, f.nx, "with lines linewidth 2.5 linecolor rgb '#1f77b4'",

@@ -124,7 +124,8 @@ static rs_status defect_bands(plot_ctx *c, const run_data *d, const char *rule,
 
 static void axes_radius(plot_ctx *c)
 {
-  rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset grid\nset key top right box opaque\n");
+  /* the legend below the frame: inside it covered the peak and the curves' ends */
+  rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset grid\nset key below left Left reverse\n");
 }
 
 static rs_status fig_pressure(plot_ctx *c, const run_data *d)
@@ -139,29 +140,39 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   if (st != RS_OK) return st;
   plot_title(c, d->title, "interlayer pressure in the wound reel");
   axes_radius(c);
-  rs_gp_printf(&c->gp, "set ylabel 'interlayer pressure P = −σr (kPa)'\n");
-  st = defect_bands(c, d, "interlayer_slip", "#ff7f0e", &slip);
-  if (st == RS_OK) st = history_curves(c, d, &h, -1e-3);
+  /* kPa, or MPa once the pressures reach 1000 kPa (2500 kPa reads better as 2.5 MPa) */
+  double top = d->core_kpa, f = 1.0;
+  for (size_t j = 0; j < d->n; ++j) top = fmax(top, d->p_kpa[j]);
+  const char *unit = top >= 1000.0 ? "MPa" : "kPa";
+  if (top >= 1000.0) f = 1e-3;
+  double *p = malloc((d->n ? d->n : 1) * sizeof *p), *sp = NULL, core = d->core_kpa * f;
+  if (d->spin_p_kpa) sp = malloc((d->n ? d->n : 1) * sizeof *sp);
+  if (!p || (d->spin_p_kpa && !sp)) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  for (size_t j = 0; p && j < d->n; ++j) p[j] = d->p_kpa[j] * f;
+  for (size_t j = 0; sp && j < d->n; ++j) sp[j] = d->spin_p_kpa[j] * f;
+  rs_gp_printf(&c->gp, "set ylabel 'interlayer pressure P = −σr (%s)'\n", unit);
+  if (st == RS_OK) st = defect_bands(c, d, "interlayer_slip", "#ff7f0e", &slip);
+  if (st == RS_OK) st = history_curves(c, d, &h, -1e-3 * f);
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   char style[128];
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
-  if (st == RS_OK) st = plot_curve(c, d->r_mm, d->p_kpa, d->n, style, title, NULL);
-  if (st == RS_OK && d->spin_p_kpa)
-    st = plot_curve(c, d->r_mm, d->spin_p_kpa, d->n, spin_style,
+  if (st == RS_OK) st = plot_curve(c, d->r_mm, p, d->n, style, title, NULL);
+  if (st == RS_OK && sp)
+    st = plot_curve(c, d->r_mm, sp, d->n, spin_style,
                     "spinning at the last layer's speed (/final at rest)", NULL);
   if (st == RS_OK && isfinite(d->core_r_mm)) {
-    snprintf(title, sizeof title, "core pressure %.2f kPa", d->core_kpa);
+    snprintf(title, sizeof title, "core pressure %.*f %s", f < 1 ? 3 : 2, core, unit);
     snprintf(style, sizeof style, "with points pointtype 7 pointsize 1.6 linecolor rgb '%s'",
              final_color);
-    st = plot_curve(c, &d->core_r_mm, &d->core_kpa, 1, style, title, NULL);
+    st = plot_curve(c, &d->core_r_mm, &core, 1, style, title, NULL);
   }
   char path[PLOT_PATH];
   double limit;
   plot_at(path, "%s/defects/pressure", d->base);
   if (st == RS_OK && rs_reader_exists(c->rd, path)) {
     if (rs_reader_attr_double(c->rd, path, "limit", &limit) == RS_OK && isfinite(limit)) {
-      snprintf(title, sizeof title, "pressure limit %.1f kPa", limit / 1e3);
-      plot_hline(c, limit / 1e3, "#d62728", title);
+      snprintf(title, sizeof title, "pressure limit %.*f %s", f < 1 ? 3 : 1, limit / 1e3 * f, unit);
+      plot_hline(c, limit / 1e3 * f, "#d62728", title);
     } else {
       rs_error_clear(); /* no limit recorded: the figure goes without it */
     }
@@ -170,6 +181,8 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);
+  free(p);
+  free(sp);
   return st;
 }
 
@@ -250,6 +263,11 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
 static rs_status fig_air(plot_ctx *c, const run_data *d)
 {
   if (!d->air_um) return RS_OK;
+  double most = 0.0;
+  for (size_t j = 0; j < d->n; ++j) {
+    if (d->air0_um && d->air0_um[j] > most) most = d->air0_um[j];
+    if (d->air_um[j] > most) most = d->air_um[j];
+  }
   char *out = plot_path(c, "air");
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
@@ -258,6 +276,11 @@ static rs_status fig_air(plot_ctx *c, const run_data *d)
   plot_title(c, d->title, "entrained air film under each layer");
   axes_radius(c);
   rs_gp_printf(&c->gp, "set ylabel 'air film (µm)'\nset yrange [0:*]\n");
+  if (!(most > 0.0)) { /* a flat 0 um line reads as a broken chart: say what happened */
+    plot_empty(c, "no air kept: every entrained film is below air.cutoff roughnesses");
+    rs_gp_plot_end(&c->gp);
+    return st;
+  }
   if (d->air0_um)
     st = plot_curve(c, d->r_mm, d->air0_um, d->n,
                     "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",

@@ -88,7 +88,7 @@ static rs_status fig_by_stage(plot_ctx *c, const run_data *d, const char *what, 
   if (st == RS_OK && !y) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) {
     plot_title(c, d->title, sub);
-    rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset grid\nset key top right box opaque\n"
+    rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset grid\nset key below left Left reverse\n"
                          "set ylabel '%s'\nset xzeroaxis linetype -1\n", ylabel);
     size_t idx[MAX_DRAWN];
     int m = pick(s.S, idx);
@@ -126,14 +126,30 @@ static rs_status fig_core(plot_ctx *c, const run_data *d)
   st = rs_gp_figure(&c->gp, out);
   free(out);
   if (st == RS_OK) {
-    for (size_t i = 0; i < s.S; ++i) s.core[i] *= 1e-3;
-    plot_title(c, d->title, "core pressure at the end of each storage stage");
-    rs_gp_printf(&c->gp, "set xlabel 'storage time (h)'\nset grid\nset key top right box opaque\n"
-                         "set ylabel 'core pressure (kPa)'\nset ytics nomirror\nset y2tics\n"
-                         "set y2label 'temperature (C)'\n");
+    /* kPa, or MPa from 1000 kPa up */
+    double top = 0.0, tlo = INFINITY, thi = -INFINITY;
+    for (size_t i = 0; i < s.S; ++i) {
+      top = fmax(top, s.core[i] * 1e-3);
+      tlo = fmin(tlo, s.temp[i]);
+      thi = fmax(thi, s.temp[i]);
+    }
+    const double f = top >= 1000.0 ? 1e-6 : 1e-3;
+    for (size_t i = 0; i < s.S; ++i) s.core[i] *= f;
+    plot_title(c, d->title, "core pressure after each stage's change, held to its end (steps)");
+    rs_gp_printf(&c->gp, "set xlabel 'storage time (h)'\nset grid\nset key below left Left reverse\n"
+                         "set ylabel 'core pressure (%s)'\nset ytics nomirror\nset y2tics\n"
+                         "set y2label 'temperature (C)'\n", f < 1e-3 ? "MPa" : "kPa");
+    /* the temperature off the frame: a tenth of its span (or 1 C) above and below */
+    double pad = thi > tlo ? 0.1 * (thi - tlo) : 1.0;
+    if (isfinite(tlo)) rs_gp_printf(&c->gp, "set y2range [%.10g:%.10g]\n", tlo - pad, thi + pad);
+    /* a stage changes temperature and humidity at its start (the elastic response) and
+     * holds them to its end: the value at the end of stage s is drawn from its start */
     st = plot_curve(c, s.hours, s.core, s.S,
-                    "with linespoints linewidth 2.5 pointtype 7 linecolor rgb '#1f77b4'",
-                    "core pressure", NULL);
+                    "with fsteps linewidth 2.5 linecolor rgb '#1f77b4'",
+                    "core pressure (each stage's end value from its start)", NULL);
+    if (st == RS_OK)
+      st = plot_curve(c, s.hours, s.core, s.S, "with points pointtype 7 linecolor rgb '#1f77b4'",
+                      "", NULL);
     if (st == RS_OK)
       st = plot_curve(c, s.hours, s.temp, s.S,
                       "axes x1y2 with fsteps dashtype 2 linewidth 1.5 linecolor rgb '#d62728'",

@@ -200,56 +200,6 @@ static rs_status sweep_figures(plot_ctx *c)
   return st;
 }
 
-/* The optimisation's history: the objective at each evaluation, the best marked. */
-static rs_status optimize_history(plot_ctx *c)
-{
-  char *objective = NULL, *sense = NULL, path[512];
-  if (rs_reader_attr_string(c->rd, "/optimize", "objective", &objective) != RS_OK)
-    return RS_ERROR(RS_ERR_INPUT, "'%s': /optimize has no attribute objective",
-                    rs_reader_path(c->rd));
-  if (rs_reader_attr_string(c->rd, "/optimize", "sense", &sense) != RS_OK) sense = NULL;
-  rs_error_clear();
-  snprintf(path, sizeof path, "/optimize/figures/%s", objective);
-  double *y = NULL, best = NAN;
-  size_t n = 0;
-  rs_status st = RS_OK;
-  if (rs_reader_exists(c->rd, path)) st = rs_reader_read_1d(c->rd, path, &y, &n);
-  if (st == RS_OK && rs_reader_exists(c->rd, "/optimize/best"))
-    st = rs_reader_read_scalar(c->rd, "/optimize/best", &best);
-  char *out = st == RS_OK ? plot_path(c, "optimize") : NULL;
-  if (st == RS_OK && !out) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  if (st == RS_OK) st = rs_gp_figure(&c->gp, out);
-  free(out);
-  double *x = n ? malloc(n * sizeof *x) : NULL;
-  if (st == RS_OK && n && !x) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  if (st == RS_OK) {
-    char head[512];
-    snprintf(head, sizeof head, "optimisation history (%s): %s %s", c->stem,
-             sense ? sense : "objective", objective);
-    plot_title(c, head, "every evaluation; the best one marked");
-    rs_gp_printf(&c->gp, "set grid\nset xlabel 'evaluation'\nset ylabel ");
-    rs_gp_string(&c->gp, objective);
-    rs_gp_printf(&c->gp, "\nset key below\n");
-    for (size_t i = 0; i < n; ++i) x[i] = (double)i;
-    char style[128];
-    snprintf(style, sizeof style, "with points pointtype 7 linecolor rgb '%s'", plot_color(0));
-    st = plot_curve(c, x, y, n, style, "evaluation", NULL);
-    size_t b = best >= 0 && best < (double)n ? (size_t)best : n;
-    if (st == RS_OK && b < n) {
-      snprintf(style, sizeof style, "with points pointtype 6 pointsize 3 linewidth 2 "
-                                    "linecolor rgb '%s'", plot_color(3));
-      st = plot_curve(c, &x[b], &y[b], 1, style, "best", NULL);
-    }
-    if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no evaluation of the objective");
-    rs_gp_plot_end(&c->gp);
-  }
-  free(x);
-  free(y);
-  free(objective);
-  free(sense);
-  return st;
-}
-
 int plot_is_search_file(const plot_ctx *c)
 {
   return rs_reader_exists(c->rd, "/sweep") || rs_reader_exists(c->rd, "/optimize");
@@ -259,6 +209,6 @@ rs_status plot_search_figures(plot_ctx *c)
 {
   rs_status st = RS_OK;
   if (rs_reader_exists(c->rd, "/sweep")) st = sweep_figures(c);
-  if (st == RS_OK && rs_reader_exists(c->rd, "/optimize")) st = optimize_history(c);
+  if (st == RS_OK && rs_reader_exists(c->rd, "/optimize")) st = plot_optimize_history(c);
   return st;
 }

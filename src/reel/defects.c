@@ -227,6 +227,16 @@ double rs_defect_report_value(const rs_defect_report *rep, const char *name)
       {"slip.margin_min", sl, rep->slip.margin_min},
       {"slip.margin_radius", sl, rep->slip.margin_radius},
       {"slip.capstan_layers", sl, rep->slip.capstan_layers},
+      {"hoop_compression.layers", 1, rep->hoop.layers},
+      {"hoop_compression.min_sigma_theta", 1, rep->hoop.min},
+      {"hoop_compression.min_sigma_theta_radius", 1, rep->hoop.min_radius},
+      {"pressure.max_pressure", 1, rep->pressure.max},
+      {"pressure.max_pressure_radius", 1, rep->pressure.max_radius},
+      {"pressure.limit", 1, rep->pressure.limit},
+      {"pressure.ratio", 1, rep->pressure.ratio},
+      {"core.core_pressure", 1, rep->core.pressure},
+      {"core.rating", 1, rep->core.rating},
+      {"core.ratio", 1, rep->core.ratio},
   };
   for (size_t i = 0; i < sizeof f / sizeof f[0]; ++i)
     if (strcmp(f[i].name, name) == 0) return f[i].ok ? f[i].v : NAN;
@@ -243,5 +253,8 @@ const char *rs_defect_report_text(const rs_defect_report *rep, const char *name)
   if (strcmp(name, "starring.interlayers") == 0)
     return st ? (rep->starring.bonded ? "bonded" : "slipping") : "";
   if (strcmp(name, "slip.verdict") == 0) return rs_defect_verdict_name(rep->slip.verdict);
+  if (strcmp(name, "hoop_compression.verdict") == 0) return rs_defect_verdict_name(rep->hoop.verdict);
+  if (strcmp(name, "pressure.verdict") == 0) return rs_defect_verdict_name(rep->pressure.verdict);
+  if (strcmp(name, "core.verdict") == 0) return rs_defect_verdict_name(rep->core.verdict);
   return "";
 }

@@ -25,9 +25,7 @@ rs_status rs_scene_assess_defects(const rs_scene *scene, const rs_reel_result *r
 {
   *out = NULL;
   if (!scene) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_assess_defects: no scene");
-  rs_defect_limits lim;
-  rs_defect_limits_from_problem(&scene->problem, &lim);
-  return rs_defects_assess(res, &lim, out);
+  return rs_defects_of_problem(&scene->problem, res, out);
 }
 
 const char *rs_scene_path(const rs_scene *scene) { return scene ? scene->path : ""; }

@@ -5,7 +5,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "reelsim/clock.h"
 #include "reelsim/defects.h"
+#include "reelsim/storage.h"
 
 const sweep_figure_info sweep_figures[SWEEP_N_FIGURES] = {
     [SWEEP_FIG_CORE_PRESSURE] = {"core_pressure", "Pa", "pressure on the core (compression positive)"},
@@ -17,6 +19,18 @@ const sweep_figure_info sweep_figures[SWEEP_N_FIGURES] = {
     [SWEEP_FIG_SLIP_MARGIN] = {"slip_margin", "", "least interlayer slip (cinching) margin, capacity / torque"},
     [SWEEP_FIG_WALL_SECONDS] = {"wall_seconds", "s", "wall-clock time of the run"},
     [SWEEP_FIG_STATUS] = {"status", "", "0 ok, 2 refused, 3 solver failed, 1 other"},
+    [SWEEP_FIG_STORAGE_CORE_PRESSURE] = {"storage_core_pressure", "Pa",
+                                         "pressure on the core after the last storage stage"},
+    [SWEEP_FIG_STORAGE_PEAK_PRESSURE] = {"storage_peak_pressure", "Pa",
+                                         "greatest interlayer pressure after the last storage stage"},
+    [SWEEP_FIG_STORAGE_MIN_SIGMA_THETA] = {"storage_min_sigma_theta", "Pa",
+                                           "least hoop stress after the last storage stage"},
+    [SWEEP_FIG_STORAGE_MAX_CORE_PRESSURE] = {"storage_max_core_pressure", "Pa",
+                                             "greatest core pressure after any storage stage"},
+    [SWEEP_FIG_STORAGE_MAX_PEAK_PRESSURE] = {"storage_max_peak_pressure", "Pa",
+                                             "greatest interlayer pressure after any storage stage"},
+    [SWEEP_FIG_STORAGE_STARRING_LAYERS] = {"storage_starring_layers", "",
+                                           "most layers at starring risk after any storage stage"},
 };
 
 int sweep_figure_find(const char *name)
@@ -36,6 +50,11 @@ void sweep_figure_names(char *buf, size_t size)
     used += (size_t)snprintf(buf + used, size - used, "%s%s", i ? ", " : "", sweep_figures[i].name);
 }
 
+int sweep_figure_count(const rs_problem *problem)
+{
+  return problem && rs_storage_requested(problem) ? SWEEP_N_FIGURES : SWEEP_N_WIND_FIGURES;
+}
+
 int sweep_status_code(rs_status st)
 {
   switch (st) {
@@ -44,6 +63,35 @@ int sweep_status_code(rs_status st)
   case RS_ERR_SOLVER: return 3;
   default: return 1;
   }
+}
+
+/* The stored roll's figures (rs_storage_summarize); the stages' time goes to wall_seconds. */
+static rs_status storage_figures(const rs_problem *problem, const rs_reel_result *res,
+                                 double fig[SWEEP_N_FIGURES])
+{
+  double t0 = rs_clock_wall();
+  rs_storage_result *sr = NULL;
+  rs_status st = rs_storage_run(problem, res, &sr);
+  fig[SWEEP_FIG_WALL_SECONDS] += rs_clock_wall() - t0;
+  if (st != RS_OK) {
+    fig[SWEEP_FIG_STATUS] = sweep_status_code(st);
+    rs_storage_result_destroy(&sr);
+    return RS_OK; /* a failed run, not a failed sweep */
+  }
+  rs_storage_summary sum;
+  rs_storage_summarize(sr, &sum);
+  rs_storage_result_destroy(&sr);
+  double v[] = {sum.core_pressure, sum.peak_pressure, sum.min_hoop, sum.max_core_pressure,
+                sum.max_peak_pressure};
+  int finite = 1;
+  for (int k = 0; k < 5; ++k) finite = finite && isfinite(v[k]);
+  if (!finite) { /* as the winding's: a figure must be a number */
+    fig[SWEEP_FIG_STATUS] = sweep_status_code(RS_ERR_SOLVER);
+    return RS_OK;
+  }
+  for (int k = 0; k < 5; ++k) fig[SWEEP_FIG_STORAGE_CORE_PRESSURE + k] = v[k];
+  fig[SWEEP_FIG_STORAGE_STARRING_LAYERS] = sum.starring_layers;
+  return RS_OK;
 }
 
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
@@ -76,5 +124,6 @@ rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result 
     fig[SWEEP_FIG_STARRING_LAYERS] = rep->starring.layers;
   if (rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) fig[SWEEP_FIG_SLIP_MARGIN] = rep->slip.margin_min;
   rs_defect_report_destroy(&rep);
+  if (rs_storage_requested(problem)) return storage_figures(problem, res, fig);
   return RS_OK;
 }

@@ -21,8 +21,22 @@ typedef enum sweep_figure {
   SWEEP_FIG_SLIP_MARGIN,     /* least interlayer slip (cinching) margin */
   SWEEP_FIG_WALL_SECONDS,    /* s, wall-clock time of the run */
   SWEEP_FIG_STATUS,          /* 0 ok, 2 refused, 3 solver failed, 1 other */
+  /* after the storage stages (docs/storage.md; NaN when the scene has none) */
+  SWEEP_FIG_STORAGE_CORE_PRESSURE,     /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_PEAK_PRESSURE,     /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_MIN_SIGMA_THETA,   /* Pa, at the end of the last stage */
+  SWEEP_FIG_STORAGE_MAX_CORE_PRESSURE, /* Pa, the greatest at the end of any stage */
+  SWEEP_FIG_STORAGE_MAX_PEAK_PRESSURE, /* Pa, the greatest at the end of any stage */
+  SWEEP_FIG_STORAGE_STARRING_LAYERS,   /* the most layers at starring risk after any stage */
   SWEEP_N_FIGURES
 } sweep_figure;
+
+/* The figures of the winding alone: those a scene without storage stages has (a sweep
+ * file of such a scene holds these only, as before storage was wound). */
+enum { SWEEP_N_WIND_FIGURES = SWEEP_FIG_STATUS + 1 };
+
+/* SWEEP_N_FIGURES when the problem has storage stages, else SWEEP_N_WIND_FIGURES. */
+int sweep_figure_count(const rs_problem *problem);
 
 typedef struct sweep_figure_info {
   const char *name; /* "core_pressure": the HDF5 dataset, the CSV column, optimize's FIGURE */
@@ -45,7 +59,9 @@ void sweep_figure_names(char *buf, size_t size);
  * radial law), slip_margin when the slip rule cannot (no material.friction_layer; it is
  * infinite where no torque passes through the roll): docs/defects.md. Returns RS_OK, or
  * the defect assessment's failure (RS_ERR_MEMORY; the two are then NaN, the other
- * figures are filled). */
+ * figures are filled). A problem with storage stages has them wound
+ * here (rs_storage_run) into the storage_* figures, their time in wall_seconds; a storage
+ * run that fails leaves the winding's figures and sets the status. */
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
                                 rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES]);
 

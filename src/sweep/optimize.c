@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "reelsim/clock.h"
+#include "reelsim/output.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
@@ -93,7 +94,9 @@ char **opt_sets_of(const opt_problem *p, const opt_history *h, int i, int *n)
   for (int k = 0; k < p->n_sets; ++k) sets[k] = (char *)p->sets[k];
   for (int k = 0; k < p->n_vars; ++k) {
     size_t room = strlen(p->vars[k].key) + 32;
-    snprintf(s, room, "%s=%.17g", p->vars[k].key, h->values[(size_t)i * (size_t)p->n_vars + (size_t)k]);
+    double v = h->values[(size_t)i * (size_t)p->n_vars + (size_t)k];
+    char num[32];
+    snprintf(s, room, "%s=%s", p->vars[k].key, rs_output_shortest(num, v)); /* 133.6 */
     sets[p->n_sets + k] = s;
     s += room;
   }
@@ -102,10 +105,38 @@ char **opt_sets_of(const opt_problem *p, const opt_history *h, int i, int *n)
   return sets;
 }
 
-/* Appends evaluation at scaled point x: winds it and records values and figures. Returns
- * its index, or -1 when out of memory. */
+double opt_resolution(const opt_var *v)
+{
+  double span = v->hi - v->lo;
+  if (!(span > 0) || !isfinite(span)) return 0;
+  return pow(10.0, floor(log10(span)) - 3);
+}
+
+/* Value k at scaled x, rounded to the key's resolution (opt_resolution): the text a scene
+ * would hold ("133.6"), read back, and kept within [LO, HI]. */
+static double value_at(const opt_var *var, double x)
+{
+  double t = x < 0 ? 0 : x > 1 ? 1 : x;
+  double v = var->lo + t * (var->hi - var->lo), step = opt_resolution(var);
+  if (step > 0) {
+    int decimals = step < 1 ? (int)lround(-log10(step)) : 0;
+    char text[64];
+    snprintf(text, sizeof text, "%.*f", decimals, round(v / step) * step);
+    v = strtod(text, NULL);
+  }
+  return v < var->lo ? var->lo : v > var->hi ? var->hi : v;
+}
+
+/* The evaluation at scaled point x: an earlier one at the same (rounded) values, else a
+ * new one, wound, with its values and figures appended. Returns its index, or -1 when out
+ * of memory. */
 static int evaluate(const opt_problem *p, opt_history *h, const double *x, int phase)
 {
+  double vx[64];
+  int K = p->n_vars < 64 ? p->n_vars : 64;
+  for (int k = 0; k < K; ++k) vx[k] = value_at(&p->vars[k], x[k]);
+  for (int i = 0; K == p->n_vars && i < h->n; ++i) /* a run is not spent twice on one recipe */
+    if (memcmp(h->values + (size_t)i * (size_t)K, vx, (size_t)K * sizeof *vx) == 0) return i;
   if (h->n == h->cap) {
     int cap = h->cap ? 2 * h->cap : 64;
     double *v = realloc(h->values, (size_t)cap * (size_t)(p->n_vars ? p->n_vars : 1) * sizeof *v);
@@ -121,10 +152,7 @@ static int evaluate(const opt_problem *p, opt_history *h, const double *x, int p
   double *v = h->values + (size_t)i * (size_t)p->n_vars;
   double *f = h->figures + (size_t)i * OPT_N_FIGURES;
   h->phase[i] = phase;
-  for (int k = 0; k < p->n_vars; ++k) {
-    double t = x[k] < 0 ? 0 : x[k] > 1 ? 1 : x[k];
-    v[k] = p->vars[k].lo + t * (p->vars[k].hi - p->vars[k].lo);
-  }
+  for (int k = 0; k < p->n_vars; ++k) v[k] = k < K ? vx[k] : value_at(&p->vars[k], x[k]);
   for (int j = 0; j < OPT_N_FIGURES; ++j) f[j] = NAN;
   int n_sets;
   char **sets = opt_sets_of(p, h, i, &n_sets);
@@ -134,7 +162,10 @@ static int evaluate(const opt_problem *p, opt_history *h, const double *x, int p
   rs_reel_result *res = NULL;
   rs_status st = rs_scene_load(p->scene, n_sets, (const char *const *)sets, &scene);
   free(sets);
-  if (st == RS_OK) st = rs_scene_wind(scene, p->wind, &res);
+  if (st == RS_OK) {
+    h->storage |= sweep_figure_count(rs_scene_problem(scene)) > SWEEP_N_WIND_FIGURES;
+    st = rs_scene_wind(scene, p->wind, &res);
+  }
   if (st == RS_ERR_INTERRUPTED) h->stopped = 1;
   double wall = rs_clock_wall() - t0;
   sweep_figures_compute(scene ? rs_scene_problem(scene) : NULL, res, st, wall, f);
@@ -172,13 +203,12 @@ static int at(search *s, const double *x)
   if (s->last >= 0) {
     const double *v = h->values + (size_t)s->last * (size_t)p->n_vars;
     int same = 1;
-    for (int k = 0; k < p->n_vars && same; ++k) {
-      double t = x[k] < 0 ? 0 : x[k] > 1 ? 1 : x[k];
-      same = v[k] == p->vars[k].lo + t * (p->vars[k].hi - p->vars[k].lo);
-    }
+    for (int k = 0; k < p->n_vars && same; ++k) same = v[k] == value_at(&p->vars[k], x[k]);
     if (same) return s->last;
   }
+  int before = h->n;
   s->last = evaluate(p, h, x, 1);
+  if (s->last >= 0 && h->n == before) return s->last; /* an earlier run at these values */
   if (s->last < 0) {
     s->failed = 1;
     nlopt_force_stop(s->opt);

@@ -57,6 +57,12 @@ typedef struct opt_constraint {
 /* The varied keys: --vary KEY=LO:HI (sweep/vary.h, kind SWEEP_RANGE). */
 typedef sweep_vary opt_var;
 
+/* The resolution a varied value is rounded to before it is wound: the power of ten a
+ * thousandth to a ten-thousandth of HI - LO (100:600 N/m: 0.1 N/m; 0.5:2: 0.001), so
+ * that no run is spent on decimals no controller holds; 0 for an empty range. Rounded
+ * values are kept within [LO, HI], and a recipe met again is not wound again. */
+double opt_resolution(const opt_var *v);
+
 /* The quantity NAME names: a figure or one of the n varied keys; -1 if none. */
 int opt_quantity_index(const char *name, int n_vars, const opt_var *vars);
 
@@ -108,6 +114,7 @@ typedef struct opt_history {
   int n_start;     /* evaluations in the start phase */
   int nlopt_result;
   int stopped;     /* the stop callback asked to stop */
+  int storage;     /* the scene has storage stages: the storage_* figures are wound */
 } opt_history;
 void opt_history_free(opt_history *h);
 
@@ -124,7 +131,7 @@ double opt_quantity(const opt_problem *p, const opt_history *h, int i, int q);
 int opt_run(const opt_problem *p, opt_history *h, char *why, size_t size);
 
 /* The --set overrides of evaluation i (the problem's sets, then "KEY=VALUE" per varied
- * key, %.17g), in a malloc'd array whose strings live in the same block. */
+ * key, VALUE in the fewest digits that read back as the value), in a malloc'd array whose strings live in the same block. */
 char **opt_sets_of(const opt_problem *p, const opt_history *h, int i, int *n);
 
 /* Writes the history (docs/output.md, /optimize) to an HDF5 file, whole or not at all.

@@ -98,6 +98,7 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   if (fg < 0) bad = 1;
   for (int f = 0; !bad && f < OPT_N_FIGURES; ++f) {
     if (f == OPT_MISFIT && !p->target) continue;
+    if (f >= SWEEP_N_WIND_FIGURES && f < SWEEP_N_FIGURES && !h->storage) continue;
     for (int i = 0; i < E; ++i) col[i] = h->figures[(size_t)i * OPT_N_FIGURES + (size_t)f];
     bad = dataset(fg, opt_figure_name(f), H5T_NATIVE_DOUBLE, 1, de, col);
   }

@@ -131,10 +131,10 @@ rs_cli_test(run_solver_failure_message 3 [[reelsim: solver failure: .*layers? 2.
             -o solver-failure.h5)
 rs_cli_test(run_summary 0 [[peak pressure +[0-9.]+ kPa at r = [0-9.]+ mm]]
             run ${SC}/small.yaml -o run-summary.h5)
-# a scene with storage stages given to a command that only winds: said, not silently dropped
-rs_cli_test(storage_note_compare 0 [[note: .*pet-storage\.yaml has storage stages. `reelsim compare` winds the reel only]]
-            compare ${CASES}/pet-storage.yaml ${CASES}/newsprint-rider.yaml -o storage-note.h5
+# a scene with storage stages is stored by every command that winds (docs/storage.md)
+rs_cli_test(storage_compare_table 0 [[after storage +hours +core P]]
+            compare ${CASES}/pet-storage.yaml ${CASES}/newsprint-rider.yaml -o storage-compare.h5
             --set winding.final_radius=0.1)
-rs_cli_test(storage_note_sweep 0 [[note: .*pet-storage\.yaml has storage stages. `reelsim sweep` winds the reel only]]
-            sweep ${CASES}/pet-storage.yaml --vary winding.tension=100,150 -o storage-note-sweep.h5
-            --set winding.final_radius=0.1)
+rs_cli_script(storage_everywhere storage_everywhere.sh ${CASES}/pet-storage.yaml)
+rs_cli_script(compare_variants compare_variants.sh ${CASES}/pet-storage.yaml)
+rs_cli_script(plot_readable plot_readable.sh ${CASES})

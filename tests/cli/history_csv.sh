@@ -13,7 +13,7 @@ run "$bin" run "$scene" -o "$tmp/h.h5" --csv "$tmp/csv" --set output.history_eve
 has '^  csv +.*/csv/small-\{profile,wot,history\}\.csv$'
 h="$tmp/csv/small-history.csv"
 [ -f "$h" ] || fail "no history CSV"
-[ "$(head -1 "$h")" = "stage,layers_wound,roll_radius_m,layer,radius_m,sigma_r_Pa,sigma_theta_Pa" ] ||
+[ "$(head -1 "$h")" = "stage,layers_wound,roll_radius_m,layer,radius_m,sigma_r_Pa,sigma_theta_Pa,pressure_Pa" ] ||
   fail "header: $(head -1 "$h")"
 [ "$(tail -n +2 "$h" | wc -l)" -eq 500 ] || fail "expected 500 rows"
 [ "$(tail -n +2 "$h" | cut -d, -f1,2 | sort -u | tr '\n' ' ')" = "1,50 2,100 3,150 4,200 " ] ||

@@ -111,7 +111,8 @@ target)
   [ "$got" -eq 0 ] || fail "optimize failed"
   E=$(best_val best.h5 0 1); M=$(best_fig best.h5 misfit)
   echo "recovered end tension $E N/m (300 expected), misfit $M Pa, pressure scale $Pmax Pa"
-  check -v e="$E" 'BEGIN { d = e - 300; if (d < 0) d = -d; exit !(d <= 0.1) }'
+  # within the resolution the values are rounded to (0.1 N/m over 150:400) and a step of it
+  check -v e="$E" 'BEGIN { d = e - 300; if (d < 0) d = -d; exit !(d <= 0.2) }'
   check -v m="$M" -v s="$Pmax" 'BEGIN { exit !(m <= 1e-3 * s) }'
   run "$bin" optimize "$news" --vary winding.tension.end=300:300 --minimize misfit \
       --target-profile target.csv -o exact.yaml -q
@@ -171,11 +172,13 @@ failures)
   b=$(h5 best.h5 /optimize/best | head -1)
   [ "$(h5 best.h5 /optimize/figures/status | sed -n "$((b + 1))p")" = 0 ] || fail "the best run did not finish"
   "$bin" run best.yaml -q -o rerun.h5 || fail "best.yaml does not run"
-  # a value the scene refuses (max_steps takes whole numbers) is refused, not a crash
+  # a key that takes whole numbers (max_steps) over 1:3000 is rounded to whole numbers
+  # (the resolution 1): no run is refused for a fraction
   run "$bin" optimize "$small" --vary numerics.max_steps=1:3000 --maximize numerics.max_steps -o r.yaml
-  [ "$got" -eq 1 ] || fail "exit $got, expected 1 (no run finished)"
-  has "refused"
-  has "no run of the [0-9]+ met every constraint"
+  [ "$got" -eq 0 ] || fail "exit $got, expected 0"
+  has "values rounded to 1 \(numerics.max_steps\)"
+  printf '%s\n' "$out" | grep -Eq ' refused$' && fail "a run refused"
+  grep -Eq '^  max_steps: [0-9]+$' r.yaml || fail "max_steps in r.yaml: $(grep max_steps r.yaml)"
   ;;
 interrupted)
   # SIGINT (then SIGTERM) during a long run: exit 130 (143), the message, nothing written
