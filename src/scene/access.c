@@ -1,6 +1,7 @@
 /* What applications ask of a loaded scene: the problem it winds, winding it, its name and
  * what it says of itself. */
 #include "reelsim/defects.h"
+#include "reelsim/storage.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "scene/scene_type.h"
