@@ -93,6 +93,12 @@ typedef struct rs_roll_params {
    * NULL: no air, the stack law alone. */
   const double *air_film;
   double air_pressure;
+  /* The roll's nodes at their real radii (docs/roll-model.md, "Entrained air"):
+   * air_radius[j] (m) is node j's radius with the films beneath it (the outer face of layer
+   * j; node 0 the core, r_c), read once, when the increment that creates node j is wound
+   * (the caller fills it before). Used with air_film and the load beneath each layer, from
+   * the first node with a film beneath it; NULL, or no film yet: r_c + j t. */
+  const double *air_radius;
 } rs_roll_params;
 
 typedef struct rs_roll_stats {
