@@ -63,6 +63,12 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
   *xi_out = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
+  /* at the end nodes themselves (an integration starts at the core and stops at its top
+   * node; r = e^x there within rounding) the slope is the inner interval's, one-sided:
+   * the step's jet there must be the one its quintic interpolates, or the step's defect
+   * says 1e4 - 1e5 tolerances that are not there (docs/roll-model.md) */
+  if (last > 0 && ((j < 0 && xi > -1e-7) || (j >= last && xi < last + 1e-7)))
+    j = j < 0 ? 0 : last - 1;
   if (j < 0 || j >= last) {
     *dg2 = 0.0;
     return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
