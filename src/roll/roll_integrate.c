@@ -347,7 +347,7 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
    * error (a step CVODE accepted past its tolerance, where the modulus' curvature changes
    * inside it): corrected, whatever rtol is. Dropping those too made the error of a very
    * soft web (Pfeiffer K1 = 50 Pa) grow as rtol tightened, the step's defect crossing 100
-   * tolerances at rtol 1e-4 (docs/accuracy.md, "A very soft web"). */
+   * tolerances at rtol 1e-4 (docs/roll-model.md, "A very soft web"). */
   double m = 8.0 / 15.0 * h * dw, dLs = 8.0 / 15.0 * h * dL;
   const double tw = roll->p.rtol * fabs(jb->w) + roll->p.atol;
   const double tL = roll->p.rtol * fabs(jb->L) + roll->p.atol;
