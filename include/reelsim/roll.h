@@ -87,7 +87,7 @@ typedef struct rs_roll_params {
   rs_load_placement placement; /* 0 = RS_LOAD_BENEATH */
   rs_correction correction; /* 0 = RS_CORRECTION_ON */
   /* Entrained air (docs/roll-model.md, "Entrained air"): air_film[j] (m) is the film under
-   * layer j, at node j (r_c + j t), entrained at the ambient pressure air_pressure (Pa,
+   * layer j, at node j (its inner face), entrained at the ambient pressure air_pressure (Pa,
    * absolute); the stack law and the film in series, rs_air_series_modulus. Read at every
    * increment: the caller fills entry j before winding layer j (max_layers + 1 entries).
    * NULL: no air, the stack law alone. */
