@@ -87,12 +87,18 @@ typedef struct rs_roll_params {
   rs_load_placement placement; /* 0 = RS_LOAD_BENEATH */
   rs_correction correction; /* 0 = RS_CORRECTION_ON */
   /* Entrained air (docs/roll-model.md, "Entrained air"): air_film[j] (m) is the film under
-   * layer j, at node j (r_c + j t), entrained at the ambient pressure air_pressure (Pa,
+   * layer j, at node j (its inner face), entrained at the ambient pressure air_pressure (Pa,
    * absolute); the stack law and the film in series, rs_air_series_modulus. Read at every
    * increment: the caller fills entry j before winding layer j (max_layers + 1 entries).
    * NULL: no air, the stack law alone. */
   const double *air_film;
   double air_pressure;
+  /* The roll's nodes at their real radii (docs/roll-model.md, "Entrained air"):
+   * air_radius[j] (m) is node j's radius with the films beneath it (the outer face of layer
+   * j; node 0 the core, r_c), read once, when the increment that creates node j is wound
+   * (the caller fills it before). Used with air_film and the load beneath each layer, from
+   * the first node with a film beneath it; NULL, or no film yet: r_c + j t. */
+  const double *air_radius;
 } rs_roll_params;
 
 typedef struct rs_roll_stats {

@@ -287,6 +287,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     if ((st = rs_reel_air_create(&air, N))) goto done;
     params.air_film = air.film;
     params.air_pressure = pb->air.pressure;
+    params.air_radius = air.node;
   }
   if ((st = rs_roll_create(&params, &roll))) goto done;
   if ((st = rs_nip_create(&pb->nip, &pb->material, &nip))) goto done;

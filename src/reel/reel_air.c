@@ -1,7 +1,7 @@
 /* Entrained air in the reel (docs/roll-model.md, "Entrained air"). The roll's stress solve
- * keeps its nodes one caliper apart (r_c + j t) and sees each film as a compliance in
- * series with the stack (src/roll/roll_air.c); the radii the reel winds at, stops at and
- * reports are the real ones, t + h_j(P_j) a layer. */
+ * puts each new node at the radius the layer goes on at, films included, and sees each
+ * film as a compliance in series with the stack (src/roll/roll_air.c); the radii the reel
+ * winds at, stops at and reports are the real ones, t + h_j(P_j) a layer. */
 #include "reel/reel_air.h"
 
 #include <math.h>
@@ -15,7 +15,8 @@ rs_status rs_reel_air_create(rs_reel_air *air, int N)
   memset(air, 0, sizeof *air);
   air->film = calloc((size_t)N + 1, sizeof(double));
   air->length = calloc((size_t)N, sizeof(double));
-  if (!air->film || !air->length) {
+  air->node = calloc((size_t)N + 1, sizeof(double));
+  if (!air->film || !air->length || !air->node) {
     rs_reel_air_free(air);
     return RS_ERROR(RS_ERR_MEMORY, "entrained air: out of memory (%d layers)", N);
   }
@@ -26,7 +27,8 @@ void rs_reel_air_free(rs_reel_air *air)
 {
   free(air->film);
   free(air->length);
-  air->film = air->length = NULL;
+  free(air->node);
+  air->film = air->length = air->node = NULL;
 }
 
 /* The web wraps the roll at its tension Ti (the span's: the film forms before the web
@@ -81,6 +83,7 @@ int rs_reel_air_stop(const rs_reel_air *air, const rs_problem *pb, int j, double
 void rs_reel_air_wound(rs_reel_air *air, int j, double R, double h, double t)
 {
   air->film[j] = h;
+  air->node[j + 1] = R + (h + t); /* as the reel's radius goes on from R */
   air->length[j] = (j ? air->length[j - 1] : 0.0) + 2.0 * 3.14159265358979323846 * (R + h + 0.5 * t);
 }
 

@@ -12,6 +12,9 @@ typedef struct rs_reel_air {
   double *film;     /* [N + 1] m, the film under layer j (node j), as it survived; the roll
                        reads it (rs_roll_params.air_film) */
   double *length;   /* [N] m, web wound once layer j is on, at the radii it went on at */
+  double *node;     /* [N + 1] m, the roll's node j (outer face of layer j) at its radius as
+                       the layer went on, films included; the roll reads it
+                       (rs_roll_params.air_radius) */
   double radius;    /* m, the roll's outer radius with its films (rs_reel_air_begin) */
 } rs_reel_air;
 

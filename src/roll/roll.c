@@ -67,6 +67,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->wstep);
   free(roll->L);
   free(roll->xnode);
+  roll_air_free(roll);
   free(roll->block_share);
   free(roll->P_node);
   free(roll->P_mean);
@@ -174,6 +175,10 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   }
 
   for (size_t j = 0; j <= cap; ++j) roll->xnode[j] = log(params->core_radius + j * params->caliper);
+  if ((st = roll_air_alloc(roll))) {
+    rs_roll_destroy(&roll);
+    return st;
+  }
 
   /* SUNDIALS 6.x: SUNContext_Create takes a communicator pointer (7.x changes it). */
   if (SUNContext_Create(NULL, &roll->sunctx) != 0) goto cvode_fail;
@@ -238,8 +243,11 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
   if (m > 1) roll_lazy_flush(roll, 0);
 
+  /* with entrained air, the new nodes at their real radii (roll_air.c) */
+  rs_status st = roll_air_nodes(roll, k_old, k);
+  if (st) return st;
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  rs_status st = roll_set_modulus_stress(roll, top);
+  st = roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = roll_integrate(roll, top);
   if (st) {
     roll_start_release(roll, st);
@@ -278,11 +286,11 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
 int rs_roll_layers(const rs_roll *roll) { return roll->n; }
 double rs_roll_layer_radius(const rs_roll *roll, int j)
 {
-  return roll->p.core_radius + (j + 1) * roll->p.caliper;
+  return roll->geom && j + 1 <= roll->n ? roll->node_r[j + 1] : roll->p.core_radius + (j + 1) * roll->p.caliper;
 }
 double rs_roll_outer_radius(const rs_roll *roll)
 {
-  return roll->p.core_radius + roll->n * roll->p.caliper;
+  return roll_node_radius(roll, roll->n);
 }
 /* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
 const double *rs_roll_sigma_r(const rs_roll *roll)
@@ -297,8 +305,12 @@ const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
   rs_roll *r = (rs_roll *)roll; /* caches of the state: logically const */
   if (roll->hoop_stale) { /* the turns' equilibrium, from the radial stresses in full */
-    roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
-                               roll->p.core_radius, roll->p.caliper, roll->n);
+    if (roll->geom)
+      roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+                                    roll->node_r, roll->p.caliper, roll->n);
+    else
+      roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+                                 roll->p.core_radius, roll->p.caliper, roll->n);
     r->hoop_stale = 0; /* until the next increment */
     return roll->sigma_theta;
   }

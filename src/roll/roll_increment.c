@@ -155,7 +155,6 @@ static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
  * operation. */
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
 {
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
   const double *L = roll->L, *w = roll->w;
   /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
    * of the layer beneath it (then that layer's hoop stress takes the load too, and the new
@@ -165,7 +164,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   for (int b = m - 1; b >= 0; --b) {
     const int j = bottom + b;
     const double decay = b == m - 1 ? 0.0 : exp(L[j] - L[j + 1]);
-    const double above = S * decay, c = T0[b] / (rc + j * t);
+    const double above = S * decay, c = T0[b] / roll_node_radius(roll, j);
     S = above + c;
     roll->dsr[j] = -S;
     roll->dsh[j] = -above * (1.0 + w[j]); /* Hakiel's hoop accounting (unused beneath) */
@@ -256,10 +255,9 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
    * x - x is 0 for a finite x and NaN for an infinite or NaN one: one sum says whether all
    * are finite (four sums, independent, so that the compiler can vectorise them: a
    * floating-point sum's order is otherwise fixed) */
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
   if (!isfinite(roll->c_deep) || !isfinite(roll->c2_deep))
     return RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at the core (outer radius %.9g m)",
-                    rc + k * t);
+                    roll_node_radius(roll, k));
   /* below deep_lo, c_deep times the shape: finite where |c_deep| times the shape's bound
    * is (a tension near the largest double overflows there: the node is looked for) */
   const int lo = roll->deep_lo;
@@ -271,9 +269,9 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
           (c2 != 0.0 && !isfinite(roll->shape_e[j] * (c + c2 * roll->prof_L[j]))))
         return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                  "non-finite stress increment at the core (outer radius %.9g m)",
-                                 rc + k * t)
+                                 roll_node_radius(roll, k))
                       : RS_ERROR(RS_ERR_SOLVER,
-                                 "non-finite stress increment at r = %.9g m (layer %d)", rc + j * t, j);
+                                 "non-finite stress increment at r = %.9g m (layer %d)", roll_node_radius(roll, j), j);
   double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
   int j = roll->deep_lo;
   for (; j + 3 <= k; j += 4) {
@@ -288,9 +286,9 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
     if (!isfinite(ds[j]) || !isfinite(dh[j]))
       return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                "non-finite stress increment at the core (outer radius %.9g m)",
-                               rc + k * t)
+                               roll_node_radius(roll, k))
                     : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
-                               rc + j * t, j);
+                               roll_node_radius(roll, j), j);
   return RS_OK;
 }
 
@@ -300,7 +298,7 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
 rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
 {
   const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
-  const double rc = roll->p.core_radius, t = roll->p.caliper, s = rc + top * t;
+  const double t = roll->p.caliper, s = roll_node_radius(roll, top);
   double above = 0.0;
   for (int i = m - 1; i >= 0; --i) {
     above += T0[i];
@@ -418,4 +416,16 @@ void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr,
   sth[0] = ((rc + t) * sr[0] - rc * core_sigma) * inv_t;
   for (int j = 2; j <= k; ++j)
     sth[j - 1] = ((rc + j * t) * sr[j - 1] - (rc + (j - 1) * t) * sr[j - 2]) * inv_t;
+}
+
+/* roll_hoop_from_equilibrium with the nodes at the radii R[0..k] (entrained air: the turn
+ * and the film beneath it carry the radial stresses on their faces; the film no hoop force,
+ * so the web's is [R sigma_r] over the turn, its stress that over t) */
+void roll_hoop_from_equilibrium_at(double *restrict sth, const double *restrict sr, double core_sigma,
+                                   const double *restrict R, double t, int k)
+{
+  const double inv_t = 1.0 / t;
+  if (k < 1) return;
+  sth[0] = (R[1] * sr[0] - R[0] * core_sigma) * inv_t;
+  for (int j = 2; j <= k; ++j) sth[j - 1] = (R[j] * sr[j - 1] - R[j - 1] * sr[j - 2]) * inv_t;
 }

@@ -153,7 +153,22 @@ struct rs_roll {
   double lazy_c, lazy_c2; /* true = stored + lazy_c e + lazy_c2 e prof_L (sigma_r) */
   double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
   double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view_*) */
+  /* Entrained air at its radius (roll_air.c): with films (and the load beneath) the nodes
+   * sit at the real radii node_r (p.air_radius as each node was created), from the first
+   * node with a film beneath it (geom = 1; before, node_r[j] = r_c + j t, the same
+   * arithmetic). Node j's interval [j, j + 1] has pitch p_j = node_r[j + 1] - node_r[j]
+   * (the newest node: t); inv_pitch = 1/p_j, pitch_sq = (p_j / t)^2. */
+  int geom;
+  int geom_j;            /* the interval the layer coordinate was last found in */
+  double kc0;            /* the core condition of the film-free roll */
+  double *node_r, *inv_pitch, *pitch_sq; /* [cap + 1]; NULL without air */
 };
+
+/* node j's radius (m): r_c + j t, or with entrained air its real radius */
+static inline double roll_node_radius(const rs_roll *roll, int j)
+{
+  return roll->geom ? roll->node_r[j] : roll->p.core_radius + j * roll->p.caliper;
+}
 
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
 static inline double roll_exp_small(double d)
@@ -218,6 +233,10 @@ double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
 
 /* roll_air.c */
 void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
+rs_status roll_air_alloc(rs_roll *roll);
+void roll_air_free(rs_roll *roll);
+rs_status roll_air_nodes(rs_roll *roll, int k_old, int k);
+double roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 
 /* roll_integrate.c */
 rs_status roll_integrate(rs_roll *roll, int k);
@@ -236,6 +255,8 @@ typedef struct roll_segments {
 void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
 void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
+void roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_r, double core_sigma,
+                                   const double *radius, double t, int k);
 double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status roll_commit(rs_roll *roll, int m, const double *T0);

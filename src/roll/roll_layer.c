@@ -43,8 +43,7 @@ rs_status roll_add_one(rs_roll *roll, double T0)
     roll_block_increment(roll, k_old, 1, &T0, NULL);
     return roll_commit(roll, 1, &T0);
   }
-  const double rc = roll->p.core_radius, t = roll->p.caliper;
-  const double S = T0 / (rc + bottom * t); /* the block's sum for m = 1 */
+  const double S = T0 / roll_node_radius(roll, bottom); /* the block's sum for m = 1 */
   double *restrict e = roll->dsr, *restrict se = roll->shape_e, *restrict sr = roll->sigma_r;
   roll_segments seg;
   roll_decays_raw(roll->L, e, lo, bottom, &seg);

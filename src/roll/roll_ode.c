@@ -57,10 +57,18 @@ static inline double roll_radius_at(rs_roll *roll, double x)
  * formed afresh when x is in another one. */
 static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *dg2, double *xi_out)
 {
-  const double r = roll_radius_at(roll, x), xi = (r - roll->p.core_radius) * roll->inv_caliper;
+  const double r = roll_radius_at(roll, x);
+  double inv_p = roll->inv_caliper; /* 1 / the pitch of the interval r is in */
+  const double xi = roll->geom ? roll_air_coord(roll, r, &inv_p) : (r - roll->p.core_radius) * inv_p;
   *xi_out = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
+  /* at the end nodes themselves (an integration starts at the core and stops at its top
+   * node; r = e^x there within rounding) the slope is the inner interval's, one-sided:
+   * the step's jet there must be the one its quintic interpolates, or the step's defect
+   * says 1e4 - 1e5 tolerances that are not there (docs/roll-model.md) */
+  if (last > 0 && ((j < 0 && xi > -1e-7) || (j >= last && xi < last + 1e-7)))
+    j = j < 0 ? 0 : last - 1;
   if (j < 0 || j >= last) {
     *dg2 = 0.0;
     return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
@@ -85,7 +93,7 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
   const double dv0 = f * (m0 + f * (c2 + f * c3));
   double g2 = fabs(dv0) < 0.03 ? hc->g0 * roll_exp_small_estrin(dv0) : exp(hc->y0 + dv0);
   const double dv = m0 + f * (2.0 * c2 + 3.0 * c3 * f);
-  *dg2 = g2 * dv * (r * roll->inv_caliper);
+  *dg2 = g2 * dv * (r * inv_p);
   return g2;
 }
 
@@ -95,6 +103,10 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
 double roll_layer_coord_at(rs_roll *roll, double x)
 {
   if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
+  if (roll->geom) {
+    double inv_p;
+    return roll_air_coord(roll, roll_radius_at(roll, x), &inv_p);
+  }
   return (roll_radius_at(roll, x) - roll->p.core_radius) * roll->inv_caliper;
 }
 
@@ -212,7 +224,7 @@ static rs_status roll_modulus_refused(const rs_roll *roll, int j)
   return RS_ERROR(RS_ERR_SOLVER,
                   "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not positive: "
                   "the radial law is outside its range",
-                  roll->Er[j], roll->p.core_radius + j * roll->p.caliper, roll->P_node[j]);
+                  roll->Er[j], roll_node_radius(roll, j), roll->P_node[j]);
 }
 
 /* E_r at the nodes [lo, hi) from P_node, checked: positive and finite; with entrained air
