@@ -108,9 +108,21 @@ static void fallback_agrees_lumped(void)
   agree(&p, 600, 8, 1e-6);
 }
 
+/* the same on a short roll, both ways, where valgrind can watch the fallback's solvers made
+ * and freed */
+static void fallback_small(void)
+{
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, 40);
+  p.rtol = 1e-6;
+  p.atol = 0.0;
+  agree(&p, 40, 1, 1e-6);
+  agree(&p, 40, 4, 1e-6);
+}
+
 static const check_case cases[] = {
     {"selftest_passes", selftest_passes},
     {"selftest_catches_stale_norm", selftest_catches_stale_norm},
+    {"fallback_small", fallback_small},
     {"fallback_agrees", fallback_agrees},
     {"fallback_agrees_lumped", fallback_agrees_lumped},
 };
