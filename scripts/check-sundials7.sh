@@ -27,16 +27,9 @@ work="$(cd "$work" && pwd)"
 prefix="$work/sundials"
 
 echo "== SUNDIALS from $src into $prefix =="
-nice -n 19 cmake -S "$src" -B "$work/build-sundials" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_C_FLAGS_RELEASE="-O2" \
-  -DCMAKE_POSITION_INDEPENDENT_CODE=ON -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON \
-  -DBUILD_CVODE=ON -DBUILD_ARKODE=OFF -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF \
-  -DBUILD_KINSOL=OFF -DBUILD_NVECTOR_MANYVECTOR=OFF -DBUILD_FORTRAN_MODULE_INTERFACE=OFF \
-  -DENABLE_MPI=OFF -DENABLE_OPENMP=OFF -DENABLE_PTHREAD=OFF -DENABLE_LAPACK=OFF \
-  -DENABLE_KLU=OFF -DENABLE_PETSC=OFF -DENABLE_HYPRE=OFF \
-  -DEXAMPLES_ENABLE_C=OFF -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_ENABLE_F2003=OFF \
-  -DEXAMPLES_INSTALL=OFF -DBUILD_BENCHMARKS=OFF \
-  -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_INSTALL_LIBDIR=lib > "$work/sundials-configure.log"
+. "$root/scripts/sundials-options.sh"
+nice -n 19 cmake -S "$src" -B "$work/build-sundials" "${SUNDIALS_CMAKE_OPTIONS[@]}" \
+  -DCMAKE_INSTALL_PREFIX="$prefix" > "$work/sundials-configure.log"
 nice -n 19 cmake --build "$work/build-sundials" -j "$jobs" > "$work/sundials-build.log"
 cmake --install "$work/build-sundials" > "$work/sundials-install.log"
 version="$(sed -n 's/^#define SUNDIALS_VERSION "\(.*\)"$/\1/p' "$prefix/include/sundials/sundials_config.h")"
