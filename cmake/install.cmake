@@ -53,7 +53,11 @@ else()
   list(JOIN RS_PKG_MODULES " " RS_PC_REQUIRES_PRIVATE)
   # Debian's name for the serial HDF5's module
   set(RS_PC_REQUIRES_PRIVATE "hdf5-serial ${RS_PC_REQUIRES_PRIVATE}")
-  set(RS_PC_LIBS_PRIVATE "-lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm -pthread")
+  set(RS_PC_LIBS_PRIVATE "-lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense -lsundials_sunlinsoldense")
+  if(NOT SUNDIALS_VERSION VERSION_LESS 7) # SUNDIALS 7 moved the shared parts to sundials_core
+    string(APPEND RS_PC_LIBS_PRIVATE " -lsundials_core")
+  endif()
+  string(APPEND RS_PC_LIBS_PRIVATE " -lm -pthread")
   foreach(l IN LISTS CMAKE_DL_LIBS)
     string(APPEND RS_PC_LIBS_PRIVATE " -l${l}")
   endforeach()

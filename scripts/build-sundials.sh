@@ -84,16 +84,9 @@ got="$(dpkg-parsechangelog -l "$srcdir/debian/changelog" -S Version 2>> "$log")"
 
 echo "setup: building an optimised CVODE from Debian's source of sundials $version (once; log in $cache/sundials-build.log)" >&2
 build="$work/build"
-cmake -S "$srcdir" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_C_FLAGS="-fcommon" -DCMAKE_C_FLAGS_RELEASE="-O2" \
-  -DCMAKE_POSITION_INDEPENDENT_CODE=ON -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON \
-  -DBUILD_CVODE=ON -DBUILD_ARKODE=OFF -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF \
-  -DBUILD_KINSOL=OFF -DBUILD_NVECTOR_MANYVECTOR=OFF -DBUILD_FORTRAN_MODULE_INTERFACE=OFF \
-  -DENABLE_MPI=OFF -DENABLE_OPENMP=OFF -DENABLE_PTHREAD=OFF -DENABLE_LAPACK=OFF \
-  -DENABLE_KLU=OFF -DENABLE_PETSC=OFF -DENABLE_HYPRE=OFF \
-  -DEXAMPLES_ENABLE_C=OFF -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_ENABLE_F2003=OFF \
-  -DEXAMPLES_INSTALL=OFF -DBUILD_BENCHMARKS=OFF \
-  -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_INSTALL_LIBDIR=lib >> "$log" 2>&1 ||
+. "$(dirname "$0")/sundials-options.sh"
+cmake -S "$srcdir" -B "$build" "${SUNDIALS_CMAKE_OPTIONS[@]}" -DCMAKE_C_FLAGS="-fcommon" \
+  -DCMAKE_INSTALL_PREFIX="$prefix" >> "$log" 2>&1 ||
   fail "configuring SUNDIALS failed"
 cmake --build "$build" -j "$(nproc)" >> "$log" 2>&1 || fail "building SUNDIALS failed"
 rm -rf "$prefix"

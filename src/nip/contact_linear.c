@@ -21,6 +21,7 @@
  * N/m; plain equilibration let the pressure vanish against the delta0 column), then row
  * and column equilibration as dgeequ does; both are frozen with the factorization. */
 #include "nip/contact_internal.h"
+#include "util/sundials_compat.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -34,7 +35,7 @@ enum { KRYLOV_MAXL = 10, KRYLOV_CYCLES = 4, KRYLOV_MAX_ROWS = 16 };
 static const double KRYLOV_RTOL = 1e-14; /* ||b - A x|| / ||b||, equilibrated system */
 
 static int krylov_atimes(void *data, N_Vector v, N_Vector z);
-static int krylov_psolve(void *data, N_Vector r, N_Vector z, realtype tol, int lr);
+static int krylov_psolve(void *data, N_Vector r, N_Vector z, sunrealtype tol, int lr);
 
 rs_status rs_nipc_lin_alloc(rs_nip_contact *nc)
 {
@@ -51,7 +52,7 @@ rs_status rs_nipc_lin_alloc(rs_nip_contact *nc)
   L->valid = 0;
   if (!L->LU || !L->ipiv || !L->rs || !L->cs || !L->gm_rs || !L->state || !L->work || !L->iwork)
     return RS_ERROR(RS_ERR_MEMORY, "nip linear solver work space (n = %d)", nc->n);
-  if (SUNContext_Create(NULL, &L->sunctx) != 0)
+  if (rs_sundials_context_create(&L->sunctx) != 0)
     return RS_ERROR(RS_ERR_MEMORY, "nip linear solver: SUNContext_Create failed");
   L->nx = N_VNew_Serial((sunindextype)n, L->sunctx);
   L->nb = L->nx ? N_VClone(L->nx) : NULL;
@@ -201,7 +202,7 @@ static int krylov_atimes(void *data, N_Vector v, N_Vector z)
   return 0;
 }
 
-static int krylov_psolve(void *data, N_Vector r, N_Vector z, realtype tol, int lr)
+static int krylov_psolve(void *data, N_Vector r, N_Vector z, sunrealtype tol, int lr)
 {
   (void)tol;
   (void)lr;

@@ -47,8 +47,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
 #include "roll/vector2.h"
+#include "util/sundials_compat.h"
 
 void rs_roll_destroy(rs_roll **rollp)
 {
@@ -56,6 +58,8 @@ void rs_roll_destroy(rs_roll **rollp)
   rs_roll *roll = *rollp;
   if (roll->cvode) CVodeFree(&roll->cvode);
   if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
+  if (roll->fallback_LS) SUNLinSolFree(roll->fallback_LS);
+  if (roll->fallback_A) SUNMatDestroy(roll->fallback_A);
   if (roll->y) N_VDestroy(roll->y);
   if (roll->sunctx) SUNContext_Free(&roll->sunctx);
   free(roll->sigma_r);
@@ -180,8 +184,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
     return st;
   }
 
-  /* SUNDIALS 6.x: SUNContext_Create takes a communicator pointer (7.x changes it). */
-  if (SUNContext_Create(NULL, &roll->sunctx) != 0) goto cvode_fail;
+  if (rs_sundials_context_create(&roll->sunctx) != 0) goto cvode_fail;
   roll->y = N_VNew_Serial(2, roll->sunctx);
   if (!roll->y) goto cvode_fail;
   /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
@@ -191,15 +194,12 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   N_VConst(0.0, roll->y);
   roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
   if (!roll->cvode) goto cvode_fail;
-  if (CVodeSetErrHandlerFn(roll->cvode, roll_cvode_err, roll) != CV_SUCCESS) goto cvode_fail;
+  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) goto cvode_fail;
   if (CVodeInit(roll->cvode, roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
   if (CVodeWFtolerances(roll->cvode, roll_ewt) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
-  /* the corrector equations solved exactly (src/roll/vector2.c): roll_rhs is
-   * (g^2(x) - 1 - 2w - w^2, w), quadratic in w with g^2 independent of the state */
-  roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, roll_jac, roll);
-  if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) goto cvode_fail;
-  rs_roll_newton2_set_quadratic(roll->NLS, -2.0, -1.0);
+  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
+  if (roll_corrector_attach(roll) != 0) goto cvode_fail;
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
   /* CVODE keeps its step (and its order) while the step it could take is within a band of

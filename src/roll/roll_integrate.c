@@ -538,6 +538,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
   CVodeGetNumRhsEvals(roll->cvode, &nfe); /* counters restart at every CVodeReInit */
   roll->stats.cvode_steps += steps;
   roll->stats.rhs_evals += nfe;
-  roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS); /* counts across increments */
+  if (roll->NLS) /* (the fallback counts its own: roll_corrector.c) */
+    roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS); /* counts across increments */
   return RS_OK;
 }

@@ -11,6 +11,7 @@
  *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
+ *   roll_corrector.c  which corrector CVODE gets: the exact one after its self-test passed
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
 #define REELSIM_ROLL_INTERNAL_H
@@ -21,8 +22,9 @@
 #include <nvector/nvector_serial.h>
 
 #include "reelsim/roll.h"
+#include "util/sundials_compat.h"
 
-enum { RS_CVODE_MSG_LEN = 512 };
+enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
 /* references from a node above the core between two from the core (roll_reuse_start) */
 enum { RS_REF_DEEP_MAX = 4 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
@@ -92,7 +94,9 @@ struct rs_roll {
   SUNContext sunctx;
   void *cvode;
   N_Vector y;
-  SUNNonlinearSolver NLS;
+  SUNNonlinearSolver NLS;     /* the exact corrector, or NULL: CVODE's own Newton with */
+  SUNLinearSolver fallback_LS; /* a dense linear solver (roll_corrector.c) */
+  SUNMatrix fallback_A;
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
   int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
@@ -221,7 +225,6 @@ double roll_layer_coord_at(rs_roll *roll, double x);
 int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
 int roll_jac(double x, const double y[2], double J[2][2], void *user);
 int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
-void roll_cvode_err(int code, const char *module, const char *function, char *msg, void *user);
 void roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status roll_set_modulus(rs_roll *roll, int k);
 rs_status roll_set_modulus_stress(rs_roll *roll, int k);

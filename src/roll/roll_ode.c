@@ -196,14 +196,6 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
   return 0;
 }
 
-void roll_cvode_err(int code, const char *module, const char *function, char *msg,
-                           void *user)
-{
-  rs_roll *roll = user;
-  snprintf(roll->cvode_msg, sizeof roll->cvode_msg, "%s %s (code %d): %s", module, function, code,
-           msg);
-}
-
 /* P_node = the pressures (Pa, compression positive) at the nodes lazy_top..k before the
  * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Nodes
  * below the lazy frontier are not read (roll_lazy.c). Plain loops: they vectorise. */

@@ -18,6 +18,7 @@
 #include <cvode/cvode.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "util/sundials_compat.h"
 #include "vector2.h"
 
 #define D(v) NV_DATA_S(v)

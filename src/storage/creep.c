@@ -25,6 +25,7 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 
 #include "storage/creep.h"
+#include "util/sundials_compat.h"
 #include "storage/creep_vector.h"
 
 struct rs_creep {
@@ -46,7 +47,7 @@ struct rs_creep {
   void *cvode;
   N_Vector y, atol;
   SUNLinearSolver LS;
-  char msg[512];
+  char msg[RS_SUNDIALS_MSG_LEN];
   rs_creep_stats stats;
   long seen[5];                    /* CVODE's counters when last read */
 };
@@ -73,13 +74,6 @@ void rs_creep_destroy(rs_creep **cp)
   free(c->work);
   free(c);
   *cp = NULL;
-}
-
-static void creep_cvode_err(int code, const char *module, const char *function, char *msg,
-                            void *user)
-{
-  rs_creep *c = user;
-  snprintf(c->msg, sizeof c->msg, "%s %s (code %d): %s", module, function, code, msg);
 }
 
 static int creep_rhs(sunrealtype t, N_Vector Y, N_Vector Yd, void *user)
@@ -230,7 +224,7 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
     rs_creep_destroy(&c);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the creep solver for %d layers", p->n_layers);
   }
-  if (SUNContext_Create(NULL, &c->ctx) != 0) goto fail;
+  if (rs_sundials_context_create(&c->ctx) != 0) goto fail;
   c->y = N_VNew_Serial(c->ny, c->ctx);
   c->atol = c->y ? N_VClone(c->y) : NULL;
   if (!c->y || !c->atol) goto fail;
@@ -242,7 +236,7 @@ rs_status rs_creep_create(const rs_creep_params *p, rs_creep **out)
   N_VConst(1.0, c->atol);
   c->cvode = CVodeCreate(CV_BDF, c->ctx);
   if (!c->cvode) goto fail;
-  if (CVodeSetErrHandlerFn(c->cvode, creep_cvode_err, c) != CV_SUCCESS) goto fail;
+  if (rs_sundials_cvode_messages(c->cvode, c->ctx, &c->msg) != 0) goto fail;
   if (CVodeInit(c->cvode, creep_rhs, 0.0, c->y) != CV_SUCCESS) goto fail;
   if (CVodeSVtolerances(c->cvode, p->rtol, c->atol) != CV_SUCCESS) goto fail;
   if (CVodeSetUserData(c->cvode, c) != CV_SUCCESS) goto fail;

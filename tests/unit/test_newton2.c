@@ -12,6 +12,7 @@
 
 #include "check.h"
 #include "roll/vector2.h"
+#include "util/sundials_compat.h"
 
 /* w' = g2 - 1 + p w + q w^2, L' = w: the engine's pair (p = -2, q = -1), or with q = +1
  * the tangent, whose implicit steps can have no solution */
@@ -55,7 +56,7 @@ static run integrate_eq(riccati p, double w0, double x1, double rtol, int mode, 
 {
   run out = {NAN, NAN, 0, 0, 0, 0, 0, 0};
   SUNContext ctx = NULL;
-  CHECK(SUNContext_Create(NULL, &ctx) == 0);
+  CHECK(rs_sundials_context_create(&ctx) == 0);
   N_Vector y = N_VNew_Serial(2, ctx);
   CHECK(y && rs_roll_vector2_specialise(y) == 0);
   N_VGetArrayPointer(y)[0] = w0;
