@@ -29,6 +29,10 @@ class Result:
                           /final_at_speed/sigma_r; sigma_r is then the roll at rest)
     at_speed_sigma_theta  Pa, hoop stress with the roll spinning
     at_speed_core_pressure  Pa, core pressure with the roll spinning
+
+    complete          False for a partial run: a file written when the winding stopped
+                      early (root attribute complete = 0); True for a run and for files
+                      without the attribute
     """
 
     radius: np.ndarray
@@ -46,6 +50,7 @@ class Result:
     at_speed_sigma_r: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_core_pressure: float = float("nan")
+    complete: bool = True
 
     @property
     def layers(self):
