@@ -164,6 +164,19 @@ static void misfit_closed_form(void)
 }
 
 /* A history of three evaluations written and read back: the contract's paths. */
+/* For reading a fixed-length string type (closed here) NUL-terminated: a copy one byte
+ * wider (its width in *width), after checking it is not variable-length. */
+static hid_t nul_terminated(hid_t ftype, size_t *width)
+{
+  CHECK(H5Tis_variable_str(ftype) == 0);
+  hid_t t = H5Tcopy(ftype); /* H5Dget_type's and H5Aget_type's copies are read-only */
+  H5Tclose(ftype);
+  *width = H5Tget_size(t) + 1;
+  H5Tset_size(t, *width);
+  H5Tset_strpad(t, H5T_STR_NULLTERM);
+  return t;
+}
+
 static void history_file(void)
 {
   setup_vars();
@@ -202,12 +215,8 @@ static void history_file(void)
   CHECK(best == 1);
   /* the keys: fixed-length strings (checksummed with the chunk), read NUL-terminated */
   d = H5Dopen2(file, "/optimize/parameters", H5P_DEFAULT);
-  hid_t ft = H5Dget_type(d), vs = H5Tcopy(ft); /* H5Dget_type's copy is read-only */
-  H5Tclose(ft);
-  CHECK(H5Tis_variable_str(vs) == 0);
-  size_t w = H5Tget_size(vs) + 1;
-  H5Tset_size(vs, w);
-  H5Tset_strpad(vs, H5T_STR_NULLTERM);
+  size_t w;
+  hid_t vs = nul_terminated(H5Dget_type(d), &w);
   char *keys = calloc(2, w);
   CHECK(H5Dread(d, vs, H5S_ALL, H5S_ALL, H5P_DEFAULT, keys) >= 0);
   CHECK(strcmp(keys, "winding.tension") == 0);
@@ -225,12 +234,8 @@ static void history_file(void)
   for (size_t i = 0; i < sizeof attrs / sizeof attrs[0]; ++i) {
     hid_t at = H5Aopen_by_name(file, attrs[i][0], attrs[i][1], H5P_DEFAULT, H5P_DEFAULT);
     CHECK(at >= 0);
-    hid_t at_type = H5Aget_type(at), ty = H5Tcopy(at_type);
-    H5Tclose(at_type);
-    CHECK(H5Tis_variable_str(ty) == 0);
-    size_t len = H5Tget_size(ty) + 1;
-    H5Tset_size(ty, len);
-    H5Tset_strpad(ty, H5T_STR_NULLTERM);
+    size_t len;
+    hid_t ty = nul_terminated(H5Aget_type(at), &len);
     char *text = calloc(1, len);
     CHECK(H5Aread(at, ty, text) >= 0);
     fprintf(stderr, "  %s @%s = '%s'\n", attrs[i][0], attrs[i][1], text);
