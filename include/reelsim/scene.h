@@ -54,5 +54,13 @@ void rs_scene_name(const rs_scene *scene, char *buf, size_t size);
  * ("  - core: elastic (E_c = 1e9 Pa), radius 76.2 mm", "  - nip: none (T0 = web tension)"). */
 void rs_scene_print_effects(const rs_scene *scene, FILE *out);
 
+/* Slip warnings: values the scene's checks accepted but that lie outside the range plants
+ * use for their key, each with the unit slip that would explain it ("cases/x.yaml:7:
+ * winding.speed 600 m/s: did you mean 600 m/min? (plants use 0 to 50 m/s)"; the ranges:
+ * docs/scenes.md). How many (0 for NULL), and the i-th (0-based; "" out of range). Owned by
+ * the scene. */
+int rs_scene_warning_count(const rs_scene *scene);
+const char *rs_scene_warning(const rs_scene *scene, int i);
+
 RS_END_DECLS
 #endif

@@ -38,5 +38,7 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr);
 /* A note on stderr when the scene has storage stages that `command` does not simulate
  * (only `reelsim run` does; docs/storage.md). */
 void cli_note_storage_ignored(const rs_scene *scene, const char *command);
+/* warnings.c: the scene's slip warnings on stderr ("reelsim: warning: ..."), one a line */
+void cli_scene_warnings(const rs_scene *scene);
 
 #endif

@@ -9,6 +9,7 @@ int cli_check(const cli_args *a)
   rs_scene *scene = NULL;
   rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) return cli_fail_status(st);
+  cli_scene_warnings(scene);
   if (!a->quiet) {
     printf("%s\n", rs_scene_title(scene));
     printf("scene %s: ok\n", rs_scene_path(scene));

@@ -52,6 +52,7 @@ static int load_all(compare_state *c, const cli_args *a, int n_sets, const char 
   for (int i = 0; i < c->n; ++i) {
     rs_status st = rs_scene_load(a->scenes[i], n_sets, sets, &c->scenes[i]);
     if (st == RS_OK) {
+      cli_scene_warnings(c->scenes[i]);
       cli_note_storage_ignored(c->scenes[i], "compare");
       continue;
     }

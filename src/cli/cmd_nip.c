@@ -40,6 +40,7 @@ int cli_nip(const cli_args *a)
   rs_scene *scene = NULL;
   rs_status st = rs_scene_load(scene_path, a->n_sets, a->sets, &scene);
   if (st) return cli_fail_status(st);
+  cli_scene_warnings(scene);
   const rs_problem *pb = rs_scene_problem(scene);
   if (pb->nip.model != RS_NIP_CONTACT) {
     rs_scene_destroy(&scene);

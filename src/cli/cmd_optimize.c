@@ -246,7 +246,8 @@ int cli_optimize(const cli_args *a)
   if (code >= 0) goto done;
   rs_scene *base = NULL;
   if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK)
-    cli_note_storage_ignored(base, "optimize");
+    cli_scene_warnings(base);
+  if (base) cli_note_storage_ignored(base, "optimize");
   rs_scene_destroy(&base);
 
   cli_signals sig;

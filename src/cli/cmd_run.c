@@ -150,6 +150,7 @@ int cli_run(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
+  cli_scene_warnings(scene);
 
   const rs_problem *pb = rs_scene_problem(scene);
   cli_progress prog;

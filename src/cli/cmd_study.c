@@ -173,6 +173,7 @@ int cli_study(const cli_args *a)
   cli_signals_install(&sig_saved);
 
   rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &base);
+  if (st == RS_OK) cli_scene_warnings(base);
   if (st == RS_OK) st = rs_study_plan_create(base, a->quick, &plan);
   if (st != RS_OK) {
     code = cli_fail_status(st);

@@ -58,6 +58,7 @@ static int prepare(sweep_state *s, const cli_args *a)
   }
   if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
     return cli_fail_status(st);
+  cli_scene_warnings(s->base);
   cli_note_storage_ignored(s->base, "sweep");
   for (int k = 0; k < s->n_vary; ++k)
     if ((st = sweep_vary_check(a->scene, a->n_sets, a->sets, &s->vary[k])) != RS_OK)

@@ -66,6 +66,10 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   rs_reel_sizes_of(res, rs_scene_problem(scene), &z);
   cli_json_string(j, "scene", rs_scene_path(scene));
   cli_json_string(j, "title", rs_scene_title(scene));
+  cli_json_array(j, "warnings"); /* the scene's slip warnings, strings (docs/cli.md) */
+  for (int i = 0; i < rs_scene_warning_count(scene); ++i)
+    cli_json_string(j, NULL, rs_scene_warning(scene, i));
+  cli_json_end(j);
   cli_json_int(j, "layers", s.layers);
   cli_json_number(j, "core_radius", res->core_radius);
   cli_json_number(j, "final_radius", s.final_radius);

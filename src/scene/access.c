@@ -37,3 +37,10 @@ void rs_scene_name(const rs_scene *scene, char *buf, size_t size)
   }
   rs_path_stem(scene->path, buf, size);
 }
+
+int rs_scene_warning_count(const rs_scene *scene) { return scene ? scene->n_warnings : 0; }
+
+const char *rs_scene_warning(const rs_scene *scene, int i)
+{
+  return scene && i >= 0 && i < scene->n_warnings ? scene->warnings[i] : "";
+}

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "reelsim/version.h"
+#include "scene/ranges.h"
 #include "scene/scene_internal.h"
 
 /* The resolved scene: a header of comments (what it came from, derived values), then the
@@ -29,7 +30,7 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
     ys_fmt(num[2], sizeof num[2], s->web_length);
     ADD(" (from web length %s m)", num[2]);
   }
-  ADD("\n");
+  ADD("\n%s", s->units_text);
   if (s->problem.tension.law == RS_RECIPE_HYPERBOLIC) {
     ys_fmt(num[0], sizeof num[0], s->problem.tension.k);
     ys_fmt(num[1], sizeof num[1], s->problem.tension.end);
@@ -75,12 +76,17 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   if (st == RS_OK) {
     /* a bad --set leaves the tree as it was: the file's own errors are still looked for */
     rs_status norm = ys_normalize(root);
-    if (norm == RS_OK) st = input_ok(ys_typecheck(root, &ys_scene_schema));
-    else st = input_ok(ys_note(norm));
+    /* numbers with units -> the keys' SI numbers (units.c), then the schema's checks */
+    if (norm == RS_OK) st = input_ok(ys_convert_units(root, s));
+    if (norm == RS_OK && st == RS_OK) st = input_ok(ys_typecheck(root, &ys_scene_schema));
+    if (norm != RS_OK) st = input_ok(ys_note(norm));
+    ys_units_note_errors();
   }
   if (st == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = ys_fill_defaults(root, s->path);
   if (st == RS_OK && (st = input_ok(ys_resolve(root, s))) == RS_OK) st = ys_errors_end();
+  /* plausibility bounds and slip warnings (bounds.c), on values the resolution accepted */
+  if (st == RS_OK && (st = input_ok(ys_check_ranges(root, s))) == RS_OK) st = ys_errors_end();
   if (st == RS_OK) st = yn_emit(root, &body);
   if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);
 

@@ -69,6 +69,27 @@ static rs_status remove_key(yn *root, const char *origin, const char *path,
   return RS_OK;
 }
 
+/* --set centrifugal=true / air=true switches the effect on (an empty mapping: its keys take
+ * their defaults, and later --set air.roughness=... fill it; a mapping already there stays
+ * as it is), =false switches it off (the key goes). */
+static int is_switch(const char *path) { return strcmp(path, "centrifugal") == 0 || strcmp(path, "air") == 0; }
+
+static rs_status set_switch(yn *root, const char *key, const char *value, const char *origin)
+{
+  if (strcmp(value, "false") == 0) {
+    yn_map_remove(root, key);
+    return RS_OK;
+  }
+  yn *have = yn_map_get(root, key);
+  if (have && have->kind == YN_MAP) return RS_OK;
+  yn *map = yn_new_map(root->file, 0, key);
+  if (!map) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  rs_status st = yn_set_origin(map, origin);
+  if (st == RS_OK) st = yn_map_put(root, key, map);
+  else yn_free(map);
+  return st;
+}
+
 rs_status ys_apply_set(yn *root, const char *set, int pass)
 {
   char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
@@ -89,6 +110,10 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
     yn *mat = yn_map_get(root, "material");
     if (mat && mat->kind == YN_SCALAR) return set_scalar(mat, value, origin); /* material: NAME */
   }
+
+  if (is_switch(path) && (strcmp(value, "true") == 0 || strcmp(value, "false") == 0) &&
+      root->kind == YN_MAP)
+    return set_switch(root, path, value, origin);
 
   int n = yn_path_split(path, seg, 16);
   if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);

@@ -9,34 +9,19 @@
 enum { RS_MAX_LAYERS = 10000000 };
 static const double pi = 3.14159265358979323846;
 
-/* The core's size is its radius or its diameter (engineers quote cores by diameter), one
- * of the two. Returns the key given in *key. */
-static rs_status core_size(const yn *root, double *radius, const char **key)
-{
-  int has_r = ys_has(root, "core.radius"), has_d = ys_has(root, "core.diameter");
-  if (has_r && has_d)
-    return ys_fail(root, "core.diameter", "give either core.radius or core.diameter, not both");
-  if (!has_r && !has_d)
-    return ys_fail(root, "core.radius", "required: the core size as radius (m) or diameter (m)");
-  *key = has_r ? "core.radius" : "core.diameter";
-  double v = ys_num(root, *key);
-  if (!(v > 0.0)) return ys_fail(root, *key, "must be > 0 m (got %g)", v);
-  *radius = has_r ? v : 0.5 * v;
-  return RS_OK;
-}
-
 static rs_status resolve_core(const yn *root, rs_core *c)
 {
   const double rating = ys_num(root, "core.rating"),
-               stiffness = ys_num(root, "core.stiffness"), bore = ys_num(root, "core.bore"),
+               stiffness = ys_num(root, "core.stiffness"),
                modulus = ys_num(root, "core.modulus"), poisson = ys_num(root, "core.poisson");
   int elastic = ys_has(root, "core.stiffness");
   int tube = ys_has(root, "core.bore") || ys_has(root, "core.modulus") ||
              ys_has(root, "core.poisson");
-  double radius = 0.0;
-  const char *size_key = NULL; /* which of radius and diameter */
+  double radius = 0.0, bore_given = 0.0;
+  const char *size_key = NULL, *bore_key = NULL; /* which keys gave the outside and inside */
+  int has_bore = 0;
   memset(c, 0, sizeof *c);
-  rs_status st = core_size(root, &radius, &size_key);
+  rs_status st = ys_core_geometry(root, &radius, &size_key, &bore_given, &has_bore, &bore_key);
   if (st != RS_OK) return st;
   c->radius = radius;
   if (ys_has(root, "core.rating")) {
@@ -62,17 +47,18 @@ static rs_status resolve_core(const yn *root, rs_core *c)
   }
   static const char *const tube_keys[] = {"core.bore", "core.modulus", "core.poisson"};
   for (int i = 0; i < 3; ++i)
-    if (!ys_has(root, tube_keys[i]))
-      return ys_fail(root, tube_keys[i], "a tube core needs bore, modulus and poisson");
-  if (!(bore >= 0.0 && bore < radius))
-    return ys_fail(root, "core.bore", "must be >= 0 and < core.radius = %g m (got %g)", radius,
-                   bore);
+    if (i == 0 ? !has_bore : !ys_has(root, tube_keys[i]))
+      return ys_fail(root, tube_keys[i], "a tube core needs bore (or inner_diameter or wall), "
+                                         "modulus and poisson");
+  if (!(bore_given >= 0.0 && bore_given < radius))
+    return ys_fail(root, bore_key, "must be >= 0 and < core.radius = %g m (got %g)", radius,
+                   bore_given);
   if (!(modulus > 0.0))
     return ys_fail(root, "core.modulus", "must be > 0 Pa (got %g)", modulus);
   if (!(poisson > -1.0 && poisson < 0.5))
     return ys_fail(root, "core.poisson", "must lie in (-1, 0.5) (got %g)", poisson);
   c->kind = RS_CORE_TUBE;
-  c->bore = bore;
+  c->bore = bore_given;
   c->modulus = modulus;
   c->poisson = poisson;
   return RS_OK;

@@ -50,6 +50,10 @@ rs_status ys_resolve_material(const yn *root, rs_material *m);
 rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
                             double r1, rs_recipe *out);
 rs_status ys_resolve(const yn *root, rs_scene *scene);
+/* resolve_core.c: the core's outer radius and, when given, its inner radius (bore,
+ * inner_diameter or wall), with the keys they came from */
+rs_status ys_core_geometry(const yn *root, double *radius, const char **key, double *bore,
+                           int *has_bore, const char **bore_key);
 /* resolve_storage.c: winding temperature and humidity, storage stages, the material's
  * thermal, hygroscopic and viscoelastic data, the core's expansion (docs/storage.md). */
 rs_status ys_resolve_storage(const yn *root, rs_scene *scene);

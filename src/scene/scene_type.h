@@ -8,6 +8,8 @@
 #include "reelsim/problem.h"
 #include "reelsim/scene.h"
 
+enum { RS_SCENE_MAX_WARNINGS = 16 };
+
 typedef struct rs_output_spec {
   char file[RS_PATH_MAX];  /* HDF5 output; "" = none unless -o */
 } rs_output_spec;
@@ -20,6 +22,12 @@ struct rs_scene {
   double web_length;                /* m (0 when final_radius was given) */
   rs_output_spec output;
   char *resolved_text;              /* the resolved scene as YAML (owned) */
+  /* numbers written with a unit and what they became, for the resolved scene's header
+   * ("# units: material.caliper: 20 um = 2e-05 m"; units.c) */
+  char units_text[2048];
+  /* slip warnings: values outside the range plants use (ranges.c) */
+  int n_warnings;
+  char warnings[RS_SCENE_MAX_WARNINGS][320];
 };
 
 #endif

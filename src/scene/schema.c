@@ -99,7 +99,8 @@ static const ys_field core_fields[] = {
     OPT("radius", &v_float),  OPT("stiffness", &v_float), OPT("bore", &v_float),
     OPT("modulus", &v_float), OPT("poisson", &v_float),   OPT("rating", &v_float),
     OPT("alpha", &v_float),   OPT("beta", &v_float),
-    OPT("diameter", &v_float), END}; /* new keys go last: messages list the keys in order */
+    OPT("diameter", &v_float), OPT("inner_diameter", &v_float), OPT("wall", &v_float),
+    END}; /* new keys go last: messages list the keys in order */
 static const ys_value v_core = MAP(core_fields);
 
 static const ys_field winding_fields[] = {

@@ -4,7 +4,7 @@ set(SC ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes)
 set(CASES ${PROJECT_SOURCE_DIR}/cases)
 
 # --- bad scenes: one per class of input error --------------------------------------
-rs_cli_test(bad_unknown_key 2 [[bad-key\.yaml:4: core\.radus: unknown key 'radus' \(expected one of: radius, stiffness, bore, modulus, poisson, rating, alpha, beta, diameter\)]]
+rs_cli_test(bad_unknown_key 2 [[bad-key\.yaml:4: core\.radus: unknown key 'radus' \(expected one of: radius, stiffness, bore, modulus, poisson, rating, alpha, beta, diameter, inner_diameter, wall\)]]
             check ${SC}/bad-key.yaml)
 rs_cli_test(bad_wrong_type 2 [[bad-type\.yaml:3: material\.caliper: not a number \(got 'abc'\)]]
             check ${SC}/bad-type.yaml)

@@ -70,7 +70,7 @@ static void diameter_keys(void)
           0, NULL, "winding.final_diameter: must be > the core diameter 0.1524 m", NULL);
   refused("material: newsprint\ncore: {stiffness: 1e9}\n"
           "winding: {final_diameter: 0.6, tension: 350}\n",
-          0, NULL, "core.radius: required: the core size as radius (m) or diameter (m)", NULL);
+          0, NULL, "core.radius: required: the core size as radius (m), diameter (m), or inner_diameter and wall (m)", NULL);
 }
 
 /* Layers one caliper thick: sum_j pi (r_{j-1} + r_j) = pi (r_N^2 - r_c^2) / t exactly
