@@ -3,7 +3,8 @@
 # .ci/run runs exactly this. Three passes:
 #   1. the normal build (build/): every test, plus the unit tests again under valgrind;
 #   2. an AddressSanitizer + UBSan build (build-asan/): every test, any report fails it;
-#   3. the scene loader fuzzed with libFuzzer for 60 s (build-fuzz/, clang; scripts/fuzz.sh).
+#   3. the scene loader and the HDF5 reader fuzzed with libFuzzer, 60 s between them
+#      (build-fuzz/, clang; scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 echo "reelsim test.sh: the three passes take about 15-20 minutes on 2 cores (setup.sh's first"
@@ -19,7 +20,7 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 (cd build-asan && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)
 
-echo "== fuzzing the scene loader (build-fuzz/) =="
+echo "== fuzzing the scene loader and the HDF5 reader (build-fuzz/) =="
 bash scripts/fuzz.sh "${RS_FUZZ_SECONDS:-60}"
 
 # One closing line for both ctest passes (a failure above has already stopped the script).

@@ -41,8 +41,31 @@ const char *rs_reader_run_name(const rs_reader *r, int i);
 int rs_reader_exists(const rs_reader *r, const char *path);
 
 /* A 1-D dataset (any numeric type, converted to double; a scalar counts as 1 value).
- * *data is malloc'd (never NULL on success, even for 0 values); the caller frees it. */
+ * *data is malloc'd (never NULL on success, even for 0 values); the caller frees it
+ * (free, or rs_reader_free_data from a language without the C library's free).
+ *
+ * Every read first checks what it is about to trust (docs/output.md, "Checksums and
+ * checks"): only hard links are followed (an external or soft link is refused), the
+ * declared size must fit what the file stores before anything is allocated, types and
+ * sizes of attributes are checked before they are read, and in a file written with
+ * checksums every dataset must carry one, which HDF5 verifies as it reads. A file that
+ * fails any of these is RS_ERR_INPUT naming the file and the dataset or attribute. */
 rs_status rs_reader_read_1d(const rs_reader *r, const char *path, double **data, size_t *n);
+/* Frees what rs_reader_read_1d/_2d returned and sets *data to NULL (NULL accepted). */
+void rs_reader_free_data(double **data);
+
+/* What dataset `path` holds, without reading it: its kind, rank (0 for a scalar, 1, 2)
+ * and dims (1 for missing dimensions). RS_ERR_INPUT when it is no dataset (or refused,
+ * as a read would be) or has more than 2 dimensions. */
+typedef enum rs_reader_kind {
+  RS_READER_OTHER = 0, /* compound (complex), enum (bool), ...: nothing reelsim writes */
+  RS_READER_FLOAT = 1,
+  RS_READER_INTEGER = 2,
+  RS_READER_STRING = 3
+} rs_reader_kind;
+rs_status rs_reader_inspect(const rs_reader *r, const char *path, rs_reader_kind *kind, int *rank,
+                            size_t dims[2]);
+
 /* A 2-D dataset, row-major, rows x cols doubles. */
 rs_status rs_reader_read_2d(const rs_reader *r, const char *path, double **data, size_t *rows,
                             size_t *cols);
@@ -57,6 +80,8 @@ void rs_reader_free_strings(char ***strings, size_t n);
  * RS_ERR_INPUT when the object or attribute is missing or not of the asked kind. */
 rs_status rs_reader_attr_string(const rs_reader *r, const char *path, const char *name,
                                 char **value);
+/* Frees a string rs_reader_attr_string returned and sets *text to NULL (NULL accepted). */
+void rs_reader_free_text(char **text);
 rs_status rs_reader_attr_double(const rs_reader *r, const char *path, const char *name,
                                 double *value);
 rs_status rs_reader_attr_int64(const rs_reader *r, const char *path, const char *name,

@@ -80,3 +80,24 @@ rs_fit_stack_flat = _fn("rs_fit_stack_flat", _c.c_int, _c.c_int, _c.POINTER(_c.c
                         _c.POINTER(_c.c_double), _CP, _c.c_int, _c.POINTER(_c.c_int),
                         _c.c_char_p, _c.POINTER(_c.c_double), _c.POINTER(_c.c_double),
                         _c.POINTER(_c.c_double))
+
+# reading result files (include/reelsim/reader.h): the one implementation of the layout
+_DP = _c.POINTER(_c.c_double)
+rs_reader_open = _fn("rs_reader_open", _c.c_int, _CP, _c.POINTER(_VP))
+rs_reader_close = _fn("rs_reader_close", None, _c.POINTER(_VP))
+rs_reader_is_compare = _fn("rs_reader_is_compare", _c.c_int, _VP)
+rs_reader_exists = _fn("rs_reader_exists", _c.c_int, _VP, _CP)
+rs_reader_inspect = _fn("rs_reader_inspect", _c.c_int, _VP, _CP, _c.POINTER(_c.c_int),
+                        _c.POINTER(_c.c_int), _c.POINTER(_c.c_size_t * 2))
+rs_reader_read_1d = _fn("rs_reader_read_1d", _c.c_int, _VP, _CP, _c.POINTER(_DP),
+                        _c.POINTER(_c.c_size_t))
+rs_reader_free_data = _fn("rs_reader_free_data", None, _c.POINTER(_DP))
+rs_reader_attr_string = _fn("rs_reader_attr_string", _c.c_int, _VP, _CP, _CP,
+                            _c.POINTER(_VP))
+rs_reader_free_text = _fn("rs_reader_free_text", None, _c.POINTER(_VP))
+rs_reader_attr_double = _fn("rs_reader_attr_double", _c.c_int, _VP, _CP, _CP,
+                            _c.POINTER(_c.c_double))
+rs_reader_attr_int64 = _fn("rs_reader_attr_int64", _c.c_int, _VP, _CP, _CP,
+                           _c.POINTER(_c.c_longlong))
+# enum rs_reader_kind
+RS_READER_OTHER, RS_READER_FLOAT, RS_READER_INTEGER, RS_READER_STRING = 0, 1, 2, 3

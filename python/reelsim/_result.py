@@ -30,6 +30,9 @@ class Result:
     at_speed_sigma_theta  Pa, hoop stress with the roll spinning
     at_speed_core_pressure  Pa, core pressure with the roll spinning
 
+    complete          False for a partial run: a file written when the winding stopped
+                      early (root attribute complete = 0); True for a run and for files
+                      without the attribute
     Beyond the final profile (None, {} when absent):
     defects   the verdicts of docs/defects.md on the final reel, {rule: {"verdict": "ok" |
               "risk" | "present" | "not assessed", figures...}} for the rules "starring"
@@ -60,6 +63,7 @@ class Result:
     at_speed_sigma_r: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_sigma_theta: np.ndarray = field(default_factory=lambda: np.empty(0))
     at_speed_core_pressure: float = float("nan")
+    complete: bool = True
     defects: dict = field(default_factory=dict)
     storage: object = None
     history: object = None

@@ -6,8 +6,10 @@
  * file twice over, briefly, at the end. */
 
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "output/h5_util.h"
 
@@ -19,7 +21,11 @@ rs_status rs_h5_memfile_create(hid_t *file)
   snprintf(label, sizeof label, "reelsim-in-memory-%lu", atomic_fetch_add(&counter, 1));
   *file = -1;
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl < 0 || H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) < 0) {
+  /* The newest format this HDF5 writes (1.10's): every piece of metadata (superblock,
+   * object headers, link and chunk indexes) then carries a checksum that HDF5 verifies
+   * on reading; the 1.8 format still indexes chunks with unchecked v1 B-trees. */
+  if (fapl < 0 || H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) < 0 ||
+      H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST) < 0) {
     rs_h5_error_detail(detail, sizeof detail);
     if (fapl >= 0) H5Pclose(fapl);
     return RS_ERROR(RS_ERR_IO, "cannot set up an in-memory HDF5 file: %s", detail);
@@ -29,6 +35,70 @@ rs_status rs_h5_memfile_create(hid_t *file)
   H5Pclose(fapl);
   if (*file < 0) return RS_ERROR(RS_ERR_IO, "cannot create an in-memory HDF5 file: %s", detail);
   return RS_OK;
+}
+
+static uint32_t rot32(uint32_t x, int k) { return (x << k) | (x >> (32 - k)); }
+
+static uint32_t le32(const unsigned char *p, size_t n)
+{
+  uint32_t v = 0;
+  for (size_t i = 0; i < n && i < 4; ++i) v |= (uint32_t)p[i] << (8 * i);
+  return v;
+}
+
+/* The checksum of HDF5's metadata: Bob Jenkins' lookup3 hash ("hashlittle", initial
+ * value 0) of the bytes, as the HDF5 file format specification names it. */
+static uint32_t lookup3(const unsigned char *k, size_t n)
+{
+  uint32_t a, b, c;
+  a = b = c = 0xdeadbeefu + (uint32_t)n;
+  for (; n > 12; n -= 12, k += 12) {
+    a += le32(k, 4);
+    b += le32(k + 4, 4);
+    c += le32(k + 8, 4);
+    a -= c; a ^= rot32(c, 4); c += b;
+    b -= a; b ^= rot32(a, 6); a += c;
+    c -= b; c ^= rot32(b, 8); b += a;
+    a -= c; a ^= rot32(c, 16); c += b;
+    b -= a; b ^= rot32(a, 19); a += c;
+    c -= b; c ^= rot32(b, 4); b += a;
+  }
+  if (n == 0) return c;
+  a += le32(k, n);
+  if (n > 4) b += le32(k + 4, n - 4);
+  if (n > 8) c += le32(k + 8, n - 8);
+  c ^= b; c -= rot32(b, 14);
+  a ^= c; a -= rot32(c, 11);
+  b ^= a; b -= rot32(a, 25);
+  c ^= b; c -= rot32(b, 16);
+  a ^= c; a -= rot32(c, 4);
+  b ^= a; b -= rot32(a, 14);
+  c ^= b; c -= rot32(b, 24);
+  return c;
+}
+
+/* H5Fget_file_image of HDF5 1.10 clears the "open for writing" flag of a version 2 or 3
+ * superblock in the copy but leaves the superblock's checksum as it was, so no HDF5
+ * opens the image ("incorrect metadata checksum"). The superblock is signature, version,
+ * the two sizes, the flags, four addresses, then the checksum of all that: compute it
+ * again. Nothing is changed unless the old checksum is that of the flags set, so an
+ * HDF5 that gets it right is left alone. */
+static void fix_superblock_checksum(unsigned char *img, size_t size)
+{
+  static const unsigned char sig[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+  if (size < 12 || memcmp(img, sig, 8) != 0 || (img[8] != 2 && img[8] != 3)) return;
+  size_t offsets = img[9], body = 12 + 4 * offsets;
+  if ((offsets != 4 && offsets != 8) || size < body + 4) return;
+  uint32_t stored = le32(img + body, 4), now = lookup3(img, body);
+  if (stored == now || img[11] != 0) return;
+  for (unsigned flags = 1; flags < 8; ++flags) {
+    img[11] = (unsigned char)flags;
+    int was = lookup3(img, body) == stored;
+    img[11] = 0;
+    if (!was) continue;
+    for (int i = 0; i < 4; ++i) img[body + (size_t)i] = (unsigned char)(now >> (8 * i));
+    return;
+  }
 }
 
 rs_status rs_h5_memfile_image(hid_t file, void **image, size_t *size)
@@ -52,5 +122,6 @@ rs_status rs_h5_memfile_image(hid_t file, void **image, size_t *size)
     return RS_ERROR(RS_ERR_IO, "cannot copy the in-memory HDF5 file: %s", detail);
   }
   *size = (size_t)n;
+  fix_superblock_checksum(*image, *size);
   return RS_OK;
 }

@@ -5,17 +5,20 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
 #include <hdf5.h>
 
+#include "output/h5_read_check.h"
 #include "output/h5_util.h"
 
 struct rs_reader {
   char *path;
   hid_t file;
+  rs_h5_bounds bounds; /* what the checks of h5_read_check.c know of the file */
   int compare;
   int n_runs;
   char **base; /* "" or "/runs/<name>" */
@@ -39,6 +42,20 @@ void rs_reader_free_strings(char ***strings, size_t n)
   for (size_t i = 0; i < n; ++i) free((*strings)[i]);
   free(*strings);
   *strings = NULL;
+}
+
+void rs_reader_free_data(double **data)
+{
+  if (!data) return;
+  free(*data);
+  *data = NULL;
+}
+
+void rs_reader_free_text(char **text)
+{
+  if (!text) return;
+  free(*text);
+  *text = NULL;
 }
 
 void rs_reader_close(rs_reader **rp)
@@ -65,26 +82,9 @@ const char *rs_reader_run_name(const rs_reader *r, int i)
   return i >= 0 && i < r->n_runs ? r->name[i] : NULL;
 }
 
-/* Exists, walking the path one link at a time (H5Lexists fails on a missing parent). */
-static int exists_quiet(hid_t file, const char *path)
-{
-  const char *p = h5path(path);
-  if (strcmp(p, "/") == 0) return 1;
-  size_t len = strlen(p);
-  char *buf = malloc(len + 1);
-  if (!buf) return 0;
-  memcpy(buf, p, len + 1);
-  int ok = 1;
-  for (size_t i = 1; ok && i <= len; ++i) {
-    if (buf[i] != '/' && buf[i] != '\0') continue;
-    char c = buf[i];
-    buf[i] = '\0';
-    ok = H5Lexists(file, buf, H5P_DEFAULT) > 0 && H5Oexists_by_name(file, buf, H5P_DEFAULT) > 0;
-    buf[i] = c;
-  }
-  free(buf);
-  return ok;
-}
+/* Exists, walking the path one link at a time (H5Lexists fails on a missing parent):
+ * 1, 0, or a negative RS_H5_LINK_* (an external or soft link, a damaged group). */
+static int exists_quiet(hid_t file, const char *path) { return rs_h5_walk(file, h5path(path)); }
 
 int rs_reader_exists(const rs_reader *r, const char *path)
 {
@@ -92,7 +92,9 @@ int rs_reader_exists(const rs_reader *r, const char *path)
   rs_h5_quiet_begin(&q);
   int ok = exists_quiet(r->file, path);
   rs_h5_quiet_end(&q);
-  return ok;
+  /* a refused link or a damaged group is "there": reading it then says what is wrong,
+   * where "absent" would let an optional curve vanish silently */
+  return ok != 0;
 }
 
 /* ---- datasets ------------------------------------------------------------------------- */
@@ -103,9 +105,13 @@ static rs_status open_dataset(const rs_reader *r, const char *path, int max_rank
                               int *rank, hsize_t dims[2])
 {
   *dset = -1;
-  if (!exists_quiet(r->file, path))
-    return RS_ERROR(RS_ERR_INPUT, "%s: no dataset '%s'", r->path, h5path(path));
-  hid_t d = H5Dopen2(r->file, path, H5P_DEFAULT);
+  int there = exists_quiet(r->file, path);
+  if (there < 0) return rs_h5_walk_error(&r->bounds, h5path(path), there);
+  if (!there) return RS_ERROR(RS_ERR_INPUT, "%s: no dataset '%s'", r->path, h5path(path));
+  H5O_info_t info;
+  if (H5Oget_info_by_name(r->file, path, &info, H5P_DEFAULT) < 0)
+    return RS_ERROR(RS_ERR_INPUT, "%s: '%s': its object header is damaged", r->path, path);
+  hid_t d = info.type == H5O_TYPE_DATASET ? H5Dopen2(r->file, path, H5P_DEFAULT) : -1;
   if (d < 0) return RS_ERROR(RS_ERR_INPUT, "%s: '%s' is not a dataset", r->path, path);
   hid_t space = H5Dget_space(d);
   int k = space >= 0 ? H5Sget_simple_extent_ndims(space) : -1;
@@ -114,7 +120,7 @@ static rs_status open_dataset(const rs_reader *r, const char *path, int max_rank
   if (space >= 0) H5Sclose(space);
   if (k < 0 || k > max_rank) {
     H5Dclose(d);
-    if (k < 0) return RS_ERROR(RS_ERR_IO, "%s: cannot read the shape of '%s'", r->path, path);
+    if (k < 0) return RS_ERROR(RS_ERR_INPUT, "%s: cannot read the shape of '%s'", r->path, path);
     return RS_ERROR(RS_ERR_INPUT, "%s: '%s' has %d dimensions (expected at most %d)", r->path,
                     path, k, max_rank);
   }
@@ -129,11 +135,8 @@ static rs_status open_dataset(const rs_reader *r, const char *path, int max_rank
 static rs_status read_all(const rs_reader *r, const char *path, hid_t d, size_t count,
                           double **data)
 {
-  hid_t type = H5Dget_type(d);
-  H5T_class_t cls = type >= 0 ? H5Tget_class(type) : H5T_NO_CLASS;
-  if (type >= 0) H5Tclose(type);
-  if (cls != H5T_FLOAT && cls != H5T_INTEGER)
-    return RS_ERROR(RS_ERR_INPUT, "%s: '%s' does not hold numbers", r->path, path);
+  rs_status st = rs_h5_check_dataset(&r->bounds, path, d, 0);
+  if (st != RS_OK) return st;
   *data = malloc((count ? count : 1) * sizeof **data);
   if (!*data) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %zu values of '%s'", count, path);
   if (count > 0 && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, *data) < 0) {
@@ -141,7 +144,8 @@ static rs_status read_all(const rs_reader *r, const char *path, hid_t d, size_t 
     rs_h5_error_detail(detail, sizeof detail);
     free(*data);
     *data = NULL;
-    return RS_ERROR(RS_ERR_IO, "%s: cannot read '%s': %s", r->path, path, detail);
+    /* a checksum that does not match, a chunk that does not inflate: the file is damaged */
+    return RS_ERROR(RS_ERR_INPUT, "%s: cannot read '%s' (damaged): %s", r->path, path, detail);
   }
   return RS_OK;
 }
@@ -221,7 +225,7 @@ static rs_status read_string_values(const rs_reader *r, const char *what, hid_t 
     herr_t e = !v ? -1
                : attr >= 0 ? H5Aread(attr, mtype, v)
                            : H5Dread(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, v);
-    if (e < 0) st = RS_ERROR(RS_ERR_IO, "%s: cannot read %s", r->path, what);
+    if (e < 0) st = RS_ERROR(RS_ERR_INPUT, "%s: cannot read %s (damaged)", r->path, what);
     for (size_t i = 0; st == RS_OK && i < n; ++i)
       if (!(out[i] = dup_str(v[i] ? v[i] : ""))) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
     if (e >= 0 && v) {
@@ -236,10 +240,11 @@ static rs_status read_string_values(const rs_reader *r, const char *what, hid_t 
     char *buf = malloc(n * (len + 1) + 1);
     H5Tset_size(mtype, len + 1);
     H5Tset_strpad(mtype, H5T_STR_NULLTERM);
+    H5Tset_cset(mtype, H5Tget_cset(ftype)); /* HDF5 converts no character sets */
     herr_t e = !buf ? -1
                : attr >= 0 ? H5Aread(attr, mtype, buf)
                            : H5Dread(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
-    if (e < 0) st = RS_ERROR(RS_ERR_IO, "%s: cannot read %s", r->path, what);
+    if (e < 0) st = RS_ERROR(RS_ERR_INPUT, "%s: cannot read %s (damaged)", r->path, what);
     for (size_t i = 0; st == RS_OK && i < n; ++i)
       if (!(out[i] = dup_str(buf + i * (len + 1)))) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
     free(buf);
@@ -261,6 +266,7 @@ rs_status rs_reader_read_strings(const rs_reader *r, const char *path, char ***s
   rs_h5_quiet q;
   rs_h5_quiet_begin(&q);
   rs_status st = open_dataset(r, path, 1, &d, &rank, dims);
+  if (st == RS_OK && (st = rs_h5_check_dataset(&r->bounds, path, d, 1)) != RS_OK) H5Dclose(d);
   if (st == RS_OK) {
     size_t k = (size_t)dims[0];
     *strings = calloc(k ? k : 1, sizeof **strings);
@@ -281,13 +287,15 @@ static rs_status open_attr(const rs_reader *r, const char *path, const char *nam
 {
   const char *p = h5path(path);
   *attr = -1;
-  if (!exists_quiet(r->file, p))
-    return RS_ERROR(RS_ERR_INPUT, "%s: no object '%s'", r->path, p);
-  if (H5Aexists_by_name(r->file, p, name, H5P_DEFAULT) <= 0)
-    return RS_ERROR(RS_ERR_INPUT, "%s: '%s' has no attribute '%s'", r->path, p, name);
-  *attr = H5Aopen_by_name(r->file, p, name, H5P_DEFAULT, H5P_DEFAULT);
+  int there = exists_quiet(r->file, p);
+  if (there < 0) return rs_h5_walk_error(&r->bounds, p, there);
+  if (!there) return RS_ERROR(RS_ERR_INPUT, "%s: no object '%s'", r->path, p);
+  htri_t has = H5Aexists_by_name(r->file, p, name, H5P_DEFAULT);
+  if (has == 0) return RS_ERROR(RS_ERR_INPUT, "%s: '%s' has no attribute '%s'", r->path, p, name);
+  *attr = has < 0 ? -1 : H5Aopen_by_name(r->file, p, name, H5P_DEFAULT, H5P_DEFAULT);
   if (*attr < 0)
-    return RS_ERROR(RS_ERR_IO, "%s: cannot open attribute '%s' of '%s'", r->path, name, p);
+    return RS_ERROR(RS_ERR_INPUT, "%s: cannot open attribute '%s' of '%s' (damaged)", r->path,
+                    name, p);
   return RS_OK;
 }
 
@@ -302,11 +310,8 @@ rs_status rs_reader_attr_string(const rs_reader *r, const char *path, const char
   rs_status st = open_attr(r, path, name, &a);
   if (st == RS_OK) {
     snprintf(what, sizeof what, "attribute '%s' of '%s'", name, h5path(path));
-    hid_t space = H5Aget_space(a);
-    hssize_t npts = space >= 0 ? H5Sget_simple_extent_npoints(space) : -1;
-    if (space >= 0) H5Sclose(space);
-    if (npts != 1) st = RS_ERROR(RS_ERR_INPUT, "%s: %s is not a single string", r->path, what);
-    else st = read_string_values(r, what, a, -1, 1, value);
+    st = rs_h5_check_attr(&r->bounds, what, a, 1);
+    if (st == RS_OK) st = read_string_values(r, what, a, -1, 1, value);
     H5Aclose(a);
   }
   rs_h5_quiet_end(&q);
@@ -324,11 +329,12 @@ static rs_status attr_number(const rs_reader *r, const char *path, const char *n
     hid_t type = H5Aget_type(a), space = H5Aget_space(a);
     H5T_class_t cls = type >= 0 ? H5Tget_class(type) : H5T_NO_CLASS;
     hssize_t npts = space >= 0 ? H5Sget_simple_extent_npoints(space) : -1;
-    if ((cls != H5T_FLOAT && cls != H5T_INTEGER) || npts != 1)
+    size_t size = type >= 0 ? H5Tget_size(type) : 0;
+    if ((cls != H5T_FLOAT && cls != H5T_INTEGER) || npts != 1 || size == 0 || size > 8)
       st = RS_ERROR(RS_ERR_INPUT, "%s: attribute '%s' of '%s' is not a single number", r->path,
                     name, h5path(path));
     else if (H5Aread(a, mtype, value) < 0)
-      st = RS_ERROR(RS_ERR_IO, "%s: cannot read attribute '%s' of '%s'", r->path, name,
+      st = RS_ERROR(RS_ERR_INPUT, "%s: cannot read (damaged) attribute '%s' of '%s'", r->path, name,
                     h5path(path));
     if (type >= 0) H5Tclose(type);
     if (space >= 0) H5Sclose(space);
@@ -409,12 +415,15 @@ rs_status rs_reader_children(const rs_reader *r, const char *path, char ***names
   rs_h5_quiet_begin(&q);
   hid_t g = -1;
   H5O_info_t info;
-  if (!exists_quiet(r->file, p) || H5Oget_info_by_name(r->file, p, &info, H5P_DEFAULT) < 0 ||
-      info.type != H5O_TYPE_GROUP || (g = H5Gopen2(r->file, p, H5P_DEFAULT)) < 0)
+  int there = exists_quiet(r->file, p);
+  if (there < 0)
+    st = rs_h5_walk_error(&r->bounds, p, there);
+  else if (!there || H5Oget_info_by_name(r->file, p, &info, H5P_DEFAULT) < 0 ||
+           info.type != H5O_TYPE_GROUP || (g = H5Gopen2(r->file, p, H5P_DEFAULT)) < 0)
     st = RS_ERROR(RS_ERR_INPUT, "%s: no group '%s'", r->path, p);
   else if (H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, NULL, collect_name, &l) < 0)
     st = l.failed ? RS_ERROR(RS_ERR_MEMORY, "out of memory listing '%s'", p)
-                  : RS_ERROR(RS_ERR_IO, "%s: cannot list group '%s'", r->path, p);
+                  : RS_ERROR(RS_ERR_INPUT, "%s: cannot list group '%s' (damaged)", r->path, p);
   if (g >= 0) H5Gclose(g);
   rs_h5_quiet_end(&q);
   if (st != RS_OK) {
@@ -461,7 +470,10 @@ static rs_status find_runs(rs_reader *r)
       break;
     }
     snprintf(base, len, "/runs/%s", names[i]);
-    if (!exists_quiet(r->file, base))
+    int there = exists_quiet(r->file, base);
+    if (there < 0)
+      st = rs_h5_walk_error(&r->bounds, base, there);
+    else if (!there)
       st = RS_ERROR(RS_ERR_INPUT, "%s: /summary/run names '%s', which is not there", r->path,
                     base);
     else
@@ -471,6 +483,41 @@ static rs_status find_runs(rs_reader *r)
   rs_reader_free_strings(&names, n);
   if (st == RS_OK && r->n_runs == 0)
     st = RS_ERROR(RS_ERR_INPUT, "%s: a comparison file without runs", r->path);
+  return st;
+}
+
+/* The file is open (r->file): what the checks need, then is it ours, then its runs. */
+static rs_status open_opened(rs_reader *r, hsize_t size)
+{
+  H5F_info2_t info;
+  r->bounds.name = r->path;
+  r->bounds.file_size = size;
+  r->bounds.checksummed = H5Fget_info2(r->file, &info) >= 0 && info.super.version >= 2;
+  char *program = NULL;
+  rs_status st = rs_reader_attr_string(r, "/", "program", &program);
+  int ours = st == RS_OK && strcmp(program, "reelsim") == 0;
+  free(program);
+  /* there but unreadable: say so rather than "not a reelsim file" */
+  if (st != RS_OK && H5Aexists_by_name(r->file, "/", "program", H5P_DEFAULT) != 0) return st;
+  if (!ours)
+    return RS_ERROR(RS_ERR_INPUT, "'%s' is an HDF5 file but not a reelsim file (no root "
+                                  "attribute program = \"reelsim\")", r->path);
+  if ((st = rs_h5_check_metadata(&r->bounds, r->file)) != RS_OK) return st;
+  int runs = exists_quiet(r->file, "/runs");
+  if (runs < 0) return rs_h5_walk_error(&r->bounds, "/runs", runs);
+  r->compare = runs;
+  if (r->compare) return find_runs(r);
+  /* a run file's one run is named after the file */
+  const char *base = strrchr(r->path, '/');
+  base = base ? base + 1 : r->path;
+  const char *dot = strrchr(base, '.');
+  size_t len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+  char *stem = malloc(len + 1);
+  if (!stem) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  memcpy(stem, base, len);
+  stem[len] = '\0';
+  st = add_run(r, "", stem);
+  free(stem);
   return st;
 }
 
@@ -487,32 +534,34 @@ static rs_status open_file(rs_reader *r)
   if (r->file < 0) {
     char detail[512];
     rs_h5_error_detail(detail, sizeof detail);
-    return RS_ERROR(RS_ERR_INPUT, "cannot open HDF5 file '%s': %s", r->path, detail);
+    return RS_ERROR(RS_ERR_INPUT, "cannot open HDF5 file '%s' (damaged?): %s", r->path, detail);
   }
-  char *program = NULL;
-  rs_status st = rs_reader_attr_string(r, "/", "program", &program);
-  int ours = st == RS_OK && strcmp(program, "reelsim") == 0;
-  free(program);
-  if (!ours)
-    return RS_ERROR(RS_ERR_INPUT, "'%s' is an HDF5 file but not a reelsim file (no root "
-                                  "attribute program = \"reelsim\")", r->path);
-  r->compare = exists_quiet(r->file, "/runs");
-  if (r->compare) return find_runs(r);
-  /* a run file's one run is named after the file */
-  const char *base = strrchr(r->path, '/');
-  base = base ? base + 1 : r->path;
-  const char *dot = strrchr(base, '.');
-  size_t len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-  char *stem = malloc(len + 1);
-  if (!stem) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  memcpy(stem, base, len);
-  stem[len] = '\0';
-  st = add_run(r, "", stem);
-  free(stem);
-  return st;
+  return open_opened(r, (hsize_t)sb.st_size);
 }
 
-rs_status rs_reader_open(const char *path, rs_reader **out)
+static rs_status open_image(rs_reader *r, const void *image, size_t size)
+{
+  static unsigned long counter;
+  char label[64], detail[512];
+  /* the name only labels the in-memory file, unique among open files */
+  snprintf(label, sizeof label, "reelsim-image-%lu", ++counter);
+  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  if (fapl < 0 || H5Pset_fapl_core(fapl, 1 << 16, 0) < 0 ||
+      H5Pset_file_image(fapl, (void *)image, size) < 0) {
+    if (fapl >= 0) H5Pclose(fapl);
+    return RS_ERROR(RS_ERR_IO, "cannot set up an in-memory HDF5 file");
+  }
+  r->file = H5Fopen(label, H5F_ACC_RDONLY, fapl);
+  H5Pclose(fapl);
+  if (r->file < 0) {
+    rs_h5_error_detail(detail, sizeof detail);
+    return RS_ERROR(RS_ERR_INPUT, "cannot open HDF5 file '%s' (damaged?): %s", r->path, detail);
+  }
+  return open_opened(r, size);
+}
+
+/* Opens from the file `path` (image NULL) or from the bytes of image. */
+static rs_status reader_open(const char *path, const void *image, size_t size, rs_reader **out)
 {
   *out = NULL;
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no file name given");
@@ -524,9 +573,54 @@ rs_status rs_reader_open(const char *path, rs_reader **out)
   r->file = -1;
   rs_h5_quiet q;
   rs_h5_quiet_begin(&q);
-  rs_status st = open_file(r);
+  rs_status st = image ? open_image(r, image, size) : open_file(r);
   rs_h5_quiet_end(&q);
   if (st != RS_OK) rs_reader_close(&r);
   *out = r;
+  return st;
+}
+
+rs_status rs_reader_open(const char *path, rs_reader **out)
+{
+  return reader_open(path, NULL, 0, out);
+}
+
+rs_status rs_reader_open_image(const void *image, size_t size, const char *name,
+                               rs_reader **out)
+{
+  if (!image || size == 0) {
+    *out = NULL;
+    return RS_ERROR(RS_ERR_INPUT, "%s: an empty file", name ? name : "(image)");
+  }
+  return reader_open(name, image, size, out);
+}
+
+rs_status rs_reader_inspect(const rs_reader *r, const char *path, rs_reader_kind *kind, int *rank,
+                            size_t dims[2])
+{
+  hid_t d;
+  int k = 0;
+  hsize_t dd[2] = {1, 1};
+  *kind = RS_READER_OTHER;
+  dims[0] = dims[1] = 1;
+  *rank = 0;
+  rs_h5_quiet q;
+  rs_h5_quiet_begin(&q);
+  rs_status st = open_dataset(r, path, 2, &d, &k, dd);
+  if (st == RS_OK) {
+    hid_t type = H5Dget_type(d);
+    switch (type >= 0 ? H5Tget_class(type) : H5T_NO_CLASS) {
+    case H5T_FLOAT: *kind = RS_READER_FLOAT; break;
+    case H5T_INTEGER: *kind = RS_READER_INTEGER; break;
+    case H5T_STRING: *kind = RS_READER_STRING; break;
+    default: *kind = RS_READER_OTHER; break;
+    }
+    if (type >= 0) H5Tclose(type);
+    H5Dclose(d);
+    *rank = k;
+    dims[0] = (size_t)dd[0];
+    dims[1] = (size_t)dd[1];
+  }
+  rs_h5_quiet_end(&q);
   return st;
 }

@@ -37,10 +37,12 @@ static char *join_words(int n, const char *const *words)
 static rs_status write_values(hid_t g, const rs_output_sweep *sw)
 {
   hsize_t dims[2] = {(hsize_t)sw->n_runs, (hsize_t)sw->n_keys};
-  hid_t space = H5Screate_simple(2, dims, NULL);
-  hid_t ds = space < 0 ? -1
-                       : H5Dcreate2(g, "values", H5T_IEEE_F64LE, space, H5P_DEFAULT,
-                                    H5P_DEFAULT, H5P_DEFAULT);
+  hid_t space = H5Screate_simple(2, dims, NULL), dcpl = -1;
+  hid_t ds = space < 0 || rs_h5_dcpl_checked(space, sizeof(double), &dcpl) != RS_OK
+                 ? -1
+                 : H5Dcreate2(g, "values", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl,
+                              H5P_DEFAULT);
+  if (dcpl >= 0) H5Pclose(dcpl);
   rs_status st = RS_OK;
   if (ds < 0 || H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, sw->values) < 0) {
     char detail[512];

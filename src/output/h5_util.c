@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 void rs_h5_quiet_begin(rs_h5_quiet *q)
@@ -75,16 +76,24 @@ static rs_status attr_scalar(hid_t obj, const char *name, hid_t ftype, hid_t mty
   return st;
 }
 
-rs_status rs_h5_attr_string(hid_t obj, const char *name, const char *value)
+/* A fixed-length UTF-8 string type of `len` bytes (at least 1), padded with NULs. */
+static hid_t fixed_string_type(size_t len)
 {
   hid_t type = H5Tcopy(H5T_C_S1);
-  if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0) {
-    rs_status st = H5_FAIL(obj, name, "make the string type for attribute");
-    if (type >= 0) H5Tclose(type);
-    return st;
+  if (type >= 0 && (H5Tset_size(type, len ? len : 1) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
+                    H5Tset_strpad(type, H5T_STR_NULLPAD) < 0)) {
+    H5Tclose(type);
+    type = -1;
   }
+  return type;
+}
+
+rs_status rs_h5_attr_string(hid_t obj, const char *name, const char *value)
+{
   const char *v = value ? value : "";
-  rs_status st = attr_scalar(obj, name, type, type, &v);
+  hid_t type = fixed_string_type(strlen(v));
+  if (type < 0) return H5_FAIL(obj, name, "make the string type for attribute");
+  rs_status st = attr_scalar(obj, name, type, type, v); /* "" has the one NUL byte of size 1 */
   H5Tclose(type);
   return st;
 }
@@ -112,7 +121,14 @@ static rs_status write_typed(hid_t loc, const char *name, hid_t ftype, hid_t mty
                              const char *description)
 {
   rs_status st = RS_OK;
+  hid_t own = -1;
+  if (dcpl == H5P_DEFAULT) {
+    if (rs_h5_dcpl_checked(space, H5Tget_size(ftype), &own) != RS_OK)
+      return H5_FAIL(loc, name, "set up the checksummed layout for");
+    dcpl = own;
+  }
   hid_t dset = H5Dcreate2(loc, name, ftype, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  if (own >= 0) H5Pclose(own);
   if (dset < 0) return H5_FAIL(loc, name, "create dataset");
   if (H5Sget_simple_extent_npoints(space) > 0 &&
       H5Dwrite(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
@@ -165,7 +181,7 @@ rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *dat
 
 void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2])
 {
-  const size_t target = 32768; /* doubles: 256 KiB, HDF5's advice is 10 KiB .. 1 MiB */
+  const size_t target = RS_H5_CHUNK_BYTES / sizeof(double); /* HDF5 advises 10 KiB .. 1 MiB */
   size_t c = cols < 4096 ? cols : 4096;
   if (c == 0) c = 1;
   size_t r = target / c;
@@ -193,6 +209,8 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
     if (H5Pset_shuffle(dcpl) < 0 || H5Pset_deflate(dcpl, 4) < 0)
       st = H5_FAIL(loc, name, "set up compression for");
   }
+  /* last in the pipeline: the checksum covers the bytes as stored */
+  if (st == RS_OK && H5Pset_fletcher32(dcpl) < 0) st = H5_FAIL(loc, name, "set up the checksum for");
   if (st == RS_OK) st = write_doubles(loc, name, space, dcpl, data, units, description);
   if (dcpl >= 0) H5Pclose(dcpl);
   if (space >= 0) H5Sclose(space);
@@ -203,14 +221,55 @@ rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const 
                                  size_t n, const char *description)
 {
   hsize_t dims[1] = {n};
-  hid_t type = H5Tcopy(H5T_C_S1), space = -1;
+  size_t width = 1;
+  for (size_t i = 0; i < n; ++i) {
+    size_t len = strings[i] ? strlen(strings[i]) : 0;
+    if (len > width) width = len;
+  }
+  char *packed = calloc(n ? n : 1, width);
+  if (!packed) return RS_ERROR(RS_ERR_MEMORY, "out of memory for the strings of '%s'", name);
+  for (size_t i = 0; i < n; ++i)
+    if (strings[i]) memcpy(packed + i * width, strings[i], strlen(strings[i]));
+  hid_t type = fixed_string_type(width), space = -1;
   rs_status st = RS_OK;
-  if (type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
-      (space = H5Screate_simple(1, dims, NULL)) < 0)
+  if (type < 0 || (space = H5Screate_simple(1, dims, NULL)) < 0)
     st = H5_FAIL(loc, name, "make the string type or dataspace for");
   if (st == RS_OK)
-    st = write_typed(loc, name, type, type, space, H5P_DEFAULT, strings, "", description);
+    st = write_typed(loc, name, type, type, space, H5P_DEFAULT, packed, "", description);
   if (space >= 0) H5Sclose(space);
   if (type >= 0) H5Tclose(type);
+  free(packed);
   return st;
+}
+
+rs_status rs_h5_dcpl_checked(hid_t space, size_t elem_size, hid_t *dcpl)
+{
+  hsize_t dims[H5S_MAX_RANK];
+  int rank = H5Sget_simple_extent_ndims(space);
+  hssize_t npoints = H5Sget_simple_extent_npoints(space);
+  *dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  if (*dcpl < 0 || rank < 0 || npoints < 0 || rank > 2) goto fail;
+  if (rank == 0 || npoints == 0) {
+    /* nothing to chunk: the value (or the bare shape) lives in the object header */
+    if (H5Pset_layout(*dcpl, H5D_COMPACT) < 0) goto fail;
+    return RS_OK;
+  }
+  H5Sget_simple_extent_dims(space, dims, NULL);
+  hsize_t chunk[2];
+  if (rank == 1) {
+    /* as many chunks as the size needs, of equal length: the last one, stored whole, is
+     * then not mostly padding (100 000 values: 4 x 25 000, not 4 x 32 768) */
+    hsize_t per = (hsize_t)RS_H5_CHUNK_BYTES / (elem_size ? elem_size : 1);
+    if (per == 0) per = 1;
+    hsize_t count = (dims[0] + per - 1) / per;
+    chunk[0] = (dims[0] + count - 1) / count;
+  } else {
+    rs_h5_chunk_shape((size_t)dims[0], (size_t)dims[1], chunk);
+  }
+  if (H5Pset_chunk(*dcpl, rank, chunk) < 0 || H5Pset_fletcher32(*dcpl) < 0) goto fail;
+  return RS_OK;
+fail:
+  if (*dcpl >= 0) H5Pclose(*dcpl);
+  *dcpl = -1;
+  return RS_ERR_IO;
 }

@@ -2,8 +2,11 @@
  *
  * Every helper returns RS_OK or records RS_ERR_IO naming the object ("/layers/radius")
  * and, when HDF5 gave one, its innermost reason ("No space left on device").
- * Strings are variable-length UTF-8 scalars so h5py reads them as str; numbers are
- * little-endian IEEE doubles and 64-bit integers whatever the host. */
+ * Strings are fixed-length UTF-8 (NUL-padded): kept inside the checksummed object header
+ * or chunk, where a variable-length string's global heap has no checksum. Numbers are
+ * little-endian IEEE doubles and 64-bit integers whatever the host. Every dataset is
+ * checksummed (rs_h5_dcpl_checked) and the file uses HDF5's newest format, whose
+ * metadata carries checksums (rs_h5_memfile_create); docs/output.md, "Checksums". */
 #ifndef RS_OUTPUT_H5_UTIL_H
 #define RS_OUTPUT_H5_UTIL_H
 
@@ -59,8 +62,19 @@ rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data
  * about 256 KiB per chunk, so reading one stage or one layer touches few chunks. */
 void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2]);
 
-/* A 1-D dataset of variable-length UTF-8 strings (h5py reads str), `units` "". */
+/* A 1-D dataset of fixed-length UTF-8 strings as wide as the longest (h5py reads bytes),
+ * `units` "". */
 rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const *strings,
                                  size_t n, const char *description);
+
+/* Bytes per chunk of a chunked dataset: 256 KiB, HDF5's advice is 10 KiB .. 1 MiB. */
+#define RS_H5_CHUNK_BYTES 262144
+
+/* New dataset creation properties (close with H5Pclose) for data of shape `space`
+ * (rank 0..2) and elements of elem_size bytes: chunked with the Fletcher-32 checksum
+ * (whole rows, RS_H5_CHUNK_BYTES per chunk), or compact for a scalar or no values (the
+ * data then lives in the object header, which carries its own checksum). Every dataset
+ * helper here uses it when given H5P_DEFAULT. RS_ERR_IO (nothing recorded) on failure. */
+rs_status rs_h5_dcpl_checked(hid_t space, size_t elem_size, hid_t *dcpl);
 
 #endif

@@ -12,14 +12,22 @@
 
 #include "reelsim/version.h"
 
-/* Strings as every reelsim file has them: variable-length UTF-8. */
+/* Strings as every reelsim file has them: fixed-length UTF-8, NUL-padded (inside the
+ * checksummed object header; docs/output.md, "Checksums"). */
+static hid_t fixed_string(size_t len)
+{
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, len ? len : 1);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  H5Tset_strpad(t, H5T_STR_NULLPAD);
+  return t;
+}
+
 static int attr_string(hid_t obj, const char *name, const char *value)
 {
-  hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR);
-  H5Tset_size(t, H5T_VARIABLE);
-  H5Tset_cset(t, H5T_CSET_UTF8);
+  hid_t t = fixed_string(strlen(value)), sp = H5Screate(H5S_SCALAR);
   hid_t a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
-  int bad = a < 0 || H5Awrite(a, t, &value) < 0;
+  int bad = a < 0 || H5Awrite(a, t, value) < 0;
   if (a >= 0) H5Aclose(a);
   H5Sclose(sp);
   H5Tclose(t);
@@ -36,15 +44,28 @@ static int attr_number(hid_t obj, const char *name, hid_t type, const void *valu
   return bad ? -1 : 0;
 }
 
-/* A dataset of `rank` (1 or 2) dims; dims of 0 make an empty one. */
+/* A dataset of `rank` (0, 1 or 2) dims; dims of 0 make an empty one. Chunked (whole rows,
+ * up to 32768 values a chunk) with the Fletcher-32 checksum; a scalar or empty one compact
+ * (in the checksummed object header). */
 static int dataset(hid_t loc, const char *name, hid_t type, int rank, const hsize_t *dims,
                    const void *data)
 {
-  hid_t sp = H5Screate_simple(rank, dims, NULL);
-  hid_t d = H5Dcreate2(loc, name, type, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  int empty = dims[0] == 0 || (rank > 1 && dims[1] == 0);
+  hid_t sp = rank ? H5Screate_simple(rank, dims, NULL) : H5Screate(H5S_SCALAR);
+  int empty = rank && (dims[0] == 0 || (rank > 1 && dims[1] == 0));
+  hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  if (rank == 0 || empty) {
+    H5Pset_layout(dcpl, H5D_COMPACT);
+  } else {
+    hsize_t chunk[2] = {dims[0], rank > 1 ? dims[1] : 1};
+    hsize_t row = rank > 1 ? dims[1] : 1, rows = 32768 / row ? 32768 / row : 1;
+    if (chunk[0] > rows) chunk[0] = rows;
+    H5Pset_chunk(dcpl, rank, chunk);
+    H5Pset_fletcher32(dcpl);
+  }
+  hid_t d = H5Dcreate2(loc, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
   int bad = d < 0 || (!empty && H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0);
   if (d >= 0) H5Dclose(d);
+  H5Pclose(dcpl);
   H5Sclose(sp);
   return bad ? -1 : 0;
 }
@@ -75,16 +96,17 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   if (write_root(file, p) != 0) return -1;
   hid_t g = H5Gcreate2(file, "/optimize", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (g < 0) return -1;
-  /* the keys, as variable-length strings */
-  hid_t vs = H5Tcopy(H5T_C_S1);
-  H5Tset_size(vs, H5T_VARIABLE);
-  H5Tset_cset(vs, H5T_CSET_UTF8);
-  const char **keys = malloc((size_t)(K ? K : 1) * sizeof *keys);
+  /* the keys, as fixed-length strings as wide as the longest */
+  size_t width = 1;
+  for (int k = 0; k < K; ++k)
+    if (strlen(p->vars[k].key) > width) width = strlen(p->vars[k].key);
+  hid_t vs = fixed_string(width);
+  char *keys = calloc((size_t)(K ? K : 1), width);
   double *lo = malloc((size_t)(K ? K : 1) * sizeof *lo), *hi = malloc((size_t)(K ? K : 1) * sizeof *hi);
   double *col = malloc((size_t)(E ? E : 1) * sizeof *col);
   if (!keys || !lo || !hi || !col) bad = -1;
   for (int k = 0; !bad && k < K; ++k) {
-    keys[k] = p->vars[k].key;
+    memcpy(keys + (size_t)k * width, p->vars[k].key, strlen(p->vars[k].key));
     lo[k] = p->vars[k].lo;
     hi[k] = p->vars[k].hi;
   }
@@ -104,11 +126,7 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   }
   if (fg >= 0) H5Gclose(fg);
   int best = h->best;
-  hid_t sc = H5Screate(H5S_SCALAR);
-  hid_t bd = bad ? -1 : H5Dcreate2(g, "best", H5T_NATIVE_INT, sc, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (bd < 0 || H5Dwrite(bd, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &best) < 0) bad = 1;
-  if (bd >= 0) H5Dclose(bd);
-  H5Sclose(sc);
+  bad = bad || dataset(g, "best", H5T_NATIVE_INT, 0, NULL, &best);
 
   /* the settings, as attributes of /optimize */
   char cons[4096] = "";
@@ -161,7 +179,10 @@ int opt_history_write(const char *path, const opt_problem *p, const opt_history 
   void *data;
   H5Eget_auto2(H5E_DEFAULT, &func, &data);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS); /* the newest format: checksummed metadata */
+  H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
+  hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
   int bad = file < 0 || write_all(file, p, h) != 0;
   if (file >= 0 && H5Fclose(file) < 0) bad = 1;
   H5Eset_auto2(H5E_DEFAULT, func, data);

@@ -164,6 +164,19 @@ static void misfit_closed_form(void)
 }
 
 /* A history of three evaluations written and read back: the contract's paths. */
+/* For reading a fixed-length string type (closed here) NUL-terminated: a copy one byte
+ * wider (its width in *width), after checking it is not variable-length. */
+static hid_t nul_terminated(hid_t ftype, size_t *width)
+{
+  CHECK(H5Tis_variable_str(ftype) == 0);
+  hid_t t = H5Tcopy(ftype); /* H5Dget_type's and H5Aget_type's copies are read-only */
+  H5Tclose(ftype);
+  *width = H5Tget_size(t) + 1;
+  H5Tset_size(t, *width);
+  H5Tset_strpad(t, H5T_STR_NULLTERM);
+  return t;
+}
+
 static void history_file(void)
 {
   setup_vars();
@@ -200,21 +213,19 @@ static void history_file(void)
   CHECK(H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &best) >= 0);
   H5Dclose(d);
   CHECK(best == 1);
-  char *keys[2] = {NULL, NULL};
+  /* the keys: fixed-length strings (checksummed with the chunk), read NUL-terminated */
   d = H5Dopen2(file, "/optimize/parameters", H5P_DEFAULT);
-  hid_t vs = H5Tcopy(H5T_C_S1);
-  H5Tset_size(vs, H5T_VARIABLE);
-  H5Tset_cset(vs, H5T_CSET_UTF8);
+  size_t w;
+  hid_t vs = nul_terminated(H5Dget_type(d), &w);
+  char *keys = calloc(2, w);
   CHECK(H5Dread(d, vs, H5S_ALL, H5S_ALL, H5P_DEFAULT, keys) >= 0);
-  CHECK(keys[0] && strcmp(keys[0], "winding.tension") == 0);
-  CHECK(keys[1] && strcmp(keys[1], "nip.load") == 0);
-  hid_t sp = H5Dget_space(d);
-  H5Dvlen_reclaim(vs, sp, H5P_DEFAULT, keys);
-  H5Sclose(sp);
+  CHECK(strcmp(keys, "winding.tension") == 0);
+  CHECK(strcmp(keys + w, "nip.load") == 0);
+  free(keys);
   H5Tclose(vs);
   H5Dclose(d);
   CHECK(H5Lexists(file, "/optimize/figures/misfit", H5P_DEFAULT) == 0); /* no target */
-  /* the settings and the root attributes: variable-length strings */
+  /* the settings and the root attributes: fixed-length strings */
   const char *attrs[][3] = {{"/optimize", "sense", "maximize"},
                             {"/optimize", "objective", "peak_pressure"},
                             {"/optimize", "constraints", "core_pressure <= 2000000"},
@@ -223,14 +234,13 @@ static void history_file(void)
   for (size_t i = 0; i < sizeof attrs / sizeof attrs[0]; ++i) {
     hid_t at = H5Aopen_by_name(file, attrs[i][0], attrs[i][1], H5P_DEFAULT, H5P_DEFAULT);
     CHECK(at >= 0);
-    hid_t ty = H5Tcopy(H5T_C_S1);
-    H5Tset_size(ty, H5T_VARIABLE);
-    H5Tset_cset(ty, H5T_CSET_UTF8);
-    char *text = NULL;
-    CHECK(H5Aread(at, ty, &text) >= 0);
-    fprintf(stderr, "  %s @%s = '%s'\n", attrs[i][0], attrs[i][1], text ? text : "(null)");
-    CHECK(text && strcmp(text, attrs[i][2]) == 0);
-    H5free_memory(text);
+    size_t len;
+    hid_t ty = nul_terminated(H5Aget_type(at), &len);
+    char *text = calloc(1, len);
+    CHECK(H5Aread(at, ty, text) >= 0);
+    fprintf(stderr, "  %s @%s = '%s'\n", attrs[i][0], attrs[i][1], text);
+    CHECK(strcmp(text, attrs[i][2]) == 0);
+    free(text);
     H5Tclose(ty);
     H5Aclose(at);
   }

@@ -24,7 +24,8 @@ def test_read_is_the_file(reelsim, tmp_path):
         assert r.core_pressure == f["final/core_pressure"][()]
         assert r.wall_seconds == f.attrs["wall_seconds"]
         assert r.layers == f.attrs["layers"]
-        assert r.title == f.attrs["title"]
+        assert r.title == f.attrs["title"].decode()  # fixed-length: h5py gives bytes
+        assert r.complete and f.attrs["complete"] == 1
     assert np.array_equal(r.pressure, 0.0 - r.sigma_r)
     assert np.all(r.nip_load == 1750.0)          # the scene's nip load on every layer
 
@@ -40,15 +41,23 @@ def test_read_round_trips_a_run(reelsim, tmp_path):
 
 
 def test_read_refuses(reelsim, tmp_path):
-    with pytest.raises(reelsim.InputError, match="cannot read as HDF5"):
+    with pytest.raises(reelsim.InputError, match="cannot open .*absent.h5"):
         reelsim.read(tmp_path / "absent.h5")
     text = tmp_path / "text.h5"
     text.write_text("not HDF5\n")
-    with pytest.raises(reelsim.InputError, match="cannot read as HDF5"):
+    with pytest.raises(reelsim.InputError, match="is not an HDF5 file"):
         reelsim.read(text)
     other = tmp_path / "other.h5"
     with h5py.File(other, "w") as f:
         f["runs/x"] = np.zeros(3)
+    with pytest.raises(reelsim.InputError, match="not a reelsim file"):
+        reelsim.read(other)
+    with h5py.File(other, "a") as f:
+        f.attrs["program"] = "reelsim"
+    with pytest.raises(reelsim.InputError, match="a comparison file"):
+        reelsim.read(other)
+    with h5py.File(other, "a") as f:
+        del f["runs"]
     with pytest.raises(reelsim.InputError, match=r"not a reelsim run file \(no /layers/radius\)"):
         reelsim.read(other)
 

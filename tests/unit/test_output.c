@@ -125,7 +125,8 @@ static double *read_doubles(hid_t file, const char *name, int rank, size_t *n)
   return v;
 }
 
-/* A scalar variable-length UTF-8 string attribute, malloc'd ("" -> "", absent -> NULL). */
+/* A scalar fixed-length UTF-8 string attribute (NUL-padded, inside the checksummed object
+ * header), malloc'd ("" -> "", absent -> NULL). */
 static char *read_attr_string(hid_t obj, const char *name)
 {
   if (H5Aexists(obj, name) <= 0) {
@@ -134,15 +135,17 @@ static char *read_attr_string(hid_t obj, const char *name)
   }
   hid_t a = H5Aopen(obj, name, H5P_DEFAULT), ftype = H5Aget_type(a);
   CHECK(H5Tget_class(ftype) == H5T_STRING);
-  CHECK(H5Tis_variable_str(ftype) > 0);
+  CHECK(H5Tis_variable_str(ftype) == 0);
   CHECK(H5Tget_cset(ftype) == H5T_CSET_UTF8);
-  hid_t mtype = H5Tcopy(H5T_C_S1);
-  H5Tset_size(mtype, H5T_VARIABLE);
-  H5Tset_cset(mtype, H5T_CSET_UTF8);
-  char *raw = NULL, *copy = NULL;
-  if (H5Aread(a, mtype, &raw) >= 0 && raw) {
-    copy = strdup(raw);
-    H5free_memory(raw);
+  CHECK(H5Tget_strpad(ftype) == H5T_STR_NULLPAD);
+  hid_t mtype = H5Tcopy(ftype);
+  size_t len = H5Tget_size(ftype) + 1;
+  H5Tset_size(mtype, len);
+  H5Tset_strpad(mtype, H5T_STR_NULLTERM);
+  char *copy = calloc(1, len);
+  if (copy && H5Aread(a, mtype, copy) < 0) {
+    free(copy);
+    copy = NULL;
   }
   H5Tclose(mtype);
   H5Tclose(ftype);

@@ -192,10 +192,16 @@ static void shapes_and_missing(void)
   CHECK(rs_h5_write_2d_chunked(h, "matrix", m, 2, 3, "Pa", "a 2 x 3 matrix") == RS_OK);
   unsigned char flags[4] = {0, 1, 1, 0};
   hsize_t dims[1] = {4};
-  hid_t sp = H5Screate_simple(1, dims, NULL);
-  hid_t d = H5Dcreate2(h, "flags", H5T_STD_U8LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t sp = H5Screate_simple(1, dims, NULL), dcpl;
+  CHECK(rs_h5_dcpl_checked(sp, 1, &dcpl) == RS_OK);
+  hid_t d = H5Dcreate2(h, "flags", H5T_STD_U8LE, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
   CHECK(H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, flags) >= 0);
   H5Dclose(d);
+  /* the same without a checksum: a checksummed file never holds one */
+  d = H5Dcreate2(h, "bare", H5T_STD_U8LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  CHECK(H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, flags) >= 0);
+  H5Dclose(d);
+  H5Pclose(dcpl);
   H5Sclose(sp);
   H5Fclose(h);
 
@@ -216,6 +222,11 @@ static void shapes_and_missing(void)
     CHECK(rs_reader_read_1d(r, "/flags", &v, &n) == RS_OK); /* integers come as doubles */
     CHECK(n == 4 && v[0] == 0.0 && v[1] == 1.0 && v[3] == 0.0);
     free(v);
+    v = NULL;
+    CHECK(rs_reader_read_1d(r, "/bare", &v, &n) == RS_ERR_INPUT);
+    CHECK(v == NULL && strstr(rs_error_message(), "'/bare'") &&
+          strstr(rs_error_message(), "without a checksum"));
+    printf("  %s\n", rs_error_message());
     double x;
     CHECK(rs_reader_read_scalar(r, "/final/radius", &x) == RS_ERR_INPUT); /* 5 values */
     CHECK(rs_reader_read_1d(r, "/final", &v, &n) == RS_ERR_INPUT);        /* a group */
