@@ -95,16 +95,16 @@ void rs_gp_printf(rs_gp *gp, const char *fmt, ...)
 void rs_gp_string(rs_gp *gp, const char *s)
 {
   if (!gp->out) return;
-  fputc('"', gp->out);
+  /* gnuplot performs `command` and @macro substitution inside double-quoted strings but
+   * nothing at all inside single-quoted ones, where '' is the only escape. A newline cannot
+   * stand in one, so it is joined as 'a'."\n".'b', a constant string expression. */
+  fputc('\'', gp->out);
   for (const unsigned char *p = (const unsigned char *)(s ? s : ""); *p; ++p) {
-    if (*p == '\n') {
-      fputs("\\n", gp->out);
-      continue;
-    }
-    if (*p == '"' || *p == '\\') fputc('\\', gp->out);
-    fputc(*p < 0x20 || *p == 0x7f ? ' ' : *p, gp->out);
+    if (*p == '\n') fputs("'.\"\\n\".'", gp->out);
+    else if (*p == '\'') fputs("''", gp->out);
+    else fputc(*p < 0x20 || *p == 0x7f ? ' ' : *p, gp->out);
   }
-  fputc('"', gp->out);
+  fputc('\'', gp->out);
 }
 
 rs_status rs_gp_data(rs_gp *gp, int ncols, const double *const *cols, size_t n, char **name,
