@@ -39,6 +39,14 @@ rs_status rs_output_csv_path(const char *dir, const char *name, const char *whic
  * writable, or `path` is a directory or a device. */
 rs_status rs_output_check_target(const char *path);
 
+/* Writes `size` bytes to `path` the way every reelsim output is written: to a new
+ * temporary "<path>.tmp.<pid>.<n>" beside it (O_EXCL | O_NOFOLLOW, so never through a
+ * planted symlink), flushed to disk (fsync) and renamed onto `path`; the temporaries a
+ * killed reelsim left beside `path` are removed first (docs/robustness.md). RS_ERR_IO
+ * naming the file and the system's reason; `path` untouched on failure. For the
+ * applications' own files (optimize's scene and history). */
+rs_status rs_output_write_file(const char *path, const void *data, size_t size);
+
 /* One run of a comparison (`reelsim compare`): a scene and what winding it gave. */
 typedef struct rs_output_run {
   const rs_scene *scene;

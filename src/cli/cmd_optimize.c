@@ -12,6 +12,7 @@
 
 #include "cli/cli.h"
 #include "cli/signals.h"
+#include "reelsim/output.h"
 #include "reelsim/scene.h"
 #include "sweep/optimize.h"
 
@@ -166,20 +167,6 @@ static int name_outputs(const cli_args *a, opt_cli *c)
   return -1;
 }
 
-/* Writes text to path through a temporary file beside it: whole or absent. */
-static int write_text(const char *path, const char *text)
-{
-  char tmp[RS_PATH_MAX + 32];
-  snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid());
-  FILE *f = fopen(tmp, "w");
-  if (!f) return -1;
-  int bad = fputs(text, f) < 0;
-  if (fclose(f) != 0) bad = 1;
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) unlink(tmp);
-  return bad ? -1 : 0;
-}
-
 /* The best scene, resolved (defaults filled, overrides and the best values applied), to
  * c->output; then loaded back to be sure it stands on its own. */
 static int write_best(const cli_args *a, const opt_cli *c, const opt_problem *p, const opt_history *h)
@@ -192,8 +179,9 @@ static int write_best(const cli_args *a, const opt_cli *c, const opt_problem *p,
   free(sets);
   if (st != RS_OK) return cli_fail_status(st);
   int code = -1;
-  if (write_text(c->output, rs_scene_resolved_text(scene)) != 0)
-    code = cli_fail(CLI_EXIT_OTHER, "optimize: cannot write %s", c->output);
+  const char *text = rs_scene_resolved_text(scene);
+  st = rs_output_write_file(c->output, text, strlen(text));
+  if (st != RS_OK) code = cli_fail_status(st);
   rs_scene_destroy(&scene);
   if (code >= 0) return code;
   st = rs_scene_load(c->output, 0, NULL, &scene);

@@ -1,6 +1,6 @@
 /* The optimisation's history file (docs/output.md, "/optimize"): every evaluation, the
- * best one and the settings. Written to a temporary file beside the target and renamed,
- * so it is whole or absent. */
+ * best one and the settings. Built in memory and written by the atomic writer, so it is
+ * whole or absent. */
 #define _POSIX_C_SOURCE 200809L /* gmtime_r */
 #include "sweep/optimize.h"
 
@@ -10,6 +10,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "reelsim/output.h"
 #include "reelsim/version.h"
 
 /* Strings as every reelsim file has them: variable-length UTF-8. */
@@ -146,29 +147,32 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   return bad ? -1 : 0;
 }
 
+/* The file is built in memory (HDF5's core driver, no backing store) and its image goes
+ * through the atomic writer (reelsim/output.h): never a predictable temporary name, never
+ * through a symlink, flushed and renamed whole. */
 int opt_history_write(const char *path, const opt_problem *p, const opt_history *h, char *why,
                       size_t size)
 {
-  size_t len = strlen(path) + 32;
-  char *tmp = malloc(len);
-  if (!tmp) {
-    snprintf(why, size, "out of memory");
-    return -1;
-  }
-  snprintf(tmp, len, "%s.tmp-%ld", path, (long)getpid());
   H5E_auto2_t func;
   void *data;
   H5Eget_auto2(H5E_DEFAULT, &func, &data);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  int bad = file < 0 || write_all(file, p, h) != 0;
+  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  hid_t file = -1;
+  if (fapl >= 0 && H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0)
+    file = H5Fcreate("reelsim-optimize-history", H5F_ACC_EXCL, H5P_DEFAULT, fapl);
+  if (fapl >= 0) H5Pclose(fapl);
+  int bad = file < 0 || write_all(file, p, h) != 0 || H5Fflush(file, H5F_SCOPE_GLOBAL) < 0;
+  ssize_t n = bad ? -1 : H5Fget_file_image(file, NULL, 0);
+  void *image = n > 0 ? malloc((size_t)n) : NULL;
+  if (!image || H5Fget_file_image(file, image, (size_t)n) != n) bad = 1;
   if (file >= 0 && H5Fclose(file) < 0) bad = 1;
   H5Eset_auto2(H5E_DEFAULT, func, data);
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) {
-    unlink(tmp);
-    snprintf(why, size, "%s: cannot write the history file", path);
+  if (bad) snprintf(why, size, "%s: cannot build the history file", path);
+  else if (rs_output_write_file(path, image, (size_t)n) != RS_OK) {
+    snprintf(why, size, "%s", rs_error_message());
+    bad = 1;
   }
-  free(tmp);
+  free(image);
   return bad ? -1 : 0;
 }
