@@ -245,7 +245,7 @@ int cli_compare(const cli_args *a)
   if (cli_signal_caught()) {
     int sig = cli_signal_caught();
     code = cli_fail(cli_signal_exit_code(sig), "compare: %s (no output written)",
-                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                    cli_signal_word(sig));
     goto done;
   }
 

@@ -252,7 +252,7 @@ int cli_optimize(const cli_args *a)
   cli_signals_restore(&sig);
   if (caught) {
     code = cli_fail(cli_signal_exit_code(caught), "optimize: %s after %d run%s (no output written)",
-                    caught == SIGTERM ? "terminated (SIGTERM)" : "interrupted", h.n, h.n == 1 ? "" : "s");
+                    cli_signal_word(caught), h.n, h.n == 1 ? "" : "s");
     goto done;
   }
   if (rc != 0) {

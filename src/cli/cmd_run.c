@@ -160,7 +160,7 @@ int cli_run(const cli_args *a)
   cli_progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
-    const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
+    const char *how = cli_signal_word(sig);
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
                rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
@@ -205,7 +205,7 @@ int cli_run(const cli_args *a)
     int sig = cli_signal_caught();
     if (sig) {
       code = cli_fail(cli_signal_exit_code(sig), "%s during storage (the roll was wound; no output written)",
-                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                      cli_signal_word(sig));
       goto done;
     }
     if (st != RS_OK) {

@@ -171,7 +171,7 @@ int cli_sweep(const cli_args *a)
   if (s.result.stopped || cli_signal_caught()) {
     int sig = cli_signal_caught();
     code = cli_fail(cli_signal_exit_code(sig ? sig : SIGINT), "sweep: %s (no output written)",
-                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                    cli_signal_word(sig));
     goto done;
   }
   if ((code = write_files(&s, a)) != CLI_EXIT_OK) goto done;

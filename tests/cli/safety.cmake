@@ -9,3 +9,12 @@ endforeach()
 foreach(c optimize run sweep stale)
   rs_cli_script(atomic_symlink_${c} atomic_symlink.sh ${SC}/small.yaml ${c})
 endforeach()
+# SIGHUP (a closed terminal) and SIGQUIT are handled as SIGTERM: no temporaries, no file
+set(CASES ${PROJECT_SOURCE_DIR}/cases)
+rs_cli_script(run_hangup interrupt.sh ${CASES}/newsprint-rider.yaml HUP 129)
+rs_cli_script(run_quit interrupt.sh ${CASES}/newsprint-rider.yaml QUIT 131)
+rs_cli_script(study_hangup interrupt.sh ${CASES}/newsprint-rider.yaml HUP 129 study)
+# plot: a signal stops gnuplot and removes the session's /tmp/reelsim-plot-* folder
+rs_cli_script(plot_interrupted plot_interrupt.sh ${SC}/small.yaml INT 130)
+rs_cli_script(plot_terminated plot_interrupt.sh ${SC}/small.yaml TERM 143)
+rs_cli_script(plot_hangup plot_interrupt.sh ${SC}/small.yaml HUP 129)
