@@ -7,6 +7,11 @@
 #include "scene/scene_internal.h"
 
 enum { RS_MAX_LAYERS = 10000000 };
+/* Bounds on the size-like keys (docs/scenes.md, beside each key): nip.terms (the series of
+ * docs/cylinder.md, measured to 65536 terms: 3 s per solve at 400 nodes), nip.nodes (dense
+ * matrices of (3M)^2 doubles: 75 MB at 1024) and CVODE's steps per increment. */
+enum { RS_NIP_MAX_TERMS = 65536, RS_NIP_MAX_NODES = 1024 };
+#define RS_MAX_CVODE_STEPS 100000000L
 static const double pi = 3.14159265358979323846;
 
 /* The core's size is its radius or its diameter (engineers quote cores by diameter), one
@@ -297,7 +302,14 @@ static rs_status resolve_nip(const yn *root, rs_scene *s)
                    "E_r, E_theta, nu_rtheta, G_rtheta)");
   }
   if (!(nodes >= 3)) return ys_fail(root, "nip.nodes", "must be >= 3 (got %d)", nodes);
+  if (nodes > RS_NIP_MAX_NODES)
+    return ys_fail(root, "nip.nodes", "at most %d nodes (got %d; 400 take seconds per solve)",
+                   RS_NIP_MAX_NODES, nodes);
   if (!(terms >= 0)) return ys_fail(root, "nip.terms", "must be >= 0 (got %d)", terms);
+  if (terms > RS_NIP_MAX_TERMS)
+    return ys_fail(root, "nip.terms",
+                   "at most %d series terms (got %d; the default 256 is within 1e-6, "
+                   "docs/cylinder.md)", RS_NIP_MAX_TERMS, terms);
   n->nodes = nodes;
   n->terms = terms;
   if (ys_has(root, "nip.update_every") && update != RS_NIP_UPDATE_EVERY)
@@ -328,6 +340,9 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   if (max_steps < 0)
     return ys_fail(root, "numerics.max_steps", "must be >= 0 (got %ld; 0 = engine default)",
                    max_steps);
+  if (max_steps > RS_MAX_CVODE_STEPS)
+    return ys_fail(root, "numerics.max_steps", "at most %ld steps per increment (got %ld)",
+                   (long)RS_MAX_CVODE_STEPS, max_steps);
   n->layers_per_step = layers_per_step;
   n->rtol = rtol;
   n->atol = atol;

@@ -18,3 +18,10 @@ rs_cli_script(study_hangup interrupt.sh ${CASES}/newsprint-rider.yaml HUP 129 st
 rs_cli_script(plot_interrupted plot_interrupt.sh ${SC}/small.yaml INT 130)
 rs_cli_script(plot_terminated plot_interrupt.sh ${SC}/small.yaml TERM 143)
 rs_cli_script(plot_hangup plot_interrupt.sh ${SC}/small.yaml HUP 129)
+# a bound on every size-like key (docs/scenes.md, "Limits")
+rs_cli_test(bound_nip_terms 2 [[--set nip\.terms=99999999: at most 65536 series terms \(got 99999999]]
+            check ${SC}/contact.yaml --set nip.terms=99999999)
+rs_cli_test(bound_nip_nodes 2 [[--set nip\.nodes=5000: at most 1024 nodes \(got 5000]]
+            check ${SC}/contact.yaml --set nip.nodes=5000)
+rs_cli_test(bound_max_steps 2 [[--set numerics\.max_steps=1000000000: at most 100000000 steps per increment]]
+            check ${SC}/small.yaml --set numerics.max_steps=1000000000)
