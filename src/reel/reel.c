@@ -221,7 +221,9 @@ static int compare_doubles(const void *a, const void *b)
 
 rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
+  if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: out is NULL");
   *out = NULL;
+  if (!pb) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: no problem");
   const double t_start = rs_clock_wall();
   const int N = pb->n_layers, per_step = pb->numerics.layers_per_step;
   if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the problem winds no layers");

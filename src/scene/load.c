@@ -57,6 +57,8 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no scene file given");
   if (strlen(path) >= RS_PATH_MAX) return RS_ERROR(RS_ERR_INPUT, "%.64s...: path too long", path);
   if (n_sets > 0 && !sets) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: sets is NULL");
+  for (int i = 0; i < n_sets; ++i)
+    if (!sets[i]) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: sets[%d] is NULL", i);
 
   rs_scene *s = calloc(1, sizeof *s);
   if (!s) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
