@@ -353,6 +353,18 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   return RS_OK;
 }
 
+/* A relative path none of whose components is "..". */
+static int output_path_contained(const char *p)
+{
+  if (p[0] == '/') return 0;
+  for (const char *c = p; *c;) {
+    size_t n = strcspn(c, "/");
+    if (n == 2 && c[0] == '.' && c[1] == '.') return 0;
+    c += n + (c[n] == '/');
+  }
+  return 1;
+}
+
 static rs_status resolve_output(const yn *root, rs_scene *s)
 {
   double at[RS_MAX_PROFILES];
@@ -361,6 +373,13 @@ static rs_status resolve_output(const yn *root, rs_scene *s)
   rs_output_spec *o = &s->output;
   rs_record_spec *rec = &s->problem.record;
   snprintf(o->file, sizeof o->file, "%s", ys_str(root, "output.file"));
+  /* A received scene must not write outside the folder it is run in: its own output.file
+   * (not -o or --set) is a relative path without a ".." component. */
+  const yn *file = yn_get(root, "output.file");
+  if (file && !file->origin && !output_path_contained(o->file))
+    return ys_fail(root, "output.file",
+                   "a scene's own output file must stay in the folder it is run in (a relative "
+                   "path without '..'; got '%s'): give -o FILE to write elsewhere", o->file);
   if (history_every < 0)
     return ys_fail(root, "output.history_every", "must be >= 0 (got %d; 0 = no history)",
                    history_every);

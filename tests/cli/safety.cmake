@@ -25,3 +25,7 @@ rs_cli_test(bound_nip_nodes 2 [[--set nip\.nodes=5000: at most 1024 nodes \(got 
             check ${SC}/contact.yaml --set nip.nodes=5000)
 rs_cli_test(bound_max_steps 2 [[--set numerics\.max_steps=1000000000: at most 100000000 steps per increment]]
             check ${SC}/small.yaml --set numerics.max_steps=1000000000)
+# where a run may write: input == output, a scene's own output.file, a failed --csv
+foreach(c same_file escape csv_fails)
+  rs_cli_script(run_outputs_${c} run_outputs.sh ${SC}/small.yaml ${c})
+endforeach()
