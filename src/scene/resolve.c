@@ -9,8 +9,9 @@
 enum { RS_MAX_LAYERS = 10000000 };
 /* Bounds on the size-like keys (docs/scenes.md, beside each key): nip.terms (the series of
  * docs/cylinder.md, measured to 65536 terms: 3 s per solve at 400 nodes), nip.nodes (dense
- * matrices of (3M)^2 doubles: 75 MB at 1024) and CVODE's steps per increment. */
-enum { RS_NIP_MAX_TERMS = 65536, RS_NIP_MAX_NODES = 1024 };
+ * matrices of (3M)^2 doubles, one LU factorisation of which, uninterruptible, takes 0.3 s
+ * at 512 and 3 s at 1024) and CVODE's steps per increment. */
+enum { RS_NIP_MAX_TERMS = 65536, RS_NIP_MAX_NODES = 512 };
 #define RS_MAX_CVODE_STEPS 100000000L
 static const double pi = 3.14159265358979323846;
 
