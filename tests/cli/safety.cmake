@@ -31,3 +31,8 @@ foreach(c same_file escape csv_fails)
 endforeach()
 # Ctrl-C inside a long contact-nip solve (the largest nip.terms and nip.nodes allowed)
 rs_cli_script(interrupt_nip_solve interrupt_nip.sh ${SC}/contact.yaml)
+# sweep: a 1e12-run grid refused before the scene is loaded for its values (77 s before)
+rs_cli_test(sweep_grid_1e12 2 [[--vary: the grid has more than 10000000 runs]]
+            sweep ${SC}/small.yaml --vary winding.tension=100:200:1000000
+            --vary core.radius=0.04:0.05:1000000 -o sweep-1e12.h5)
+set_tests_properties(cli.sweep_grid_1e12 PROPERTIES TIMEOUT 10)
