@@ -44,7 +44,8 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const rs_storage_result *storage, const char *csv_dir, double wall)
 {
   char a[64], b[64];
-  printf("%s\n", rs_scene_title(scene));
+  char shown[1024];
+  printf("%s\n", cli_shown(rs_scene_title(scene), shown, sizeof shown));
   printf("active effects:\n");
   rs_scene_print_effects(scene, stdout);
   printf("result:\n");

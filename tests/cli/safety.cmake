@@ -36,3 +36,5 @@ rs_cli_test(sweep_grid_1e12 2 [[--vary: the grid has more than 10000000 runs]]
             sweep ${SC}/small.yaml --vary winding.tension=100:200:1000000
             --vary core.radius=0.04:0.05:1000000 -o sweep-1e12.h5)
 set_tests_properties(cli.sweep_grid_1e12 PROPERTIES TIMEOUT 10)
+# control characters in titles printed escaped
+rs_cli_script(title_escaped title_escaped.sh ${SC}/small.yaml)
