@@ -3,6 +3,7 @@
 #define REELSIM_OUTPUT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
@@ -49,6 +50,22 @@ const char *rs_output_shortest(char *buf, double v);
  * RS_ERR_IO naming `path` when its directory is missing, not a directory or not
  * writable, or `path` is a directory or a device. */
 rs_status rs_output_check_target(const char *path);
+
+/* Writes `size` bytes to `path` the way every reelsim output is written: to a new
+ * temporary "<path>.tmp.<pid>.<n>" beside it (O_EXCL | O_NOFOLLOW, so never through a
+ * planted symlink), flushed to disk (fsync) and renamed onto `path`; the temporaries a
+ * killed reelsim left beside `path` are removed first (docs/robustness.md). RS_ERR_IO
+ * naming the file and the system's reason; `path` untouched on failure. For the
+ * applications' own files (optimize's scene and history). */
+rs_status rs_output_write_file(const char *path, const void *data, size_t size);
+
+/* An application's own HDF5 file written as every reelsim file is: built in memory in the
+ * newest format HDF5 writes (checksummed metadata; docs/output.md, "Checksums and
+ * checks"), filled by `fill(file, user)` (file: the HDF5 file identifier, an hid_t; fill
+ * returns 0, or non-zero to abandon the file), then written through
+ * rs_output_write_file. RS_ERR_IO naming `path` when the file cannot be built or fill
+ * fails; `path` untouched on failure. */
+rs_status rs_output_write_h5(const char *path, int (*fill)(int64_t file, void *user), void *user);
 
 /* One run of a comparison (`reelsim compare`): a scene and what winding it gave. */
 typedef struct rs_output_run {

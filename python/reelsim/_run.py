@@ -8,6 +8,8 @@ so threads wind in parallel.
 
 import ctypes
 import os
+import signal
+import threading
 
 import numpy as np
 
@@ -64,6 +66,54 @@ def _last_message():
     return _lib.rs_error_message().decode("utf-8", "replace")
 
 
+_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_int, ctypes.c_int)
+
+
+class _Options(ctypes.Structure):  # rs_reel_options
+    _fields_ = [("progress", _PROGRESS), ("user", ctypes.c_void_p)]
+
+
+class _Interruptible:
+    """Ctrl-C during a run (issue 36). The library calls its progress callback after every
+    increment; Python runs its signal handlers whenever the main thread executes bytecode,
+    so during the callback. While a run is in progress SIGINT only sets a flag, which the
+    callback returns (nonzero: the library stops after the increment, RS_ERR_INTERRUPTED);
+    the handler the caller had is restored and then honoured (KeyboardInterrupt by
+    default). Only on the main thread, where Python delivers signals: other threads run
+    without a callback, as before."""
+
+    def __init__(self):
+        self.caught = False
+        self.old = None
+        self.opts = None
+        if threading.current_thread() is not threading.main_thread():
+            return
+        old = signal.getsignal(signal.SIGINT)
+        if old in (signal.SIG_IGN, None):
+            return
+        self.old = old
+        signal.signal(signal.SIGINT, self._on_signal)
+        self.callback = _PROGRESS(lambda user, done, total: 1 if self.caught else 0)
+        self.opts = _Options(self.callback, None)
+
+    def _on_signal(self, signum, frame):
+        self.caught = True
+
+    def pointer(self):
+        return ctypes.cast(ctypes.pointer(self.opts), ctypes.c_void_p) if self.opts else None
+
+    def restore(self):
+        """Puts the caller's handler back; then raises what it would have raised."""
+        if self.old is None:
+            return
+        signal.signal(signal.SIGINT, self.old)
+        if self.caught:
+            if callable(self.old):
+                self.old(signal.SIGINT, None)
+            else:  # SIG_DFL: what the default action amounts to for Python code
+                raise KeyboardInterrupt
+
+
 def _copy(res, name):
     n = ctypes.c_int(0)
     ptr = _lib.rs_reel_result_array(res, name.encode(), ctypes.byref(n))
@@ -83,6 +133,9 @@ def run(scene, sets=None, *, name=None):
       "key=value" strings.
     name: for text, the file name it stands for in messages and for finding material
       models beside it (default "<text>", models looked up from the current directory).
+
+    Ctrl-C (SIGINT) stops the run after the increment in progress and raises
+    KeyboardInterrupt (on the main thread; the caller's own SIGINT handler is honoured).
 
     Raises InputError (bad scene: the CLI's message, exit status 2 there), SolverError
     (no converged or finite answer, exit status 3) or Error (anything else).
@@ -107,7 +160,11 @@ def run(scene, sets=None, *, name=None):
         _raise(st, msg)
     res = ctypes.c_void_p()
     try:
-        st = _lib.rs_scene_wind(sc, None, ctypes.byref(res))
+        intr = _Interruptible()
+        try:
+            st = _lib.rs_scene_wind(sc, intr.pointer(), ctypes.byref(res))
+        finally:
+            intr.restore()  # raises KeyboardInterrupt after a Ctrl-C
         if st != _lib.RS_OK:
             msg = _last_message()
             if st == _lib.RS_ERR_INPUT:  # as the CLI says it: which scene

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli/fail.h"
 #include "cli/usage.h"
@@ -208,6 +209,15 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
     return cli_fail(CLI_EXIT_USAGE, "%s: one %s at a time (got '%s' and '%s')", cmd->name,
                     cmd->operand, a->scenes[0], a->scenes[1]);
   a->scene = a->scenes[0];
+  /* the outputs that name files (plot's and study's -o and run's --csv name folders) */
+  const int dir_out = (cmd->bit & (CLI_PLOT | CLI_STUDY)) != 0;
+  const char *outs[] = {dir_out ? NULL : a->output, cmd->bit & CLI_RUN ? NULL : a->csv_dir,
+                        a->history};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; outs[k] && i < a->n_scenes; ++i)
+      if (cli_same_file(outs[k], a->scenes[i]))
+        return cli_fail(CLI_EXIT_USAGE, "%s: the output '%s' is the input '%s' itself (it would be "
+                        "overwritten)", cmd->name, outs[k], a->scenes[i]);
   if (a->output && (cmd->bit & (CLI_RUN | CLI_CHECK | CLI_COMPARE))) {
     /* recorded as an override so the resolved scene in the file names the real output */
     size_t len = strlen(a->output) + sizeof "output.file=";
@@ -219,4 +229,11 @@ int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args
     a->output = set + strlen("output.file=");
   }
   return -1;
+}
+
+int cli_same_file(const char *a, const char *b)
+{
+  struct stat sa, sb;
+  return a && b && stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
 }

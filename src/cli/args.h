@@ -44,4 +44,8 @@ typedef struct cli_args {
 int cli_parse(int argc, char **argv, int first, const cli_command *cmd, cli_args *a);
 void cli_args_free(cli_args *a);
 
+/* Do the two paths name one existing file (the same device and inode, links followed)?
+ * Refusing `run s.yaml -o s.yaml` and the like (exit 2) before anything is written. */
+int cli_same_file(const char *a, const char *b);
+
 #endif

@@ -74,7 +74,9 @@ static void print_table(const compare_state *c, double wall, int threads)
 {
   printf("compare: %d scene%s on %d thread%s\n", c->n, c->n == 1 ? "" : "s", threads,
          threads == 1 ? "" : "s");
-  for (int i = 0; i < c->n; ++i) printf("  %-24s %s\n", c->names[i], rs_scene_title(c->scenes[i]));
+  char shown[1024];
+  for (int i = 0; i < c->n; ++i)
+    printf("  %-24s %s\n", c->names[i], cli_shown(rs_scene_title(c->scenes[i]), shown, sizeof shown));
   printf("\n%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "run", "layers", "final r",
          "core P", "peak P", "at r", "min hoop", "at r", "wound-on T0", "wall");
   printf("%-24s %7s %8s %10s %10s %7s %10s %7s %17s %8s\n", "", "", "mm", "kPa", "kPa", "mm",
@@ -316,7 +318,7 @@ int cli_compare(const cli_args *a)
   if (cli_signal_caught()) {
     int sig = cli_signal_caught();
     code = cli_fail(cli_signal_exit_code(sig), "compare: %s (no output written)",
-                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                    cli_signal_word(sig));
     goto done;
   }
 

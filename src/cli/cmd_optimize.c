@@ -175,20 +175,6 @@ static int name_outputs(const cli_args *a, opt_cli *c)
   return -1;
 }
 
-/* Writes text to path through a temporary file beside it: whole or absent. */
-static int write_text(const char *path, const char *text)
-{
-  char tmp[RS_PATH_MAX + 32];
-  snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid());
-  FILE *f = fopen(tmp, "w");
-  if (!f) return -1;
-  int bad = fputs(text, f) < 0;
-  if (fclose(f) != 0) bad = 1;
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) unlink(tmp);
-  return bad ? -1 : 0;
-}
-
 /* The best scene, resolved (defaults filled, overrides and the best values applied), to
  * c->output; then loaded back to be sure it stands on its own. */
 /* The best scene's title: the scene's own, then what made it the best ("..., optimized:
@@ -231,8 +217,9 @@ static int write_best(const cli_args *a, const opt_cli *c, const opt_problem *p,
   free(all);
   if (st != RS_OK) return cli_fail_status(st);
   int code = -1;
-  if (write_text(c->output, rs_scene_resolved_text(scene)) != 0)
-    code = cli_fail(CLI_EXIT_OTHER, "optimize: cannot write %s", c->output);
+  const char *text = rs_scene_resolved_text(scene);
+  st = rs_output_write_file(c->output, text, strlen(text));
+  if (st != RS_OK) code = cli_fail_status(st);
   rs_scene_destroy(&scene);
   if (code >= 0) return code;
   st = rs_scene_load(c->output, 0, NULL, &scene);
@@ -323,7 +310,7 @@ int cli_optimize(const cli_args *a)
   cli_signals_restore(&sig);
   if (caught) {
     code = cli_fail(cli_signal_exit_code(caught), "optimize: %s after %d run%s (no output written)",
-                    caught == SIGTERM ? "terminated (SIGTERM)" : "interrupted", h.n, h.n == 1 ? "" : "s");
+                    cli_signal_word(caught), h.n, h.n == 1 ? "" : "s");
     goto done;
   }
   if (rc != 0) {

@@ -1,7 +1,8 @@
 /* reelsim plot FILE.h5 [-o DIR] [--quiet]: PNG plots of a run or compare file, or the
  * picture of a study file (plot_study.c: the study is an application beside plot, so the
  * CLI picks by the file's kind). DIR is made as needed (mkdir -p), and removed again if
- * the plot fails and leaves it empty. */
+ * the plot fails and leaves it empty. Ctrl-C, SIGTERM, SIGHUP or SIGQUIT stops gnuplot and
+ * removes the session's temporary folder (/tmp/reelsim-plot-*): exit 130/143/129/131. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +10,7 @@
 #include "cli/cli.h"
 #include "cli/outdir.h"
 #include "cli/plot_study.h"
+#include "cli/signals.h"
 #include "reelsim/plot.h"
 
 int cli_plot(const cli_args *a)
@@ -23,6 +25,8 @@ int cli_plot(const cli_args *a)
   }
   rs_status st;
   char png[8192];
+  cli_signals sig;
+  cli_signals_install(&sig);
   if (cli_is_study_file(a->scene)) {
     /* DIR/<file name>-study.png, as the run plots are named */
     const char *base = strrchr(a->scene, '/');
@@ -40,6 +44,13 @@ int cli_plot(const cli_args *a)
     }
   } else {
     st = rs_plot_file(a->scene, made.path, NULL, &written, &n);
+  }
+  int caught = cli_signal_caught();
+  cli_signals_restore(&sig);
+  if (st != RS_OK && caught) {
+    code = cli_fail(cli_signal_exit_code(caught), "plot: %s (no plots written)", cli_signal_word(caught));
+    cli_outdir_undo(&made);
+    return code;
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);

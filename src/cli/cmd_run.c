@@ -13,6 +13,7 @@
  * left) once a run has taken a second, at most ten times a second, and only when stderr
  * is a terminal and --quiet is off: logs, pipes and test output never see it. */
 
+#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -43,7 +44,8 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
                           const rs_storage_result *storage, const char *csv_dir, double wall)
 {
   char a[64], b[64];
-  printf("%s\n", rs_scene_title(scene));
+  char shown[1024];
+  printf("%s\n", cli_shown(rs_scene_title(scene), shown, sizeof shown));
   printf("active effects:\n");
   rs_scene_print_effects(scene, stdout);
   printf("result:\n");
@@ -153,6 +155,11 @@ int cli_run(const cli_args *a)
   }
   cli_scene_warnings(scene);
 
+  if (cli_same_file(rs_scene_output_file(scene), a->scene)) {
+    code = cli_fail(CLI_EXIT_USAGE, "run: output.file '%s' is the scene file itself (it would be "
+                    "overwritten)", rs_scene_output_file(scene));
+    goto done;
+  }
   const rs_problem *pb = rs_scene_problem(scene);
   cli_progress prog;
   cli_progress_init(&prog, !a->quiet && isatty(STDERR_FILENO), pb->n_layers, pb->core.radius,
@@ -162,7 +169,7 @@ int cli_run(const cli_args *a)
   cli_progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
     int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
-    const char *how = sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted";
+    const char *how = cli_signal_word(sig);
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
                rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
@@ -207,7 +214,7 @@ int cli_run(const cli_args *a)
     int sig = cli_signal_caught();
     if (sig) {
       code = cli_fail(cli_signal_exit_code(sig), "%s during storage (the roll was wound; no output written)",
-                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                      cli_signal_word(sig));
       goto done;
     }
     if (st != RS_OK) {
@@ -217,18 +224,34 @@ int cli_run(const cli_args *a)
       goto done;
     }
   }
-  if (st == RS_OK) st = rs_output_write_stored(rs_scene_output_file(scene), scene, res, storage);
+  /* With --csv the HDF5 file is staged beside its name and renamed into place only when
+   * the CSV files are written too: a failed run leaves no file of its own. */
+  const char *out_path = rs_scene_output_file(scene);
+  char staged[RS_PATH_MAX + 64] = "";
+  if (a->csv_dir) snprintf(staged, sizeof staged, "%s.tmp.%ld.0", out_path, (long)getpid());
+  if (st == RS_OK && staged[0]) st = rs_output_check_target(out_path);
+  if (st == RS_OK) st = rs_output_write_stored(staged[0] ? staged : out_path, scene, res, storage);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
     cli_outdir made;
     if ((code = cli_outdir_make("--csv", a->csv_dir, &made)) != CLI_EXIT_OK) {
+      unlink(staged);
       cli_outdir_undo(&made);
       goto done;
     }
     rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv_stored(a->csv_dir, stem, res, storage);
-    if (st != RS_OK) cli_outdir_undo(&made);
-    else cli_outdir_free(&made);
+    if (st == RS_OK && rename(staged, out_path) != 0)
+      st = RS_ERROR(RS_ERR_IO, "cannot rename '%s' onto output file '%s': %s", staged, out_path,
+                    strerror(errno));
+    if (st != RS_OK) {
+      unlink(staged);
+      cli_outdir_undo(&made);
+    } else {
+      cli_outdir_free(&made);
+    }
+  } else if (staged[0]) {
+    unlink(staged);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);

@@ -227,7 +227,7 @@ int cli_study(const cli_args *a)
     int sig = cli_signal_caught();
     if (sig) {
       code = cli_fail(cli_signal_exit_code(sig), "study: %s (no output written)",
-                      sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                      cli_signal_word(sig));
       goto done;
     }
     for (int i = first; i < first + m; ++i) {

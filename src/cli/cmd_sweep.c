@@ -56,6 +56,9 @@ static int prepare(sweep_state *s, const cli_args *a)
         return cli_fail(CLI_EXIT_USAGE, "--vary %s: %s is already varied by --vary %s",
                         a->vary[k], s->vary[k].key, a->vary[j]);
   }
+  /* a 1e12-run grid is refused at once, not after loading the scene for every value */
+  if ((st = sweep_plan_check_size(s->n_vary, s->vary, &s->sample)) != RS_OK)
+    return cli_fail_status(st);
   if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
     return cli_fail_status(st);
   cli_scene_warnings(s->base);
@@ -175,7 +178,7 @@ int cli_sweep(const cli_args *a)
   if (s.result.stopped || cli_signal_caught()) {
     int sig = cli_signal_caught();
     code = cli_fail(cli_signal_exit_code(sig ? sig : SIGINT), "sweep: %s (no output written)",
-                    sig == SIGTERM ? "terminated (SIGTERM)" : "interrupted");
+                    cli_signal_word(sig));
     goto done;
   }
   if ((code = write_files(&s, a)) != CLI_EXIT_OK) goto done;

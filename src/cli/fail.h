@@ -4,6 +4,8 @@
 #ifndef RS_CLI_FAIL_H
 #define RS_CLI_FAIL_H
 
+#include <stddef.h>
+
 #include "reelsim/status.h"
 
 enum { CLI_EXIT_OK = 0, CLI_EXIT_OTHER = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_SOLVER = 3,
@@ -19,5 +21,10 @@ int cli_fail_status(rs_status st);
 /* --verbose: cli_fail_status (and compare's per-run failures) also show where. */
 void cli_fail_verbose(int on);
 int cli_fail_is_verbose(void);
+
+/* Text from a scene (a title) as it may be printed: control characters written as
+ * escapes (\n, \t, \x1b), so a title cannot move the cursor, recolour or retitle the
+ * terminal, or forge lines of output. Returns buf. */
+const char *cli_shown(const char *s, char *buf, size_t size);
 
 #endif

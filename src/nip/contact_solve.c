@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util/cancel.h"
+
 void rs_nip_solution_free(rs_nip_solution *s)
 {
   if (!s) return;
@@ -148,6 +150,10 @@ static rs_status iterate(rs_nip_contact *nc, double a, double Ti, int budget, do
   double worst = 0;
   rs_status st = RS_OK;
   for (it = 1; it <= budget; ++it) {
+    if (rs_cancel_requested()) { /* a pass at 1024 nodes takes a large fraction of a second */
+      st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted in stick/slip pass %d at a = %g m", it, a);
+      break;
+    }
     rs_nipc_assemble(nc, a, Ti);
     st = rs_nipc_lin_solve(nc, a);
     if (st) {

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -95,16 +96,16 @@ void rs_gp_printf(rs_gp *gp, const char *fmt, ...)
 void rs_gp_string(rs_gp *gp, const char *s)
 {
   if (!gp->out) return;
-  fputc('"', gp->out);
+  /* gnuplot performs `command` and @macro substitution inside double-quoted strings but
+   * nothing at all inside single-quoted ones, where '' is the only escape. A newline cannot
+   * stand in one, so it is joined as 'a'."\n".'b', a constant string expression. */
+  fputc('\'', gp->out);
   for (const unsigned char *p = (const unsigned char *)(s ? s : ""); *p; ++p) {
-    if (*p == '\n') {
-      fputs("\\n", gp->out);
-      continue;
-    }
-    if (*p == '"' || *p == '\\') fputc('\\', gp->out);
-    fputc(*p < 0x20 || *p == 0x7f ? ' ' : *p, gp->out);
+    if (*p == '\n') fputs("'.\"\\n\".'", gp->out);
+    else if (*p == '\'') fputs("''", gp->out);
+    else fputc(*p < 0x20 || *p == 0x7f ? ' ' : *p, gp->out);
   }
-  fputc('"', gp->out);
+  fputc('\'', gp->out);
 }
 
 rs_status rs_gp_data(rs_gp *gp, int ncols, const double *const *cols, size_t n, char **name,
@@ -205,8 +206,14 @@ static rs_status spawn_wait(rs_gp *gp, const char *program, const char *log)
     return RS_ERROR(RS_ERR_IO, "%s not found (apt-get install gnuplot-nox)", program);
   if (err) return RS_ERROR(RS_ERR_IO, "cannot start %s: %s", program, strerror(err));
   int status;
-  while (waitpid(pid, &status, 0) < 0)
+  /* waitpid is interrupted only by a signal the program catches (the CLI's SIGINT, SIGTERM,
+   * SIGHUP, SIGQUIT): gnuplot is stopped too, and the session fails and cleans up. */
+  int stopped = 0;
+  while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return RS_ERROR(RS_ERR_IO, "waiting for %s: %s", program, strerror(errno));
+    if (!stopped++) kill(pid, SIGTERM);
+  }
+  if (stopped) return RS_ERROR(RS_ERR_INTERRUPTED, "plotting interrupted (%s stopped)", program);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return RS_OK;
   char tail[1024];
   log_tail(log, tail, sizeof tail);

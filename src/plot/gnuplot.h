@@ -33,8 +33,9 @@ void rs_gp_end(rs_gp *gp);
 
 /* Appends to the script. */
 void rs_gp_printf(rs_gp *gp, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* Appends s as a gnuplot double-quoted string (backslash and quote escaped, a newline
- * kept as the escape \n, other control characters made spaces). */
+/* Appends s as an inert gnuplot string: single-quoted (no `command`, @macro or escape
+ * processing; a quote doubled), a newline kept as a line break by joining 'a'."\n".'b',
+ * other control characters made spaces. */
 void rs_gp_string(rs_gp *gp, const char *s);
 
 /* Writes a data file of n rows and ncols columns (cols[c][i]), skipping rows that hold

@@ -10,6 +10,7 @@
 #include "reel/nip_policy.h"
 #include "reel/reel_air.h"
 #include "reel/spin.h"
+#include "util/cancel.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
 #include "reelsim/nip_contact.h"
@@ -243,9 +244,24 @@ static int compare_doubles(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
+/* The progress callback asked from inside long steps too (util/cancel.h): a nip solve with
+ * many series terms or nodes stops within RS_CANCEL_INTERVAL of a Ctrl-C, not at its end. */
+typedef struct reel_cancel {
+  const rs_reel_options *opts;
+  int done, N;
+} reel_cancel;
+
+static int reel_cancel_poll(void *user)
+{
+  const reel_cancel *c = user;
+  return c->opts->progress(c->opts->user, c->done, c->N);
+}
+
 rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
+  if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: out is NULL");
   *out = NULL;
+  if (!pb) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: no problem");
   const double t_start = rs_clock_wall();
   const int N = pb->n_layers, per_step = pb->numerics.layers_per_step;
   if (N < 1) return RS_ERROR(RS_ERR_INPUT, "the problem winds no layers");
@@ -263,6 +279,8 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   rs_roll *roll = NULL;
   rs_nip *nip = NULL;
   rs_status st = RS_OK;
+  rs_cancel_scope cancel_scope = {0};
+  reel_cancel cancel = {opts, 0, N};
   long hist_cap = 0, next_stage = every;
   /* the nip: its update policy, the state to rewind to, the profiles asked for
    * (declared before the first goto: `done` frees snap) */
@@ -308,6 +326,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     }
   }
 
+  rs_cancel_push(&cancel_scope, opts && opts->progress ? reel_cancel_poll : NULL, &cancel);
   for (int first = 0; first < N;) {
     int m = N - first < per_step ? N - first : per_step, solved = 0, force = 0;
     /* with air, the real outer radius (films compressed as the roll presses them now) */
@@ -475,6 +494,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     if ((st = rs_reel_gauge_record(&gauge, pb, first, rs_roll_core_pressure(roll), rs_roll_sigma_r(roll),
                                    has_air ? air.film : NULL, 0)))
       goto done;
+    cancel.done = first;
     if (opts && opts->progress && opts->progress(opts->user, first, N)) {
       st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted after layer %d of %d", first, N);
       goto done;
@@ -483,6 +503,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   }
 
 done:
+  rs_cancel_pop(&cancel_scope);
   if (res && roll) {
     reel_collect(roll, res, t_start);
     history_finish(res, roll, N, hist_cap);

@@ -14,6 +14,7 @@ const rs_problem *rs_scene_problem(const rs_scene *scene)
 
 rs_status rs_scene_wind(const rs_scene *scene, const rs_reel_options *opts, rs_reel_result **out)
 {
+  if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_wind: out is NULL");
   if (!scene) {
     *out = NULL;
     return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_wind: no scene");

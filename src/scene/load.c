@@ -10,9 +10,22 @@
 /* The resolved scene: a header of comments (what it came from, derived values), then the
  * scene with the material inlined, shorthands expanded, defaults and overrides applied.
  * It loads again as a scene and gives the same run. */
+/* s for a comment line: control characters as \xNN, so a newline in a --set value or a
+ * file name cannot end the comment and put a line of its own into the resolved scene. */
+static const char *one_line(const char *s, char *buf, size_t size)
+{
+  size_t n = 0;
+  for (const unsigned char *p = (const unsigned char *)s; *p && n + 5 < size; ++p) {
+    if (*p < 0x20 || *p == 0x7f) n += (size_t)snprintf(buf + n, size - n, "\\x%02x", *p);
+    else buf[n++] = (char)*p;
+  }
+  buf[n] = '\0';
+  return buf;
+}
+
 static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets, const char *body)
 {
-  char head[8192], num[3][64];
+  char head[8192], num[3][64], safe[2][2048];
   size_t len = 0;
 #define ADD(...)                                                                         \
   do {                                                                                   \
@@ -21,8 +34,9 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
   } while (0)
   ADD("# reelsim %s resolved scene (material inlined, defaults filled, overrides applied)\n",
       RS_VERSION_STRING);
-  ADD("# scene: %s\n# material: %s\n", s->path, s->material_source);
-  for (int i = 0; i < n_sets; ++i) ADD("# --set %s\n", sets[i]);
+  ADD("# scene: %s\n# material: %s\n", one_line(s->path, safe[0], sizeof safe[0]),
+      one_line(s->material_source, safe[1], sizeof safe[1]));
+  for (int i = 0; i < n_sets; ++i) ADD("# --set %s\n", one_line(sets[i], safe[0], sizeof safe[0]));
   ys_fmt(num[0], sizeof num[0], s->problem.final_radius);
   ys_fmt(num[1], sizeof num[1], s->problem.material.caliper);
   ADD("# derived: final radius %s m, %d layers of caliper %s m", num[0], s->problem.n_layers, num[1]);
@@ -58,6 +72,8 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no scene file given");
   if (strlen(path) >= RS_PATH_MAX) return RS_ERROR(RS_ERR_INPUT, "%.64s...: path too long", path);
   if (n_sets > 0 && !sets) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: sets is NULL");
+  for (int i = 0; i < n_sets; ++i)
+    if (!sets[i]) return RS_ERROR(RS_ERR_INTERNAL, "rs_scene_load: sets[%d] is NULL", i);
 
   rs_scene *s = calloc(1, sizeof *s);
   if (!s) return RS_ERROR(RS_ERR_MEMORY, "out of memory");

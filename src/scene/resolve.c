@@ -7,6 +7,12 @@
 #include "scene/scene_internal.h"
 
 enum { RS_MAX_LAYERS = 10000000 };
+/* Bounds on the size-like keys (docs/scenes.md, beside each key): nip.terms (the series of
+ * docs/cylinder.md, measured to 65536 terms: 3 s per solve at 400 nodes), nip.nodes (dense
+ * matrices of (3M)^2 doubles, one LU factorisation of which, uninterruptible, takes 0.3 s
+ * at 512 and 3 s at 1024) and CVODE's steps per increment. */
+enum { RS_NIP_MAX_TERMS = 65536, RS_NIP_MAX_NODES = 512 };
+#define RS_MAX_CVODE_STEPS 100000000L
 static const double pi = 3.14159265358979323846;
 
 static rs_status resolve_core(const yn *root, rs_core *c)
@@ -314,7 +320,14 @@ static rs_status resolve_nip(const yn *root, rs_scene *s)
                    "E_r, E_theta, nu_rtheta, G_rtheta)");
   }
   if (!(nodes >= 3)) return ys_fail(root, "nip.nodes", "must be >= 3 (got %d)", nodes);
+  if (nodes > RS_NIP_MAX_NODES)
+    return ys_fail(root, "nip.nodes", "at most %d nodes (got %d; 400 take seconds per solve)",
+                   RS_NIP_MAX_NODES, nodes);
   if (!(terms >= 0)) return ys_fail(root, "nip.terms", "must be >= 0 (got %d)", terms);
+  if (terms > RS_NIP_MAX_TERMS)
+    return ys_fail(root, "nip.terms",
+                   "at most %d series terms (got %d; the default 256 is within 1e-6, "
+                   "docs/cylinder.md)", RS_NIP_MAX_TERMS, terms);
   n->nodes = nodes;
   n->terms = terms;
   if (ys_has(root, "nip.update_every") && update != RS_NIP_UPDATE_EVERY)
@@ -345,6 +358,9 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   if (max_steps < 0)
     return ys_fail(root, "numerics.max_steps", "must be >= 0 (got %ld; 0 = engine default)",
                    max_steps);
+  if (max_steps > RS_MAX_CVODE_STEPS)
+    return ys_fail(root, "numerics.max_steps", "at most %ld steps per increment (got %ld)",
+                   (long)RS_MAX_CVODE_STEPS, max_steps);
   n->layers_per_step = layers_per_step;
   n->rtol = rtol;
   n->atol = atol;
@@ -355,6 +371,18 @@ static rs_status resolve_numerics(const yn *root, rs_numerics *n)
   return RS_OK;
 }
 
+/* A relative path none of whose components is "..". */
+static int output_path_contained(const char *p)
+{
+  if (p[0] == '/') return 0;
+  for (const char *c = p; *c;) {
+    size_t n = strcspn(c, "/");
+    if (n == 2 && c[0] == '.' && c[1] == '.') return 0;
+    c += n + (c[n] == '/');
+  }
+  return 1;
+}
+
 static rs_status resolve_output(const yn *root, rs_scene *s)
 {
   double at[RS_MAX_PROFILES];
@@ -363,6 +391,13 @@ static rs_status resolve_output(const yn *root, rs_scene *s)
   rs_output_spec *o = &s->output;
   rs_record_spec *rec = &s->problem.record;
   snprintf(o->file, sizeof o->file, "%s", ys_str(root, "output.file"));
+  /* A received scene must not write outside the folder it is run in: its own output.file
+   * (not -o or --set) is a relative path without a ".." component. */
+  const yn *file = yn_get(root, "output.file");
+  if (file && !file->origin && !output_path_contained(o->file))
+    return ys_fail(root, "output.file",
+                   "a scene's own output file must stay in the folder it is run in (a relative "
+                   "path without '..'; got '%s'): give -o FILE to write elsewhere", o->file);
   if (history_every < 0)
     return ys_fail(root, "output.history_every", "must be >= 0 (got %d; 0 = no history)",
                    history_every);

@@ -1,6 +1,6 @@
 /* The optimisation's history file (docs/output.md, "/optimize"): every evaluation, the
- * best one and the settings. Written to a temporary file beside the target and renamed,
- * so it is whole or absent. */
+ * best one and the settings. Built in memory and written by the atomic writer, so it is
+ * whole or absent. */
 #define _POSIX_C_SOURCE 200809L /* gmtime_r */
 #include "sweep/optimize.h"
 
@@ -10,6 +10,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "reelsim/output.h"
 #include "reelsim/version.h"
 
 /* Strings as every reelsim file has them: fixed-length UTF-8, NUL-padded (inside the
@@ -165,32 +166,25 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   return bad ? -1 : 0;
 }
 
+struct history_fill {
+  const opt_problem *p;
+  const opt_history *h;
+};
+
+static int fill_history(int64_t file, void *user)
+{
+  const struct history_fill *f = user;
+  return write_all((hid_t)file, f->p, f->h);
+}
+
+/* The file goes through rs_output_write_h5 (reelsim/output.h): built in memory with
+ * checksummed metadata, never a predictable temporary name, never through a symlink,
+ * flushed and renamed whole. */
 int opt_history_write(const char *path, const opt_problem *p, const opt_history *h, char *why,
                       size_t size)
 {
-  size_t len = strlen(path) + 32;
-  char *tmp = malloc(len);
-  if (!tmp) {
-    snprintf(why, size, "out of memory");
-    return -1;
-  }
-  snprintf(tmp, len, "%s.tmp-%ld", path, (long)getpid());
-  H5E_auto2_t func;
-  void *data;
-  H5Eget_auto2(H5E_DEFAULT, &func, &data);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS); /* the newest format: checksummed metadata */
-  H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
-  hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
-  H5Pclose(fapl);
-  int bad = file < 0 || write_all(file, p, h) != 0;
-  if (file >= 0 && H5Fclose(file) < 0) bad = 1;
-  H5Eset_auto2(H5E_DEFAULT, func, data);
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) {
-    unlink(tmp);
-    snprintf(why, size, "%s: cannot write the history file", path);
-  }
-  free(tmp);
-  return bad ? -1 : 0;
+  struct history_fill f = {p, h};
+  if (rs_output_write_h5(path, fill_history, &f) == RS_OK) return 0;
+  snprintf(why, size, "%s", rs_error_message());
+  return -1;
 }

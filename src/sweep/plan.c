@@ -52,6 +52,18 @@ static uint64_t next(uint64_t *x)
 /* uniform in [0, 1) with 53 random bits */
 static double uniform(uint64_t *x) { return (double)(next(x) >> 11) * 0x1.0p-53; }
 
+rs_status sweep_plan_check_size(int n_keys, const sweep_vary *vary, const sweep_sample *s)
+{
+  if (s->kind == SWEEP_SAMPLE_LHS) return RS_OK; /* R was bounded when parsed */
+  long long n = 1;
+  for (int k = 0; k < n_keys; ++k) {
+    n *= vary[k].n > 0 ? vary[k].n : 1;
+    if (n > SWEEP_MAX_RUNS)
+      return RS_ERROR(RS_ERR_INPUT, "--vary: the grid has more than %d runs", SWEEP_MAX_RUNS);
+  }
+  return RS_OK;
+}
+
 static rs_status make_grid(sweep_plan *p)
 {
   long long n = 1;

@@ -51,4 +51,8 @@ void sweep_plan_free(sweep_plan *plan);
 rs_status sweep_plan_sets(const sweep_plan *plan, int i, int n_sets, const char *const *sets,
                           const char ***all, char **text);
 
+/* The plan's size alone (a grid's product of counts; lhs:R was bounded when parsed),
+ * checked before any scene is loaded: RS_ERR_INPUT beyond SWEEP_MAX_RUNS. */
+rs_status sweep_plan_check_size(int n_keys, const sweep_vary *vary, const sweep_sample *s);
+
 #endif

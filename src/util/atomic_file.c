@@ -2,8 +2,11 @@
 
 #include "util/atomic_file.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
+#include <time.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -91,7 +94,9 @@ static rs_status create_temp(const char *path, char **tmp, int *fd)
   if (!name) return RS_ERROR(RS_ERR_MEMORY, "out of memory naming a temporary for '%s'", path);
   for (int tries = 0; tries < 1000; ++tries) {
     snprintf(name, len, "%s.tmp.%ld.%lu", path, (long)getpid(), atomic_fetch_add(&counter, 1));
-    *fd = open(name, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    /* O_EXCL never opens an existing name, a planted symlink included (EEXIST: the next
+     * number is tried); O_NOFOLLOW says the same to a reader of this line. */
+    *fd = open(name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (*fd >= 0) {
       *tmp = name;
       return RS_OK;
@@ -132,10 +137,58 @@ static void sync_dir_of(const char *path)
   free(dir);
 }
 
+/* Is `name` "<base>.tmp.<pid>.<n>" (both numbers decimal)? Its pid in *pid. */
+static int is_our_temp(const char *name, const char *base, long *pid)
+{
+  size_t nb = strlen(base);
+  if (strncmp(name, base, nb) != 0 || strncmp(name + nb, ".tmp.", 5) != 0) return 0;
+  const char *p = name + nb + 5;
+  char *end;
+  errno = 0;
+  long v = strtol(p, &end, 10);
+  if (end == p || *end != '.' || errno || v <= 0) return 0;
+  p = end + 1;
+  (void)strtoul(p, &end, 10);
+  if (end == p || *end != '\0') return 0;
+  *pid = v;
+  return 1;
+}
+
+void rs_atomic_file_clean_stale(const char *path)
+{
+  char *dir = dir_of(path);
+  const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+  DIR *d = dir && base[0] ? opendir(dir) : NULL;
+  if (!d) {
+    free(dir);
+    return;
+  }
+  time_t now = time(NULL);
+  struct dirent *e;
+  while ((e = readdir(d))) {
+    long pid;
+    if (!is_our_temp(e->d_name, base, &pid) || pid == (long)getpid()) continue;
+    /* another process's, as far as this machine can tell, only if that pid is alive */
+    if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue;
+    size_t n = strlen(dir) + strlen(e->d_name) + 2;
+    char *full = malloc(n);
+    if (!full) break;
+    snprintf(full, n, "%s/%s", dir, e->d_name);
+    struct stat sb;
+    if (lstat(full, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_uid == geteuid() &&
+        now - sb.st_mtime >= RS_ATOMIC_STALE_SECONDS)
+      unlink(full);
+    free(full);
+  }
+  closedir(d);
+  free(dir);
+}
+
 rs_status rs_atomic_file_prepare(const char *path, const void *data, size_t size, char **tmp)
 {
   char why[256];
   int fd;
+  rs_atomic_file_clean_stale(path);
   rs_status st = create_temp(path, tmp, &fd);
   if (st != RS_OK) return st;
   /* fsync before rename: otherwise a crash soon after can leave the new name on a file

@@ -1,6 +1,7 @@
 /* Atomic files (base layer, internal): putting a finished file in place. The bytes go to
- * "<path>.tmp.<pid>.<n>" beside the target, are flushed to disk, and the temporary is
- * renamed onto `path`. rename() within one directory is atomic on POSIX file systems,
+ * "<path>.tmp.<pid>.<n>" beside the target (created O_EXCL | O_NOFOLLOW: never an existing
+ * name or a planted symlink), are flushed to disk (fsync), and the temporary is renamed
+ * onto `path`; every failure names the file and gives errno's text. rename() within one directory is atomic on POSIX file systems,
  * so readers see either the old file or the whole new one, never a part. */
 #ifndef RS_UTIL_ATOMIC_FILE_H
 #define RS_UTIL_ATOMIC_FILE_H
@@ -26,5 +27,13 @@ rs_status rs_atomic_file_write(const char *path, const void *data, size_t size);
 rs_status rs_atomic_file_prepare(const char *path, const void *data, size_t size, char **tmp);
 rs_status rs_atomic_file_commit(const char *path, char **tmp);
 void rs_atomic_file_abort(char **tmp);
+
+/* Stale temporaries: before a temporary for `path` is made, every "<path>.tmp.<pid>.<n>"
+ * beside it that is a regular file owned by this user, whose pid is not a live process on
+ * this machine (kill(pid, 0) fails with ESRCH) and that has not been modified for
+ * RS_ATOMIC_STALE_SECONDS (a writer on another machine sharing the folder keeps its file
+ * fresh) is removed: what a killed reelsim (SIGKILL, a power cut) left. Best effort. */
+#define RS_ATOMIC_STALE_SECONDS 600
+void rs_atomic_file_clean_stale(const char *path);
 
 #endif

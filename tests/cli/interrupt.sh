@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # interrupt.sh REELSIM SCENE [SIGNAL STATUS [--keep-partial | study]]: a signal (default
 # INT, i.e. Ctrl-C; TERM gives 143) during `run` stops it after the current step, says
-# where it stopped, and exits with STATUS (default 130). It writes no file, or with
+# where it stopped, and exits with STATUS (default 130; HUP and QUIT as TERM: 129, 131). It writes no file, or with
 # --keep-partial exactly the output file, marked complete = 0, with the layers the message
 # names. `study`: the same signal during `reelsim study -o DIR` (DIR two levels below
 # anything that exists) stops it after the runs in progress with `study: interrupted` (or
@@ -26,7 +26,7 @@ wait "$pid"; got=$?
 cat "$tmp/log"
 echo "exit status: $got (expected $want)"
 [ "$got" -eq "$want" ] || { echo "FAIL: wrong exit status"; exit 1; }
-word=interrupted; [ "$sig" = TERM ] && word='terminated \(SIGTERM\)'
+word=interrupted; [ "$sig" != INT ] && word="terminated \\(SIG$sig\\)"
 if [ "$keep" = study ]; then
   grep -Eq "reelsim: study: $word \(no output written\)" "$tmp/log" ||
     { echo "FAIL: no 'study: $word (no output written)' message"; exit 1; }
