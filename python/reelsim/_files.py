@@ -33,8 +33,7 @@ _read_2d = _lib._fn("rs_reader_read_2d", _c.c_int, _VP, _CP, _DPP, _c.POINTER(_S
 _read_strings = _lib._fn("rs_reader_read_strings", _c.c_int, _VP, _CP,
                          _c.POINTER(_c.POINTER(_CP)), _c.POINTER(_SZ))
 _free_strings = _lib._fn("rs_reader_free_strings", None, _c.POINTER(_c.POINTER(_CP)), _SZ)
-_attr_string = _lib._fn("rs_reader_attr_string", _c.c_int, _VP, _CP, _CP,
-                        _c.POINTER(_c.POINTER(_c.c_char)))
+_attr_string = _lib.rs_reader_attr_string  # declared once (_lib.py): ctypes shares it
 _attr_double = _lib._fn("rs_reader_attr_double", _c.c_int, _VP, _CP, _CP,
                         _c.POINTER(_c.c_double))
 _libc_free = _c.CDLL(None).free  # the reader's arrays come from the process's malloc
@@ -150,14 +149,14 @@ class _Reader:
             _free_strings(_c.byref(p), n)
 
     def attr(self, path, name, default=""):
-        v = _c.POINTER(_c.c_char)()
+        v = _VP()
         if _attr_string(self.r, path.encode(), name.encode(), _c.byref(v)) != _lib.RS_OK:
             _lib.rs_error_clear()
             return default
         try:
-            return _c.cast(v, _CP).value.decode("utf-8", "replace")
+            return _c.string_at(v.value).decode("utf-8", "replace")
         finally:
-            _libc_free(_c.cast(v, _VP))
+            _lib.rs_reader_free_text(_c.byref(v))
 
     def attr_number(self, path, name):
         v = _c.c_double(float("nan"))

@@ -22,7 +22,7 @@ def test_run_winds_storage_as_the_cli(reelsim, tmp_path):
     with h5py.File(out, "r") as f:
         for k in ("hours", "temperature", "humidity", "core_pressure", "sigma_r", "sigma_theta"):
             assert np.array_equal(getattr(r.storage, k), f["storage/" + k][()]), k
-        assert r.defects["core"]["verdict"] == f["defects/core"].attrs["verdict"]
+        assert r.defects["core"]["verdict"] == f["defects/core"].attrs["verdict"].decode()
         assert r.defects["core"]["core_pressure"] == f["defects/core"].attrs["core_pressure"]
     # stage 0 is the wound roll
     assert r.storage.core_pressure[0] == r.core_pressure
