@@ -23,6 +23,7 @@ int cli_nip(const cli_args *a);
 /* reelsim fit stack TEST.csv --law LAW ...: the stack law fitted to a stack test
  * (cmd_fit.c; parses its own arguments). */
 int cli_fit(int argc, char **argv);
+void cli_fit_usage(FILE *out);
 /* reelsim fit roll SCENE --measured DATA.csv --vary KEY=LO:HI ... (cmd_fit_roll.c). */
 int cli_fit_roll(int argc, char **argv);
 /* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...

@@ -183,8 +183,32 @@ static int fit_stack(int argc, char **argv)
   return st ? cli_fail_status(st) : CLI_EXIT_OK;
 }
 
+/* `reelsim fit --help`, `reelsim help fit`: fit parses its own arguments, so its help is
+ * here rather than in the option table. */
+void cli_fit_usage(FILE *out)
+{
+  fputs("usage: reelsim fit stack TEST.csv --law pfeiffer|hakiel|linear|table [--terms N]\n"
+        "                 [--cycle K] [-o MODEL.yaml] [--base MODEL] [--plot FIT.png] [--json]\n"
+        "       reelsim fit roll SCENE --measured DATA.csv --vary KEY=LO:HI [--vary ...]\n"
+        "                 [--set KEY=VALUE ...] [--threads N] [-o BEST.yaml] [--json]\n"
+        "\n"
+        "fit stack: the radial stack law fitted to a stack test (columns strain,pressure\n"
+        "[,cycle]): each parameter with its 95 % interval, the RMS residual and the worst\n"
+        "point; -o writes a material model loadable as material:.\n"
+        "fit roll: scene keys fitted to what the plant measured (columns length|radius and\n"
+        "diameter|pressure|wound_in_tension), the same report, -o the best scene.\n"
+        "\n"
+        "Details: docs/calibrate.md. Exit status: 0 ok, 2 bad input or data that cannot\n"
+        "determine the fit, 3 the solver failed.\n",
+        out);
+}
+
 int cli_fit(int argc, char **argv)
 {
+  if (argc >= 3 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0)) {
+    cli_fit_usage(stdout);
+    return CLI_EXIT_OK;
+  }
   if (argc >= 3 && strcmp(argv[2], "stack") == 0) return fit_stack(argc, argv);
   if (argc >= 3 && strcmp(argv[2], "roll") == 0) return cli_fit_roll(argc, argv);
   return cli_fail(CLI_EXIT_USAGE, "fit: what to fit: 'reelsim fit stack TEST.csv --law LAW ...' "

@@ -42,6 +42,10 @@ int main(int argc, char **argv)
       cli_usage(stdout, NULL);
       return CLI_EXIT_OK;
     }
+    if (strcmp(argv[2], "fit") == 0) {
+      cli_fit_usage(stdout);
+      return CLI_EXIT_OK;
+    }
     const cli_command *c = cli_command_find(argv[2]);
     if (!c) return unknown_command("help: ", argv[2]);
     cli_usage(stdout, c);

@@ -52,7 +52,11 @@ static void print_general(FILE *out)
       fprintf(out, "%s\n%*s", head, HELP_COLUMN, "");
     indented(out, c->summary);
   }
-  fputs("  help [CMD]     this text, or one command's (also: reelsim CMD --help)\n"
+  fputs("  fit stack TEST.csv | fit roll SCENE\n"
+        "                 calibrate: a stack law fitted to a stack test, or scene keys\n"
+        "                 fitted to a roll's measured diameters, pressures or WIT\n"
+        "                 (reelsim fit --help)\n"
+        "  help [CMD]     this text, or one command's (also: reelsim CMD --help)\n"
         "\n"
         "options:\n"
         "  --version      print the version\n"

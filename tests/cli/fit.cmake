@@ -37,3 +37,7 @@ rs_cli_test(fit_roll_bad_header 2 [[stack-two\.csv:1: the header must name two c
             fit roll ${FIT_SC} --measured ${FIT_DATA}/stack-two.csv --vary winding.tension=100:400)
 rs_cli_test(fit_roll_bad_key 2 [[--vary winding\.bogus=100:400: .*unknown key 'bogus']]
             fit roll ${FIT_SC} --measured ${FIT_DATA}/pull-tabs.csv --vary winding.bogus=100:400)
+# fit parses its own arguments: its help is reachable all three ways
+rs_cli_test(fit_help 0 [[usage: reelsim fit stack TEST\.csv]] fit --help)
+rs_cli_test(help_fit 0 [[reelsim fit roll SCENE --measured DATA\.csv]] help fit)
+rs_cli_test(help_lists_fit 0 [[fit stack TEST\.csv \| fit roll SCENE]] --help)
