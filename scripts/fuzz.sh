@@ -55,7 +55,8 @@ fuzz_one() {
   fi
 }
 
-fuzz_one fuzz_scene "scene loader" "$scene_seconds" corpus crashes 4096 \
+LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan-udunits.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}" \
+  fuzz_one fuzz_scene "scene loader" "$scene_seconds" corpus crashes 4096 \
   -dict="$root/tests/fuzz/scene.dict"
 # HDF5 files: the seeds are 16-33 kB; an input may grow a little beyond the largest
 if [ "$h5_seconds" -gt 0 ]; then

@@ -7,6 +7,7 @@
  * library is unloaded or the process exits. UDUNITS is not thread-safe: one lock guards
  * the system and every call into it. Its messages would go to stderr: silenced
  * (ut_ignore), the loader reports its own. */
+#include <ctype.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -51,10 +52,22 @@ __attribute__((destructor)) static void units_free(void)
   units_sys = NULL;
 }
 
+/* A unit's text as units are written: letters (UTF-8 symbols such as µ and ° too),
+ * digits, blanks and the operators . / * ^ - ( ). Anything else is no unit and never
+ * reaches UDUNITS' parser, which loses a few bytes on some malformed text (its lexer's
+ * copy of an identifier; tests/fuzz/lsan-udunits.supp). */
+static int plain_unit_text(const char *u)
+{
+  for (const unsigned char *p = (const unsigned char *)u; *p; ++p)
+    if (!(isalnum(*p) || *p >= 0x80 || strchr(" ./*^-()", *p))) return 0;
+  return 1;
+}
+
 /* 1: converted; 0: a unit not known; -1: both known but of different dimensions;
  * -2: the database could not be read */
 static int convert_locked(double v, const char *from, const char *to, double *out)
 {
+  if (!plain_unit_text(from) || !plain_unit_text(to)) return 0;
   ut_system *sys = units_system();
   if (!sys) return -2;
   ut_unit *a = ut_parse(sys, from, UT_UTF8), *b = ut_parse(sys, to, UT_UTF8);

@@ -12,6 +12,9 @@ rs_cli_test(units_wrong_dimension 2 [[bad-unit\.yaml:10: winding\.speed: '600 kg
             check ${USC}/bad-unit.yaml)
 rs_cli_test(units_unknown 2 [[unknown unit 'zorks' in '20 zorks' \(expected a length]]
             check ${USC}/small.yaml --set "material.caliper=20 zorks")
+# text that is no unit (the scene fuzzer's finding) is refused before UDUNITS' parser
+rs_cli_test(units_not_unit_text 2 [[unknown unit '.0\.0e -' in '1.0\.0e -' \(expected a length]]
+            check ${USC}/small.yaml --set "material.caliper=1'0.0e -")
 rs_cli_test(units_plain_key 2 [[nu_rtheta=0\.3 m: takes a plain number, without a unit]]
             check ${USC}/small.yaml --set "material.nu_rtheta=0.3 m")
 # the five slips of issue 34
