@@ -11,6 +11,7 @@
 #include "cli/cli.h"
 #include "cli/json.h"
 #include "cli/signals.h"
+#include "reelsim/output.h"
 #include "reelsim/scene.h"
 #include "reelsim/version.h"
 #include "sweep/fitroll.h"
@@ -69,7 +70,9 @@ static void after(void *user, int evaluation, const double *x, double rms)
   fflush(stderr);
 }
 
-/* the best scene, resolved, through a temporary beside it: whole or absent */
+/* The best scene, resolved, through the atomic writer (rs_output_write_file: a new
+ * O_EXCL | O_NOFOLLOW temporary, fsync, rename): whole or absent, never through a
+ * planted symlink. */
 static int write_best(const fr_problem *p, const double *x, const char *path)
 {
   int n = 0;
@@ -77,16 +80,12 @@ static int write_best(const fr_problem *p, const double *x, const char *path)
   rs_scene *sc = NULL;
   rs_status st = sets ? rs_scene_load(p->scene, n, (const char *const *)sets, &sc) : RS_ERR_MEMORY;
   free(sets);
-  if (st) return cli_fail_status(st);
-  char tmp[4200];
-  snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid());
-  FILE *f = fopen(tmp, "w");
-  int bad = !f || fputs(rs_scene_resolved_text(sc), f) < 0;
-  if (f && fclose(f) != 0) bad = 1;
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) unlink(tmp);
+  if (st == RS_OK) {
+    const char *text = rs_scene_resolved_text(sc);
+    st = rs_output_write_file(path, text, strlen(text));
+  }
   rs_scene_destroy(&sc);
-  return bad ? cli_fail(CLI_EXIT_OTHER, "fit roll: cannot write %s", path) : -1;
+  return st ? cli_fail_status(st) : -1;
 }
 
 static void report(const fr_args *a, const fr_problem *p, const fr_result *r)
