@@ -4,7 +4,7 @@
  * Accuracy: max over the four kernels of max|k - k_ref| / max|k_ref|, k_ref accelerated
  * with 2^21 terms. Times exclude the one-time per-cylinder mode cache (reported apart).
  * Results: docs/cylinder.md. */
-#include "reelsim/cylinder.h"
+#include "cylinder/cylinder.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -4,7 +4,7 @@
 #ifndef REELSIM_BENCH_NEWSPRINT_H
 #define REELSIM_BENCH_NEWSPRINT_H
 
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 
 #define BENCH_NEWSPRINT_T0 (350.0 + 0.19 * 1750.0)
 

@@ -14,7 +14,7 @@
 #include <time.h>
 
 #include "nip/contact_internal.h" /* factorization / GMRES counters only */
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 
 static double now(void)
 {

@@ -25,10 +25,8 @@ layer_of() {
       include/reelsim/clock.h | src/error.c | src/clock.c | src/version.c | \
       src/util/*) echo 0 ;;
     include/reelsim/material.h | include/reelsim/core.h | include/reelsim/recipe.h | \
-      include/reelsim/sheet.h | include/reelsim/cylinder.h | \
-      src/material/* | src/recipe/* | src/sheet/* | src/cylinder/*) echo 1 ;;
-    include/reelsim/roll.h | include/reelsim/nip.h | include/reelsim/nip_contact.h | \
-      src/roll/* | src/nip/*) echo 2 ;;
+      include/reelsim/numerics.h | src/material/* | src/recipe/* | src/sheet/* | src/cylinder/*) echo 1 ;;
+    include/reelsim/nip.h | src/roll/* | src/nip/*) echo 2 ;;
     include/reelsim/problem.h | include/reelsim/reel.h | include/reelsim/defects.h | \
       include/reelsim/storage.h | src/storage/* | \
       src/reel/*) echo 3 ;;

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 
 static inline rs_roll_params linear_params(double rc, double t, double Et, double Er, double Ec,
                                            int n)

@@ -1,8 +1,8 @@
-/* The nip seam: how the wound-on tension T0 is found at each radius.
+/* The nip a problem is built of: the model, the drum or rider, the winder (rs_nip_spec),
+ * and the contact model on its own at one reel state (rs_nip_contact, reelsim nip).
  *
- * A problem without a nip (RS_NIP_NONE) creates no rs_nip at all (T0 = web tension), so
- * no nip code runs. Each model implements rs_nip_ops; the contact model of the seed paper
- * plugs in here as another implementation. */
+ * A problem without a nip (RS_NIP_NONE) runs no nip code (T0 = web tension). How the reel
+ * asks the model for T0 at each radius, the nip seam, is private (src/nip/nip_seam.h). */
 #ifndef REELSIM_NIP_H
 #define REELSIM_NIP_H
 
@@ -64,41 +64,55 @@ typedef struct rs_nip_state {
   double surface_pressure;/* Pa, interlayer pressure under the outer layer now */
 } rs_nip_state;
 
-typedef struct rs_nip rs_nip;
-struct rs_nip_solution; /* a converged contact nip (reelsim/nip_contact.h) */
+/* One converged nip. Arrays are owned; rs_nip_solution_free releases them. */
+typedef struct rs_nip_solution {
+  int M, capacity;
+  double a;                 /* m, half-width */
+  double dx;                /* m */
+  double load;              /* N/m, int p dx (eq. (21)) of the returned state */
+  double Ti, T0;            /* N/m, incoming and wound-on tension */
+  double xi1;               /* creep of the upper contact (wound-on condition, docs/nip.md) */
+  double xi2;               /* creep of the lower contact */
+  double delta0;            /* m, approach of the cylinder centres */
+  double eps0;              /* m, shift of the nip centre */
+  double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
+  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix, or
+                               of the kept one it was refined from with the same stick/slip
+                               rows (they differ by the kernels' drift, docs/nip.md) */
+  int iterations;           /* active-set solves at the final half-width */
+  int lcp_pivots;           /* Lemke pivots at the final half-width (0: the active-set
+                               iteration found the state without the LCP) */
+  int width_iterations;     /* half-widths tried by the load search (1 for a given a) */
+  int total_solves;         /* linear solves in all */
+  double dissipation;       /* int (q+ s+ + q- s-) dx >= 0, N/m per unit speed */
+  double *x;                /* M nodes, m */
+  double *pressure;         /* M, Pa, compression positive */
+  double *x_shear;          /* M-1 element midpoints, m */
+  double *shear_upper;      /* M-1, tau+ (Pa) */
+  double *shear_lower;      /* M-1, tau- (Pa) */
+  double *slip_rate_upper;  /* M-1, s+ (0 where stuck) */
+  double *slip_rate_lower;  /* M-1, s- */
+  unsigned char *slip_upper;/* M-1, 1 = slip */
+  unsigned char *slip_lower;
+} rs_nip_solution;
 
-/* What the model found at its last call (the /nip/ record of a run). */
-typedef struct rs_nip_report {
-  double a;        /* m, contact half-width (0: the model has no contact) */
-  double load;     /* N/m, the load of the converged contact (eq. (21)); else the given load */
-  int iterations;  /* stick/slip iterations (0: none) */
-} rs_nip_report;
+void rs_nip_solution_free(rs_nip_solution *s);
 
-typedef struct rs_nip_ops {
-  const char *name;
-  rs_status (*wound_on_tension)(void *ctx, const rs_nip_state *state, double *T0);
-  void (*destroy)(void *ctx);
-  /* optional: */
-  void (*report)(void *ctx, rs_nip_report *rep);
-  const struct rs_nip_solution *(*solution)(void *ctx);
-} rs_nip_ops;
+/* The contact model on its own (reelsim nip): one nip at a reel state, outside a reel. The
+ * handle is used by one thread at a time; docs/nip.md gives the model and its signs. */
+typedef struct rs_nip_contact rs_nip_contact;
+void rs_nip_contact_destroy(rs_nip_contact **nc); /* accepts NULL and *nc == NULL */
 
-/* Creates the nip model the spec asks for; *out = NULL for RS_NIP_NONE. */
-rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out);
-void rs_nip_destroy(rs_nip **nip);
-rs_status rs_nip_wound_on_tension(rs_nip *nip, const rs_nip_state *state, double *T0);
-const char *rs_nip_name(const rs_nip *nip);
-/* The last call's report; zeros (and the state's load) for models without a contact. */
-void rs_nip_get_report(const rs_nip *nip, rs_nip_report *rep);
-/* The last converged contact solution, or NULL (owned by the model, valid until its next
- * call). */
-const struct rs_nip_solution *rs_nip_last_solution(const rs_nip *nip);
+/* Builds the contact model from a nip spec and the material (the drum, the sheet
+ * constants, friction, winder); the roll is set per call by rs_nip_contact_solve_state. */
+rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_material *mat,
+                                          rs_nip_contact **out);
 
-/* For model implementations: wraps ctx and ops in a handle (takes ownership of ctx). */
-rs_status rs_nip_wrap(const rs_nip_ops *ops, void *ctx, rs_nip **out);
-
-/* The friction model: T0 = Ti + mu * P (Good, Wu & Fikes 1994). */
-rs_status rs_nip_friction_create(double mu_roll, rs_nip **out);
+/* One nip at the reel state (roll radius, core radius, Ti, P, surface pressure): chooses
+ * the roll's radial modulus (docs/nip.md: secant stack modulus over the mean nip pressure),
+ * builds the roll and the sheet, and solves for the load. Needs create_from_spec. */
+rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *st,
+                                     rs_nip_solution *out);
 
 RS_END_DECLS
 #endif

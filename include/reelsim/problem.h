@@ -9,8 +9,8 @@
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "reelsim/nip.h"
+#include "reelsim/numerics.h"
 #include "reelsim/recipe.h"
-#include "reelsim/roll.h"
 
 #include "reelsim/export.h"
 RS_BEGIN_DECLS

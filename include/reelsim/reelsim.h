@@ -14,17 +14,14 @@
 #include "reelsim/version.h"
 #include "reelsim/clock.h"
 
-/* materials, recipes, the sheet, the cylinder */
+/* materials, recipes, the numerical choices */
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "reelsim/recipe.h"
-#include "reelsim/sheet.h"
-#include "reelsim/cylinder.h"
+#include "reelsim/numerics.h"
 
-/* the roll and the nip */
-#include "reelsim/roll.h"
+/* the nip */
 #include "reelsim/nip.h"
-#include "reelsim/nip_contact.h"
 
 /* the reel: winds a problem */
 #include "reelsim/problem.h"

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "reelsim/nip_contact.h"
+#include "reelsim/nip.h"
 #include "reelsim/scene.h"
 
 static void json_array(const char *name, const double *v, int n)

@@ -2,7 +2,7 @@
 #ifndef RS_CYLINDER_INTERNAL_H
 #define RS_CYLINDER_INTERNAL_H
 
-#include "reelsim/cylinder.h"
+#include "cylinder/cylinder.h"
 
 #define RS_PI 3.14159265358979323846
 

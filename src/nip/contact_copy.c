@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "nip/contact_internal.h"
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 
 rs_status rs_nip_solution_copy(rs_nip_solution *dst, const rs_nip_solution *src)
 {

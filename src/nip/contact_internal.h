@@ -7,7 +7,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_nvector.h>
 
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 
 /* per body: [KP] hat pressure -> w and eps at the nodes (pu, pe, shift 0);
  * [KQU] box shear -> w at the nodes (shift -dx/2); [KQE] box shear -> eps averaged over

@@ -2,7 +2,7 @@
  * (nip_friction.c, contact_model.c) wrap themselves in it; nip_create.c picks one. */
 #include <stdlib.h>
 
-#include "reelsim/nip.h"
+#include "nip/nip_seam.h"
 
 struct rs_nip {
   const rs_nip_ops *ops;

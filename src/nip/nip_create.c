@@ -3,7 +3,7 @@
 #include <stddef.h>
 
 #include "reelsim/nip.h"
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 
 rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out)
 {

@@ -4,7 +4,7 @@
  * contact model of the seed paper reproduces that, this model does not. */
 #include <stdlib.h>
 
-#include "reelsim/nip.h"
+#include "nip/nip_seam.h"
 
 typedef struct friction_ctx {
   double mu, load;

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "output/h5_util.h"
-#include "reelsim/nip_contact.h"
+#include "reelsim/nip.h"
 
 /* One 1-D dataset of doubles, for the tables below. */
 typedef struct nip_column {

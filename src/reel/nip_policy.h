@@ -17,7 +17,7 @@
 #ifndef RS_REEL_NIP_POLICY_H
 #define RS_REEL_NIP_POLICY_H
 
-#include "reelsim/nip.h"
+#include "nip/nip_seam.h"
 
 typedef struct rs_nip_policy {
   rs_nip_update_kind kind;

@@ -13,9 +13,9 @@
 #include "util/cancel.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 #include "reelsim/reel.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 
 void rs_reel_result_destroy(rs_reel_result **resp)
 {

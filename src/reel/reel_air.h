@@ -5,7 +5,7 @@
 
 #include "reelsim/problem.h"
 #include "reelsim/reel.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 #include "reelsim/status.h"
 
 typedef struct rs_reel_air {

@@ -21,7 +21,7 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 #include "util/sundials_compat.h"
 
 enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };

@@ -1,5 +1,5 @@
 /* Thin orthotropic sheet of the seed paper (eqs. (9)-(11)); see reelsim/sheet.h. */
-#include "reelsim/sheet.h"
+#include "sheet/sheet.h"
 
 #include <math.h>
 

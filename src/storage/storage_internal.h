@@ -12,6 +12,7 @@
 
 #include "reelsim/problem.h"
 #include "reelsim/reel.h"
+#include "roll/roll.h" /* RS_ACCURACY_PER_RTOL */
 #include "reelsim/status.h"
 
 typedef struct rs_storage_roll {

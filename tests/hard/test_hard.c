@@ -22,7 +22,7 @@
 
 #include "check.h"
 #include "reelsim/reel.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 #include "reelsim/scene.h"
 #include "roll_helpers.h"
 

@@ -36,7 +36,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 

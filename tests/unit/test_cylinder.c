@@ -3,7 +3,7 @@
  * closed forms, the half-plane limit, kernel parity and the series acceleration. */
 #include "check.h"
 #include "cylinder/internal.h"
-#include "reelsim/cylinder.h"
+#include "cylinder/cylinder.h"
 
 #include <stdlib.h>
 

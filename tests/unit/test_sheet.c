@@ -2,7 +2,7 @@
  * of the thinning and the face strain, and the plane-strain reduction against an explicit
  * 3x3 inverse. */
 #include "check.h"
-#include "reelsim/sheet.h"
+#include "sheet/sheet.h"
 
 static rs_sheet_constants paper(int plane_strain)
 {

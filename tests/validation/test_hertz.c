@@ -4,7 +4,7 @@
  *   1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2,  1/R* = 1/R1 + 1/R2,
  * valid for a << R; the cores are small (R0/R = 0.01) so the bodies are nearly solid. */
 #include "check.h"
-#include "reelsim/cylinder.h"
+#include "cylinder/cylinder.h"
 
 #define PI 3.14159265358979323846
 

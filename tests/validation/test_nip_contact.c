@@ -6,7 +6,7 @@
 
 #include "check.h"
 #include "nip/contact_internal.h" /* the roll constants the scene glue chose (nit_levels_off) */
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 
 #define PI 3.14159265358979323846
 

@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "reelsim/nip_contact.h"
+#include "nip/nip_contact.h"
 #include "reelsim/scene.h"
 
 #ifndef RS_TESTS_DIR

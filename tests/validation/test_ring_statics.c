@@ -15,7 +15,7 @@
 
 #include "check.h"
 #include "reelsim/core.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 #include "ring_statics.h"
 #include "roll_helpers.h"
 

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
 #include "roll_helpers.h"
 
 static void compare_altmann(double Ec, double nu, double rtol_check, rs_load_placement placement)

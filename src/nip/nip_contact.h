@@ -31,17 +31,19 @@
  * (2(M-1)), sheet equilibrium and winder torque (20) (2).
  *
  * Thread safety: a handle is used by one thread at a time. No I/O. */
-#ifndef REELSIM_NIP_CONTACT_H
-#define REELSIM_NIP_CONTACT_H
+#ifndef RS_NIP_NIP_CONTACT_H
+#define RS_NIP_NIP_CONTACT_H
 
-#include "reelsim/cylinder.h"
+#include "cylinder/cylinder.h"
 #include "reelsim/material.h"
+#include "nip/nip_seam.h"
 #include "reelsim/nip.h"
-#include "reelsim/sheet.h"
+#include "sheet/sheet.h"
 #include "reelsim/status.h"
 
-#include "reelsim/export.h"
-RS_BEGIN_DECLS
+
+/* Deep copy into dst (whose arrays are reused or grown); free dst with rs_nip_solution_free. */
+rs_status rs_nip_solution_copy(rs_nip_solution *dst, const rs_nip_solution *src);
 
 typedef struct rs_nip_contact_config {
   rs_ortho drum;               /* constants of the lower cylinder (plane strain) */
@@ -58,48 +60,10 @@ typedef struct rs_nip_contact_config {
   double load_rtol;            /* |P(a)/P - 1| at the returned a; 0: 1e-9 */
 } rs_nip_contact_config;
 
-/* One converged nip. Arrays are owned; rs_nip_solution_free releases them. */
-typedef struct rs_nip_solution {
-  int M, capacity;
-  double a;                 /* m, half-width */
-  double dx;                /* m */
-  double load;              /* N/m, int p dx (eq. (21)) of the returned state */
-  double Ti, T0;            /* N/m, incoming and wound-on tension */
-  double xi1;               /* creep of the upper contact (wound-on condition, see above) */
-  double xi2;               /* creep of the lower contact */
-  double delta0;            /* m, approach of the cylinder centres */
-  double eps0;              /* m, shift of the nip centre */
-  double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
-  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix, or
-                               of the kept one it was refined from with the same stick/slip
-                               rows (they differ by the kernels' drift, docs/nip.md) */
-  int iterations;           /* active-set solves at the final half-width */
-  int lcp_pivots;           /* Lemke pivots at the final half-width (0: the active-set
-                               iteration found the state without the LCP) */
-  int width_iterations;     /* half-widths tried by the load search (1 for a given a) */
-  int total_solves;         /* linear solves in all */
-  double dissipation;       /* int (q+ s+ + q- s-) dx >= 0, N/m per unit speed */
-  double *x;                /* M nodes, m */
-  double *pressure;         /* M, Pa, compression positive */
-  double *x_shear;          /* M-1 element midpoints, m */
-  double *shear_upper;      /* M-1, tau+ (Pa) */
-  double *shear_lower;      /* M-1, tau- (Pa) */
-  double *slip_rate_upper;  /* M-1, s+ (0 where stuck) */
-  double *slip_rate_lower;  /* M-1, s- */
-  unsigned char *slip_upper;/* M-1, 1 = slip */
-  unsigned char *slip_lower;
-} rs_nip_solution;
-
-void rs_nip_solution_free(rs_nip_solution *s);
-/* Deep copy into dst (whose arrays are reused or grown); free dst with rs_nip_solution_free. */
-rs_status rs_nip_solution_copy(rs_nip_solution *dst, const rs_nip_solution *src);
-
-typedef struct rs_nip_contact rs_nip_contact;
 
 /* Checks the configuration (RS_ERR_INPUT naming the scene key: nip.friction.roll,
  * nip.friction.drum, nip.drum.radius / core_radius, nip.nodes, nip.torque_share). */
 rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact **out);
-void rs_nip_contact_destroy(rs_nip_contact **nc);
 
 /* The roll (upper cylinder) at this call: constants (plane strain), radius R, core R0.
  * Keeps the previous solution for a warm start; rebuilds the roll kernels only when
@@ -129,17 +93,6 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
 
 /* ---- from a nip spec and the material ------------------------------------------------ */
 
-/* Builds the contact model from a nip spec and the material (the drum, the sheet
- * constants, friction, winder); the roll is set per call by rs_nip_contact_solve_state. */
-rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_material *mat,
-                                          rs_nip_contact **out);
-
-/* One nip at the reel state (roll radius, core radius, Ti, P, surface pressure): chooses
- * the roll's radial modulus (docs/nip.md: secant stack modulus over the mean nip pressure),
- * builds the roll and the sheet, and solves for the load. Needs create_from_spec. */
-rs_status rs_nip_contact_solve_state(rs_nip_contact *nc, const rs_nip_state *st,
-                                     rs_nip_solution *out);
-
 /* The radial modulus the roll gets: the secant modulus of the stack law between p0 and
  * p0 + dp (Pa), (dp) / int_{p0}^{p0+dp} dP / E_r(P); E_r(p0) when dp = 0. */
 double rs_radial_secant_modulus(const rs_radial_law *law, double p0, double dp);
@@ -147,5 +100,4 @@ double rs_radial_secant_modulus(const rs_radial_law *law, double p0, double dp);
 /* The nip seam entry: an rs_nip handle for RS_NIP_CONTACT (used by rs_nip_create). */
 rs_status rs_nip_contact_nip_create(const rs_nip_spec *spec, const rs_material *mat, rs_nip **out);
 
-RS_END_DECLS
 #endif

@@ -16,13 +16,11 @@
  *
  * The compliances are PLANE STRAIN (eps_z = 0: the nip is a long line contact): with the
  * 3-D compliance s (axes 1 = MD, 2 = ZD, 3 = CD), c_ij = s_ij - s_i3 s_j3 / s_33. */
-#ifndef REELSIM_SHEET_H
-#define REELSIM_SHEET_H
+#ifndef RS_SHEET_SHEET_H
+#define RS_SHEET_SHEET_H
 
 #include "reelsim/status.h"
 
-#include "reelsim/export.h"
-RS_BEGIN_DECLS
 
 /* Engineering constants of the sheet. Poisson convention nu_ij = -eps_j / eps_i under a
  * uniaxial stress in direction i (so nu_ij / E_i = nu_ji / E_j). nu_md_zd is the ratio the
@@ -58,5 +56,4 @@ double rs_sheet_thinning(const rs_sheet *s, double N, double p);
 /* eps+ = eps- = c11 N / (2h) - c12 p: MD strain of both faces (tension positive). */
 double rs_sheet_strain(const rs_sheet *s, double N, double p);
 
-RS_END_DECLS
 #endif

@@ -1,4 +1,5 @@
-/* The roll build-up engine: Hakiel-type accretion integrated with SUNDIALS CVODE.
+/* The roll build-up engine (private to the library: the reel winds a roll, applications
+ * wind a problem, reelsim/reel.h): Hakiel-type accretion integrated with SUNDIALS CVODE.
  *
  * Plane stress, axisymmetric, cylindrically orthotropic roll on a core (Hakiel 1987).
  * Each call to rs_roll_add_layers winds m layers of caliper t at wound-on tensions T0
@@ -9,14 +10,13 @@
  * ds(s_k) = -T0/s_k at its outer radius (RS_LOAD_HAKIEL).
  * E_r is the tangent radial modulus at the pressure before the increment (frozen).
  * See docs/roll-model.md for the scale-free (Riccati) formulation that never overflows. */
-#ifndef REELSIM_ROLL_H
-#define REELSIM_ROLL_H
+#ifndef RS_ROLL_ROLL_H
+#define RS_ROLL_ROLL_H
 
 #include "reelsim/material.h"
+#include "reelsim/numerics.h"
 #include "reelsim/status.h"
 
-#include "reelsim/export.h"
-RS_BEGIN_DECLS
 
 typedef struct rs_roll rs_roll;
 
@@ -29,17 +29,6 @@ typedef enum rs_lumping {
                             frozen before the block (kept for comparison) */
 } rs_lumping;
 
-/* Where a new layer's wound-on load goes (docs/roll-model.md, "Where a new layer's load
- * goes"). Both meet as the caliper goes to zero; they differ at first order in t. */
-typedef enum rs_load_placement {
-  RS_LOAD_BENEATH = 0,   /* the default: the layer joins at hoop stress T0/t and, as a thin
-                            ring, presses on the roll beneath it: the increment lives on
-                            [r_c, s_{k-1}] with ds(s_{k-1}) = -T0/s_{k-1}, the new layer's
-                            outer face is traction free (the exact statics of real layers) */
-  RS_LOAD_HAKIEL = 1     /* Hakiel (1987): ds(s_k) = -T0/s_k at the new layer's outer radius,
-                            the new layer part of the loaded body */
-} rs_load_placement;
-
 /* The accuracy rtol stands for, as a share of it. The error correction leaves each
  * integration within a few hundredths of rtol, a tenth at most (docs/roll-model.md); what
  * it does not see is held to RS_ACCURACY_PER_RTOL x rtol directly: the deep reuse (whose
@@ -47,29 +36,6 @@ typedef enum rs_load_placement {
  * measured on six scenes and the 100,633-layer film, docs/accuracy.md) and the storage
  * stages' stepped changes and creep integration (docs/storage.md) */
 #define RS_ACCURACY_PER_RTOL 0.02
-
-/* Whether an increment may keep the deep part of an earlier integration from the core
- * where the modulus has barely changed since, and integrate only from there up (the error
- * this adds to an increment is held to RS_ACCURACY_PER_RTOL x rtol x T0/s). docs/roll-model.md,
- * "Reusing the deep solution" and "The deep part corrected for the drift" (the default, with
- * one layer per increment and its load beneath it; otherwise the first-order reuse). */
-typedef enum rs_reuse {
-  RS_REUSE_ON = 0,       /* the default: the deep part reused, corrected to first order
-                            for the modulus drift since it was integrated */
-  RS_REUSE_OFF = 1,      /* every increment integrated from the core */
-  RS_REUSE_FIRST_ORDER = 2 /* the deep part reused as it was integrated, its drift held to
-                            the tolerance at first order (the start sinks as it drifts) */
-} rs_reuse;
-
-/* Whether the (w, ln y) each integration stores is corrected for its error
- * (docs/roll-model.md, "Correcting the integration's error"): each step's quintic
- * interpolant misses the equations by a defect measured at its middle, and the errors
- * this leaves are carried up the roll by the equations' linearisation; subtracted, the
- * stresses come out 80x or more closer to a tight reference at equal cost. */
-typedef enum rs_correction {
-  RS_CORRECTION_ON = 0,  /* the default */
-  RS_CORRECTION_OFF = 1  /* the stored ln y as CVODE integrates it */
-} rs_correction;
 
 typedef struct rs_roll_params {
   double core_radius;      /* m */
@@ -145,5 +111,4 @@ rs_status rs_roll_save(const rs_roll *roll, rs_roll_state *state);
 /* Restores a state saved from this roll (same parameters). */
 rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *state);
 
-RS_END_DECLS
 #endif

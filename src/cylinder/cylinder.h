@@ -37,13 +37,11 @@
  * Thread safety: a cylinder caches per-mode compliances and grows the cache on demand, so
  * functions that take a non-const rs_cylinder * must not run concurrently on one handle.
  * No I/O anywhere in this module. */
-#ifndef REELSIM_CYLINDER_H
-#define REELSIM_CYLINDER_H
+#ifndef RS_CYLINDER_CYLINDER_H
+#define RS_CYLINDER_CYLINDER_H
 
 #include "reelsim/status.h"
 
-#include "reelsim/export.h"
-RS_BEGIN_DECLS
 
 /* Orthotropic constants of eq. (2), Pa. Positive definite: A_rr, A_tt, G_rt > 0 and
  * A_rr A_tt > A_rt^2. */
@@ -184,5 +182,4 @@ rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double 
                                        const rs_series_opts *opts, double a_max, double rtol,
                                        rs_contact_result *out);
 
-RS_END_DECLS
 #endif
