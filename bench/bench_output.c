@@ -11,6 +11,7 @@
 #include <hdf5.h>
 
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "util/atomic_file.h"
 #include "reelsim/output.h"
 #include "scene/scene_type.h" /* a scene filled by hand */

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/clock.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"

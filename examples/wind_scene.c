@@ -18,7 +18,8 @@ int main(int argc, char **argv)
   rs_status st = rs_scene_load(argv[1], argc - 2, (const char *const *)argv + 2, &scene);
   if (st == RS_OK) st = rs_scene_wind(scene, &opts, &result);
   if (st == RS_OK)
-    printf("%d layers, core pressure %.1f Pa\n", result->n_layers, result->core_pressure);
+    printf("%d layers, core pressure %.1f Pa\n", rs_reel_result_n_layers(result),
+           rs_reel_result_core_pressure(result));
   else
     fprintf(stderr, "wind_scene: %s\n", rs_error_message());
 

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "scene/scene_type.h" /* the fields: these tests look inside */

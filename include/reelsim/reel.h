@@ -2,71 +2,16 @@
 #ifndef REELSIM_REEL_H
 #define REELSIM_REEL_H
 
+#include "reelsim/nip.h"
 #include "reelsim/problem.h"
 #include "reelsim/status.h"
 
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
 
-struct rs_nip_solution;
-
-typedef struct rs_reel_result {
-  int n_layers;
-  double *radius;            /* m, outer radius of each layer */
-  double *wound_on_tension;  /* N/m, T0 */
-  double *web_tension;       /* N/m, Ti from the recipe */
-  double *nip_load;          /* N/m (0 without a nip) */
-  double *sigma_r;           /* Pa, final radial stress per layer (compression < 0) */
-  double *sigma_theta;       /* Pa, final hoop stress per layer */
-  double core_pressure;      /* Pa, compression positive */
-  double core_radius;        /* m */
-  /* Centrifugal load on (problem.centrifugal): the roll spinning at the last layer's speed,
-   * the rest state above plus the spin field (NULL otherwise). */
-  double *at_speed_sigma_r;     /* Pa, per layer */
-  double *at_speed_sigma_theta; /* Pa, per layer */
-  double at_speed_core_pressure; /* Pa */
-  /* Entrained air on (problem.air.on; NULL otherwise): the film under each layer as it
-   * survived into the roll at the ambient pressure, and as the final pressure compresses
-   * it (radius then includes the compressed films); the web wound, at the radii it went
-   * on at (m). */
-  double *air_film_entrained;   /* m, per layer */
-  double *air_film;             /* m, per layer, in the roll at rest */
-  double air_wound_length;      /* m */
-  long increments, cvode_steps, rhs_evals;
-  long full_integrations;    /* increments integrated from the core (numerics.reuse) */
-  double wall_seconds;
-  /* Stress history, when the problem's record.history_every > 0 (else n_stages = 0 and
-   * the arrays are NULL). Stage s is the roll after stage_layers[s] layers: stored at
-   * the first increment boundary at or after each multiple of history_every, and the
-   * last stage is always the final state. The stage arrays are n_stages x n_layers,
-   * row-major, NaN for the layers not yet wound at that stage. */
-  int n_stages;
-  int *stage_layers;         /* layers wound at each stage, increasing */
-  double *stage_radius;      /* m, outer radius of the roll at each stage */
-  double *stage_sigma_r;     /* Pa, compression negative */
-  double *stage_sigma_theta; /* Pa, compression negative */
-  /* The nip record (a problem with a nip): one entry per nip solve the reel kept, in the
-   * order of winding. Solves whose prediction was rejected (adaptive) are counted, not kept. */
-  int n_nip;
-  double *nip_radius;        /* m, roll radius at the solve */
-  double *nip_T0;            /* N/m, wound-on tension found */
-  double *nip_Ti;            /* N/m, web tension there */
-  double *nip_a;             /* m, contact half-width (0 for the friction model) */
-  double *nip_solve_load;    /* N/m, load of the converged contact */
-  int *nip_iterations;       /* stick/slip iterations */
-  long nip_solves;           /* all nip solves, rejected ones included */
-  long nip_rejected;         /* adaptive: rewinds after a failed prediction */
-  /* Full contact distributions at record.nip_profiles_at (contact model only). */
-  int n_profiles;
-  double *profile_radius;    /* m, roll radius of each profile */
-  struct rs_nip_solution *profiles;
-  /* What gauges read (docs/output.md): per layer, the roll's outer radius with the stack
-   * compressed (rs_reel_deformed_radius) in the finished roll and as the layer went on,
-   * and the wound-in tension sigma_theta t of the finished roll. */
-  double *deformed_radius;   /* m */
-  double *wound_radius;      /* m */
-  double *wound_in_tension;  /* N/m */
-} rs_reel_result;
+/* The result of a wind, opaque: read it through the accessors below (the struct's layout
+ * may change between versions without breaking a program). */
+typedef struct rs_reel_result rs_reel_result;
 
 /* Optional observer: called after each increment with the layers wound so far.
  * Return nonzero to stop the run (the result then holds what was finished and the
@@ -158,23 +103,89 @@ typedef struct rs_reel_job {
  * NULL) how many threads ran. */
 rs_status rs_reel_wind_many(int n, rs_reel_job *jobs, int threads, int *used);
 
-/* The result read through functions instead of the struct's layout, for programs that
- * call the library through a foreign-function interface (the Python package): they stay
- * right when fields are added. rs_reel_result_layers: n_layers (0 for NULL).
- * rs_reel_result_array: the per-layer array called `name` ("radius", "wound_on_tension",
- * "web_tension", "nip_load", "sigma_r", "sigma_theta", "deformed_radius", "wound_radius",
- * "wound_in_tension"; with entrained air "air_film",
- * "air_film_entrained"; with the centrifugal load "at_speed_sigma_r",
- * "at_speed_sigma_theta"; owned by the result) with its length in *n (may be NULL); NULL
- * and *n = 0 for an unknown name, an effect the problem did not have, or a NULL result.
- * rs_reel_result_scalar: "core_pressure", "core_radius", "wall_seconds",
- * "at_speed_core_pressure", "air_wound_length"; NaN for an unknown name, an effect the
- * problem did not have, or a NULL result. rs_reel_result_finite: rs_reel_summary_finite of the
- * result's summary (1 when every figure a user reads is a number; else 0, *what naming
- * the first that is not). */
-int rs_reel_result_layers(const rs_reel_result *res);
-const double *rs_reel_result_array(const rs_reel_result *res, const char *name, int *n);
-double rs_reel_result_scalar(const rs_reel_result *res, const char *name);
+/* ---- reading a result ------------------------------------------------------------------
+ * One accessor per field, named after it (src/reel/result_access.c); the one way to read a
+ * result, from C and from a foreign-function interface alike (Python's ctypes calls them
+ * by name). Each accepts NULL (0, NaN or NULL back).
+ *   counts and scalars:  T rs_reel_result_<field>(const rs_reel_result *res)
+ *   arrays:              const T *rs_reel_result_<field>(const rs_reel_result *res, int *n)
+ *     the array (owned by the result, valid until it is destroyed) and its length in *n
+ *     (n may be NULL); NULL and *n = 0 when the result has no such array (an effect the
+ *     problem did not have, no history, no nip). */
+
+/* Per layer j = 0..n_layers-1 (the layers wound; on a failed wind, those finished). */
+int rs_reel_result_n_layers(const rs_reel_result *res);
+const double *rs_reel_result_radius(const rs_reel_result *res, int *n);           /* m, outer radius of each layer */
+const double *rs_reel_result_wound_on_tension(const rs_reel_result *res, int *n); /* N/m, T0 */
+const double *rs_reel_result_web_tension(const rs_reel_result *res, int *n);      /* N/m, Ti from the recipe */
+const double *rs_reel_result_nip_load(const rs_reel_result *res, int *n);         /* N/m (0 without a nip) */
+const double *rs_reel_result_sigma_r(const rs_reel_result *res, int *n);     /* Pa, final radial stress (compression < 0) */
+const double *rs_reel_result_sigma_theta(const rs_reel_result *res, int *n); /* Pa, final hoop stress */
+double rs_reel_result_core_pressure(const rs_reel_result *res); /* Pa, compression positive */
+double rs_reel_result_core_radius(const rs_reel_result *res);   /* m */
+/* What gauges read (docs/output.md): the roll's outer radius with the stack compressed
+ * (rs_reel_deformed_radius) in the finished roll and as the layer went on (m), and the
+ * wound-in tension sigma_theta t of the finished roll (N/m). */
+const double *rs_reel_result_deformed_radius(const rs_reel_result *res, int *n);
+const double *rs_reel_result_wound_radius(const rs_reel_result *res, int *n);
+const double *rs_reel_result_wound_in_tension(const rs_reel_result *res, int *n);
+
+/* Centrifugal load (problem.centrifugal; else NULL, NaN): the roll spinning at the last
+ * layer's speed, the rest state plus the spin field. Pa. */
+const double *rs_reel_result_at_speed_sigma_r(const rs_reel_result *res, int *n);
+const double *rs_reel_result_at_speed_sigma_theta(const rs_reel_result *res, int *n);
+double rs_reel_result_at_speed_core_pressure(const rs_reel_result *res);
+
+/* Entrained air (problem.air.on; else NULL, NaN): the film under each layer as it survived
+ * into the roll at the ambient pressure, and as the final pressure compresses it (m; the
+ * radius then includes the compressed films); the web wound, at the radii it went on (m). */
+const double *rs_reel_result_air_film_entrained(const rs_reel_result *res, int *n);
+const double *rs_reel_result_air_film(const rs_reel_result *res, int *n);
+double rs_reel_result_air_wound_length(const rs_reel_result *res);
+
+/* The work done: increments, CVODE steps and right-hand sides, increments integrated from
+ * the core (numerics.reuse), the solver's wall-clock time (s). */
+long rs_reel_result_increments(const rs_reel_result *res);
+long rs_reel_result_cvode_steps(const rs_reel_result *res);
+long rs_reel_result_rhs_evals(const rs_reel_result *res);
+long rs_reel_result_full_integrations(const rs_reel_result *res);
+double rs_reel_result_wall_seconds(const rs_reel_result *res);
+
+/* Stress history (record.history_every > 0; else n_stages = 0). Stage s is the roll after
+ * stage_layers[s] layers: at the first increment boundary at or after each multiple of
+ * history_every, the last stage the final state. stage_radius: n_stages values (m, the
+ * roll's outer radius); stage_sigma_r, stage_sigma_theta: n_stages x n_layers, row-major
+ * (Pa, compression negative; NaN for the layers not yet wound at that stage). */
+int rs_reel_result_n_stages(const rs_reel_result *res);
+const int *rs_reel_result_stage_layers(const rs_reel_result *res, int *n);
+const double *rs_reel_result_stage_radius(const rs_reel_result *res, int *n);
+const double *rs_reel_result_stage_sigma_r(const rs_reel_result *res, int *n);
+const double *rs_reel_result_stage_sigma_theta(const rs_reel_result *res, int *n);
+
+/* The nip record (a problem with a nip): one entry per nip solve the reel kept, in the
+ * order of winding (n_nip of each); solves whose prediction was rejected (adaptive) are
+ * counted in nip_solves and nip_rejected, not kept. */
+int rs_reel_result_n_nip(const rs_reel_result *res);
+const double *rs_reel_result_nip_radius(const rs_reel_result *res, int *n);     /* m, roll radius */
+const double *rs_reel_result_nip_T0(const rs_reel_result *res, int *n);         /* N/m, T0 found */
+const double *rs_reel_result_nip_Ti(const rs_reel_result *res, int *n);         /* N/m, web tension */
+const double *rs_reel_result_nip_a(const rs_reel_result *res, int *n);          /* m, half-width */
+const double *rs_reel_result_nip_solve_load(const rs_reel_result *res, int *n); /* N/m */
+const int *rs_reel_result_nip_iterations(const rs_reel_result *res, int *n);    /* stick/slip */
+long rs_reel_result_nip_solves(const rs_reel_result *res);
+long rs_reel_result_nip_rejected(const rs_reel_result *res);
+/* Full contact distributions at record.nip_profiles_at (contact model only): n_profiles
+ * of them, at the roll radii profile_radius (m). */
+int rs_reel_result_n_profiles(const rs_reel_result *res);
+const double *rs_reel_result_profile_radius(const rs_reel_result *res, int *n);
+const rs_nip_solution *rs_reel_result_profiles(const rs_reel_result *res, int *n);
+
+/* Forgets the stress history (n_stages becomes 0, its memory freed): a program that keeps
+ * many results (the accuracy study) keeps only what it reads. Accepts NULL. */
+void rs_reel_result_drop_history(rs_reel_result *res);
+
+/* rs_reel_summary_finite of the result's summary: 1 when every figure a user reads is a
+ * number; else 0, *what naming the first that is not ("result" for NULL). */
 int rs_reel_result_finite(const rs_reel_result *res, const char **what);
 
 RS_END_DECLS

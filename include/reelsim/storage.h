@@ -80,12 +80,6 @@ const rs_defect_report *rs_storage_result_defects(const rs_storage_result *res, 
 /* rs_defects_assess with the problem's limits (rs_defect_limits_from_problem). */
 rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result *res,
                                 rs_defect_report **out);
-/* A result's stress history (record.history_every): the stages (0 without), and
- * "radius" (S values) or "sigma_r", "sigma_theta" (S x N) by name; the layers wound at
- * each stage. */
-int rs_reel_result_stages(const rs_reel_result *res);
-const double *rs_reel_result_stage_array(const rs_reel_result *res, const char *name, int *n);
-const int *rs_reel_result_stage_layers(const rs_reel_result *res, int *n);
 
 RS_END_DECLS
 #endif

@@ -3,8 +3,9 @@
 Where it is: $REELSIM_LIBRARY when set, else what the build wrote into _libpath.py (the
 built library in a build tree; for an installed package, the library relative to the
 package, then at the configured install prefix). Only functions are declared here: no C
-struct is mirrored (results are read through rs_reel_result_array/_scalar/_layers), so
-the package does not depend on the layout of the library's structs.
+struct is mirrored (a result is read through its typed accessors, rs_reel_result_<field>,
+called by the field's name), so the package does not depend on the layout of the
+library's structs.
 """
 
 import ctypes
@@ -61,10 +62,22 @@ rs_scene_wind = _fn("rs_scene_wind", _c.c_int, _VP, _VP, _c.POINTER(_VP))
 rs_scene_path = _fn("rs_scene_path", _CP, _VP)
 rs_scene_title = _fn("rs_scene_title", _CP, _VP)
 rs_reel_result_destroy = _fn("rs_reel_result_destroy", None, _c.POINTER(_VP))
-rs_reel_result_layers = _fn("rs_reel_result_layers", _c.c_int, _VP)
-rs_reel_result_array = _fn("rs_reel_result_array", _c.POINTER(_c.c_double), _VP, _CP,
-                           _c.POINTER(_c.c_int))
-rs_reel_result_scalar = _fn("rs_reel_result_scalar", _c.c_double, _VP, _CP)
+
+
+def result_array(field):
+    """The accessor of a result's array field: const double *rs_reel_result_<field>(res, &n)."""
+    return _fn("rs_reel_result_" + field, _c.POINTER(_c.c_double), _VP, _c.POINTER(_c.c_int))
+
+
+def result_double(field):
+    """The accessor of a result's scalar field: double rs_reel_result_<field>(res)."""
+    return _fn("rs_reel_result_" + field, _c.c_double, _VP)
+
+
+rs_reel_result_n_layers = _fn("rs_reel_result_n_layers", _c.c_int, _VP)
+rs_reel_result_n_stages = _fn("rs_reel_result_n_stages", _c.c_int, _VP)
+rs_reel_result_stage_layers = _fn("rs_reel_result_stage_layers", _c.POINTER(_c.c_int), _VP,
+                                  _c.POINTER(_c.c_int))
 rs_reel_result_finite = _fn("rs_reel_result_finite", _c.c_int, _VP, _c.POINTER(_CP))
 rs_scene_assess_defects = _fn("rs_scene_assess_defects", _c.c_int, _VP, _VP, _c.POINTER(_VP))
 rs_defect_report_destroy = _fn("rs_defect_report_destroy", None, _c.POINTER(_VP))

@@ -114,9 +114,14 @@ class _Interruptible:
                 raise KeyboardInterrupt
 
 
+_GET = {k: _lib.result_array(k) for k in _ARRAYS}
+_SCALAR = {k: _lib.result_double(k) for k in ("core_pressure", "wall_seconds",
+                                              "at_speed_core_pressure")}
+
+
 def _copy(res, name):
     n = ctypes.c_int(0)
-    ptr = _lib.rs_reel_result_array(res, name.encode(), ctypes.byref(n))
+    ptr = _GET[name](res, ctypes.byref(n))
     if n.value == 0 or not ptr:
         return np.empty(0)
     return np.ctypeslib.as_array(ptr, shape=(n.value,)).copy()
@@ -180,15 +185,14 @@ def run(scene, sets=None, *, name=None):
                       radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
                       pressure=0.0 - a["sigma_r"],  # as the HDF5 file: +0 where sigma_r = +0
                       wound_on_tension=a["wound_on_tension"],
-                      core_pressure=float(_lib.rs_reel_result_scalar(res, b"core_pressure")),
-                      wall_seconds=float(_lib.rs_reel_result_scalar(res, b"wall_seconds")),
+                      core_pressure=float(_SCALAR["core_pressure"](res)),
+                      wall_seconds=float(_SCALAR["wall_seconds"](res)),
                       web_tension=a["web_tension"], nip_load=a["nip_load"],
                       title=_lib.rs_scene_title(sc).decode("utf-8", "replace"),
                       air_film=a["air_film"], air_film_entrained=a["air_film_entrained"],
                       at_speed_sigma_r=a["at_speed_sigma_r"],
                       at_speed_sigma_theta=a["at_speed_sigma_theta"],
-                      at_speed_core_pressure=float(
-                          _lib.rs_reel_result_scalar(res, b"at_speed_core_pressure")))
+                      at_speed_core_pressure=float(_SCALAR["at_speed_core_pressure"](res)))
     finally:
         _lib.rs_reel_result_destroy(ctypes.byref(res))
         _lib.rs_scene_destroy(ctypes.byref(sc))

@@ -1,6 +1,6 @@
 """What a wound reel carries beyond its final profile: the storage stages (docs/storage.md),
 the defect verdicts (docs/defects.md) and the stress history (output.history_every), from a
-live result through the library's accessors by name (no C struct is mirrored)."""
+live result through the library's accessors (no C struct is mirrored)."""
 
 import ctypes
 from dataclasses import dataclass, field
@@ -21,10 +21,7 @@ _storage_array = _lib._fn("rs_storage_result_array", _DP, _VP, _c.c_char_p, _c.P
 _storage_defects = _lib._fn("rs_storage_result_defects", _VP, _VP, _c.c_int)
 _defect_destroy = _lib._fn("rs_defect_report_destroy", None, _c.POINTER(_VP))
 _scene_problem = _lib._fn("rs_scene_problem", _VP, _VP)
-_result_stages = _lib._fn("rs_reel_result_stages", _c.c_int, _VP)
-_stage_array = _lib._fn("rs_reel_result_stage_array", _DP, _VP, _c.c_char_p, _c.POINTER(_c.c_int))
-_stage_layers = _lib._fn("rs_reel_result_stage_layers", _c.POINTER(_c.c_int), _VP,
-                         _c.POINTER(_c.c_int))
+_stage_array = {k: _lib.result_array("stage_" + k) for k in ("radius", "sigma_r", "sigma_theta")}
 
 # Result.defects: rule -> (its run file's /defects/<group>, number figures, text figures);
 # the figures named as rs_defect_report_value/_text ("<rule>.<figure>") has them
@@ -141,15 +138,15 @@ def _storage_of(sr, n_layers):
 
 
 def _history_of(res, n_layers):
-    S = _result_stages(res)
+    S = _lib.rs_reel_result_n_stages(res)
     if S <= 0:
         return None
     n = _c.c_int(0)
-    lay = _stage_layers(res, _c.byref(n))
+    lay = _lib.rs_reel_result_stage_layers(res, _c.byref(n))
     layers = np.array([lay[i] for i in range(n.value)], dtype=np.int64)
-    radius = _copy(_stage_array(res, b"radius", _c.byref(n)), n.value)
-    sr = _copy(_stage_array(res, b"sigma_r", _c.byref(n)), n.value, (S, n_layers))
-    st = _copy(_stage_array(res, b"sigma_theta", _c.byref(n)), n.value, (S, n_layers))
+    radius = _copy(_stage_array["radius"](res, _c.byref(n)), n.value)
+    sr = _copy(_stage_array["sigma_r"](res, _c.byref(n)), n.value, (S, n_layers))
+    st = _copy(_stage_array["sigma_theta"](res, _c.byref(n)), n.value, (S, n_layers))
     return History(layers=layers, outer_radius=radius, sigma_r=sr, sigma_theta=st)
 
 

@@ -225,7 +225,7 @@ static int check_jobs(compare_state *c)
       cli_fail(k, "%s: %s: %s", rs_scene_path(c->scenes[i]), rs_status_name(job->status), job->message);
     if (cli_fail_is_verbose() && job->where[0]) fprintf(stderr, "reelsim:   (at %s)\n", job->where);
     if (job->result && job->status == RS_ERR_SOLVER)
-      fprintf(stderr, "reelsim:   %d of %d layers were wound\n", job->result->n_layers,
+      fprintf(stderr, "reelsim:   %d of %d layers were wound\n", rs_reel_result_n_layers(job->result),
               rs_scene_problem(c->scenes[i])->n_layers);
     if (code == CLI_EXIT_OK || k == CLI_EXIT_USAGE) code = k;
   }

@@ -72,12 +72,14 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
   printf("  wound-on tension   %.1f .. %.1f N/m\n", s->wot_min, s->wot_max);
   printf("  wall time          %.2f s (solver %.2f s, %ld increments, %ld from the core, %ld CVODE "
          "steps)\n",
-         wall, res->wall_seconds, res->increments, res->full_integrations, res->cvode_steps);
+         wall, rs_reel_result_wall_seconds(res), rs_reel_result_increments(res),
+         rs_reel_result_full_integrations(res), rs_reel_result_cvode_steps(res));
   printf("  output             %s\n", rs_scene_output_file(scene));
   if (csv_dir) {
     char stem[RS_PATH_MAX], path[RS_PATH_MAX + 64];
     rs_scene_name(scene, stem, sizeof stem);
-    if (rs_output_csv_path(csv_dir, stem, res->n_stages > 0 ? "{profile,wot,history}" : "{profile,wot}", path, sizeof path) == RS_OK)
+    const char *kinds = rs_reel_result_n_stages(res) > 0 ? "{profile,wot,history}" : "{profile,wot}";
+    if (rs_output_csv_path(csv_dir, stem, kinds, path, sizeof path) == RS_OK)
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
@@ -103,7 +105,7 @@ static void print_json(const rs_scene *scene, const rs_reel_result *res,
     static const char *const kinds[] = {"profile", "wot", "history"};
     rs_scene_name(scene, stem, sizeof stem);
     cli_json_array(&j, "csv");
-    for (int k = 0; k < (res->n_stages > 0 ? 3 : 2); ++k)
+    for (int k = 0; k < (rs_reel_result_n_stages(res) > 0 ? 3 : 2); ++k)
       if (rs_output_csv_path(csv_dir, stem, kinds[k], path, sizeof path) == RS_OK)
         cli_json_string(&j, NULL, path);
     cli_json_end(&j);
@@ -121,8 +123,10 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
   rs_reel_summary sum;
   const char *what = NULL;
   rs_reel_summarize(res, &sum);
-  for (int j = 0; j < res->n_layers; ++j)
-    if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j])) what = "a layer's stress";
+  int n = 0;
+  const double *sr = rs_reel_result_sigma_r(res, &n), *st = rs_reel_result_sigma_theta(res, NULL);
+  for (int j = 0; j < n; ++j)
+    if (!isfinite(sr[j]) || !isfinite(st[j])) what = "a layer's stress";
   if (what || !rs_reel_summary_finite(&sum, &what)) {
     fprintf(stderr, "reelsim:   --keep-partial: not written, the %s is not a finite number\n",
             what);
@@ -168,7 +172,7 @@ int cli_run(const cli_args *a)
   st = rs_scene_wind(scene, &opts, &res);
   cli_progress_clear(&prog);
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
-    int k = res ? res->n_layers : prog.done, sig = cli_signal_caught();
+    int k = res ? rs_reel_result_n_layers(res) : prog.done, sig = cli_signal_caught();
     const char *how = cli_signal_word(sig);
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
@@ -186,10 +190,11 @@ int cli_run(const cli_args *a)
         fprintf(stderr,
                 "reelsim:   %d of %d layers were wound; partial result written to %s "
                 "(complete = 0)\n",
-                res->n_layers, rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
+                rs_reel_result_n_layers(res), rs_scene_problem(scene)->n_layers,
+                rs_scene_output_file(scene));
       else
         fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
-                res->n_layers, rs_scene_problem(scene)->n_layers);
+                rs_reel_result_n_layers(res), rs_scene_problem(scene)->n_layers);
     }
     goto done;
   }

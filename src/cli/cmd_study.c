@@ -142,17 +142,7 @@ static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
 
 /* Releases the stress history of a finished run: the study only times it (a fine history
  * of a long reel holds hundreds of MB). */
-static void slim(rs_reel_result *res)
-{
-  if (!res) return;
-  free(res->stage_layers);
-  free(res->stage_radius);
-  free(res->stage_sigma_r);
-  free(res->stage_sigma_theta);
-  res->stage_layers = NULL;
-  res->stage_radius = res->stage_sigma_r = res->stage_sigma_theta = NULL;
-  res->n_stages = 0;
-}
+static void slim(rs_reel_result *res) { rs_reel_result_drop_history(res); }
 
 static int n_runs_of(const rs_study_plan *p) { return p ? p->n_runs : 0; }
 

@@ -86,7 +86,7 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
     cli_json_string(j, NULL, rs_scene_warning(scene, i));
   cli_json_end(j);
   cli_json_int(j, "layers", s.layers);
-  cli_json_number(j, "core_radius", res->core_radius);
+  cli_json_number(j, "core_radius", rs_reel_result_core_radius(res));
   cli_json_number(j, "final_radius", s.final_radius);
   cli_json_number(j, "final_diameter", z.deformed_diameter);
   cli_json_number(j, "free_diameter", z.diameter);
@@ -110,9 +110,9 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   cli_json_number(j, "min_hoop_stress_radius", s.min_hoop_radius);
   cli_json_number(j, "wound_on_tension_min", s.wot_min);
   cli_json_number(j, "wound_on_tension_max", s.wot_max);
-  cli_json_number(j, "solver_seconds", res->wall_seconds);
-  cli_json_int(j, "increments", res->increments);
-  cli_json_int(j, "cvode_steps", res->cvode_steps);
+  cli_json_number(j, "solver_seconds", rs_reel_result_wall_seconds(res));
+  cli_json_int(j, "increments", rs_reel_result_increments(res));
+  cli_json_int(j, "cvode_steps", rs_reel_result_cvode_steps(res));
   if (d) defects(j, "defects", d);
   else cli_json_null(j, "defects");
 }

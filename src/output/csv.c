@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "reel/result_internal.h"
 #include "util/atomic_file.h"
 #include "util/shortest.h"
 #include "reelsim/output.h"

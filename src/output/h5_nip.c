@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "reelsim/nip.h"
 
 /* One 1-D dataset of doubles, for the tables below. */

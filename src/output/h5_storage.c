@@ -4,6 +4,7 @@
 
 #include "output/h5_layout.h"
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/storage.h"
 

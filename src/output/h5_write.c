@@ -14,6 +14,7 @@
 #include "output/h5_layout.h"
 #include "output/h5_nip.h"
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "util/atomic_file.h"
 #include "reelsim/version.h"
 

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "reel/defects_internal.h"
+#include "reel/result_internal.h"
 
 static const double pi = 3.14159265358979323846;
 

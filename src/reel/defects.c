@@ -2,6 +2,7 @@
  * with a threshold and says where the roll is prone to a defect. They are screening
  * rules from winding practice, not models of the defects. */
 #include "reel/defects_internal.h"
+#include "reel/result_internal.h"
 
 #include <math.h>
 #include <stdlib.h>

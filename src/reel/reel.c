@@ -14,6 +14,7 @@
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
 #include "nip/nip_contact.h"
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "roll/roll.h"
 

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/material.h"
 
 rs_status rs_reel_air_create(rs_reel_air *air, int N)

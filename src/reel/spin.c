@@ -20,6 +20,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "reelsim/recipe.h"

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 
 int rs_reel_summary_finite(const rs_reel_summary *s, const char **what)

@@ -1,6 +1,6 @@
 /* Results by name for a foreign-function interface (Python's ctypes), which reads these
- * instead of mirroring the structs' layout: the storage stages, the defect verdicts and a
- * result's stress history (reelsim/storage.h). */
+ * instead of mirroring the structs' layout: the storage stages and the defect verdicts
+ * (reelsim/storage.h). */
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -45,27 +45,4 @@ rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result 
   rs_defect_limits lim;
   rs_defect_limits_from_problem(problem, &lim);
   return rs_defects_assess(res, &lim, out);
-}
-
-int rs_reel_result_stages(const rs_reel_result *res) { return res ? res->n_stages : 0; }
-
-const double *rs_reel_result_stage_array(const rs_reel_result *res, const char *name, int *n)
-{
-  if (n) *n = 0;
-  if (!res || !name || res->n_stages <= 0) return NULL;
-  if (strcmp(name, "radius") == 0) {
-    if (n) *n = res->n_stages;
-    return res->stage_radius;
-  }
-  const double *v = strcmp(name, "sigma_r") == 0       ? res->stage_sigma_r
-                    : strcmp(name, "sigma_theta") == 0 ? res->stage_sigma_theta
-                                                       : NULL;
-  if (v && n) *n = res->n_stages * res->n_layers;
-  return v;
-}
-
-const int *rs_reel_result_stage_layers(const rs_reel_result *res, int *n)
-{
-  if (n) *n = res && res->n_stages > 0 ? res->n_stages : 0;
-  return res && res->n_stages > 0 ? res->stage_layers : NULL;
 }

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "storage/storage_internal.h"

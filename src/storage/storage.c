@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/clock.h"
 #include "reelsim/storage.h"
 #include "storage/storage_internal.h"

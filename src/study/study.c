@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reel/result_internal.h"
 #include "reelsim/study.h"
 
 const char *rs_study_figure_name(rs_study_figure f)

@@ -119,22 +119,26 @@ static double interp(const double *xs, const double *ys, int n, double x)
 
 int fr_model(const fr_data *d, const rs_reel_result *res, double *out)
 {
-  const int n = res ? res->n_layers : 0;
-  if (n < 1 || !res->deformed_radius || !res->wound_radius || !res->wound_in_tension) return -1;
+  const int n = rs_reel_result_n_layers(res);
+  const double *radius = rs_reel_result_radius(res, NULL), *sigma_r = rs_reel_result_sigma_r(res, NULL);
+  const double *deformed = rs_reel_result_deformed_radius(res, NULL);
+  const double *wound = rs_reel_result_wound_radius(res, NULL);
+  const double *wit = rs_reel_result_wound_in_tension(res, NULL);
+  if (n < 1 || !deformed || !wound || !wit) return -1;
   double *xs = malloc((size_t)n * sizeof *xs), *ys = malloc((size_t)n * sizeof *ys);
   if (!xs || !ys) {
     free(xs);
     free(ys);
     return -1;
   }
-  double L = 0.0, inner = res->core_radius;
+  double L = 0.0, inner = rs_reel_result_core_radius(res);
   for (int j = 0; j < n; ++j) {
-    L += 3.14159265358979323846 * (inner + res->radius[j]);
-    inner = res->radius[j];
-    xs[j] = d->xkind == FR_LENGTH ? L : res->deformed_radius[j];
-    ys[j] = d->ykind == FR_PRESSURE ? 0.0 - res->sigma_r[j]
-          : d->ykind == FR_WIT ? res->wound_in_tension[j]
-          : 2.0 * (d->xkind == FR_LENGTH ? res->wound_radius[j] : res->deformed_radius[j]);
+    L += 3.14159265358979323846 * (inner + radius[j]);
+    inner = radius[j];
+    xs[j] = d->xkind == FR_LENGTH ? L : deformed[j];
+    ys[j] = d->ykind == FR_PRESSURE ? 0.0 - sigma_r[j]
+          : d->ykind == FR_WIT ? wit[j]
+          : 2.0 * (d->xkind == FR_LENGTH ? wound[j] : deformed[j]);
   }
   for (int i = 0; i < d->n; ++i) out[i] = interp(xs, ys, n, d->x[i]);
   free(xs);

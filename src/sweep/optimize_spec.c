@@ -174,24 +174,25 @@ int opt_target_read(const char *path, opt_target *t, char *err, size_t size)
  * (radius[i], -sigma_r[i]); the end values outside. The radii increase. */
 static double pressure_at(const rs_reel_result *res, double r)
 {
-  int n = res->n_layers;
-  double r0 = res->core_radius, p0 = res->core_pressure;
+  int n = 0;
+  const double *radius = rs_reel_result_radius(res, &n), *sigma_r = rs_reel_result_sigma_r(res, NULL);
+  double r0 = rs_reel_result_core_radius(res), p0 = rs_reel_result_core_pressure(res);
   if (r <= r0) return p0;
-  if (r >= res->radius[n - 1]) return -res->sigma_r[n - 1];
+  if (r >= radius[n - 1]) return -sigma_r[n - 1];
   int lo = -1, hi = n - 1; /* radius[lo] < r <= radius[hi]; lo = -1 is the core */
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;
-    if (res->radius[mid] < r) lo = mid;
+    if (radius[mid] < r) lo = mid;
     else hi = mid;
   }
-  double ra = lo < 0 ? r0 : res->radius[lo], pa = lo < 0 ? p0 : -res->sigma_r[lo];
-  double rb = res->radius[hi], pb = -res->sigma_r[hi];
+  double ra = lo < 0 ? r0 : radius[lo], pa = lo < 0 ? p0 : -sigma_r[lo];
+  double rb = radius[hi], pb = -sigma_r[hi];
   return rb > ra ? pa + (pb - pa) * (r - ra) / (rb - ra) : pb;
 }
 
 double opt_target_misfit(const opt_target *t, const rs_reel_result *res)
 {
-  if (!t || t->n == 0 || !res || res->n_layers < 1) return NAN;
+  if (!t || t->n == 0 || rs_reel_result_n_layers(res) < 1) return NAN;
   double sum = 0;
   for (int i = 0; i < t->n; ++i) {
     double d = pressure_at(res, t->radius[i]) - t->pressure[i];

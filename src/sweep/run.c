@@ -70,13 +70,15 @@ void sweep_result_free(sweep_result *r)
 static void keep_profile(const rs_reel_result *res, rs_output_profile *prof)
 {
   memset(prof, 0, sizeof *prof);
-  if (!res || res->n_layers <= 0) return;
-  size_t n = (size_t)res->n_layers;
+  int nl = 0;
+  const double *radius = rs_reel_result_radius(res, &nl);
+  if (nl <= 0) return;
+  size_t n = (size_t)nl;
   double *block = malloc(3 * n * sizeof *block);
   if (!block) return; /* the figures stand; the profile is left empty */
-  memcpy(block, res->radius, n * sizeof *block);
-  memcpy(block + n, res->sigma_r, n * sizeof *block);
-  memcpy(block + 2 * n, res->sigma_theta, n * sizeof *block);
+  memcpy(block, radius, n * sizeof *block);
+  memcpy(block + n, rs_reel_result_sigma_r(res, NULL), n * sizeof *block);
+  memcpy(block + 2 * n, rs_reel_result_sigma_theta(res, NULL), n * sizeof *block);
   *prof = (rs_output_profile){(int)n, block, block + n, block + 2 * n};
 }
 

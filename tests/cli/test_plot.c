@@ -9,6 +9,7 @@
 #include "check.h"
 #include "output/h5_util.h"
 #include "png_check.h"
+#include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/plot.h"
 #include "synthetic.h"

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "roll/roll.h"
 #include "reelsim/scene.h"

@@ -37,6 +37,7 @@
 
 #include "check.h"
 #include "nip/nip_contact.h"
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "scratch.h"
 #include "sweep/optimize.h"
 

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"

@@ -17,7 +17,7 @@ static void scene_wind_null_out(void)
   rs_reel_result *res = (rs_reel_result *)1;
   CHECK(rs_scene_wind(NULL, NULL, &res) == RS_ERR_INTERNAL && res == NULL);
   /* still winds when asked properly */
-  CHECK(rs_scene_wind(scene, NULL, &res) == RS_OK && res && res->n_layers == 10);
+  CHECK(rs_scene_wind(scene, NULL, &res) == RS_OK && res && rs_reel_result_n_layers(res) == 10);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
 }

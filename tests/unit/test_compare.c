@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/reader.h"
 #include "reelsim/reel.h"

@@ -13,6 +13,7 @@
 #include <hdf5.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "scratch.h"
 #include "reelsim/output.h"
 #include "reelsim/reel.h"

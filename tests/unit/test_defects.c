@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/defects.h"
 #include "reelsim/scene.h"
 

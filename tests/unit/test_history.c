@@ -10,6 +10,7 @@
 #include <hdf5.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"

@@ -16,6 +16,7 @@
 #include "check.h"
 #include "scratch.h"
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "util/atomic_file.h"
 #include "reelsim/output.h"
 #include "scene/scene_type.h" /* make_scene fills one by hand */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 

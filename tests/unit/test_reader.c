@@ -5,6 +5,7 @@
 
 #include "check.h"
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/reader.h"
 #include "synthetic.h"

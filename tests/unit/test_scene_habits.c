@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "scene/scene_type.h" /* the fields: these tests look inside */

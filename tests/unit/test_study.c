@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/study.h"
 
 static int front_of(int n, const double *t, const double *e, int *on)

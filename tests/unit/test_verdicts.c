@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/defects.h"
 #include "reelsim/scene.h"
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/material.h"
 #include "roll_helpers.h"
 #include "reelsim/reel.h"
@@ -181,8 +182,9 @@ static void reel_identities(void)
   CHECK(n < rb->n_layers);
   CHECK_LT(fabs(ra->radius[n - 1] - 0.15), 0.5 * (t + hmax) + 1e-12);
   CHECK_LT(ra->core_pressure, rb->core_pressure);
-  CHECK(rs_reel_result_array(ra, "air_film", NULL) == ra->air_film);
-  CHECK(rs_reel_result_array(rb, "air_film", NULL) == NULL);
+  CHECK(rs_reel_result_air_film(ra, NULL) == ra->air_film);
+  CHECK(!isnan(rs_reel_result_air_wound_length(ra)) && isnan(rs_reel_result_air_wound_length(rb)));
+  CHECK(rs_reel_result_air_film(rb, NULL) == NULL);
   rs_reel_result_destroy(&ra);
   rs_reel_result_destroy(&rb);
   rs_scene_destroy(&a);

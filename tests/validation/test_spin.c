@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reel/spin.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"

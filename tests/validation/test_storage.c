@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/core.h"
 #include "reelsim/reel.h"
 #include "reelsim/storage.h"

@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "check.h"
+#include "reel/result_internal.h"
 #include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
