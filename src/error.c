@@ -1,6 +1,7 @@
 /* The per-thread error record behind include/reelsim/status.h. Per thread, because
  * `reelsim compare` winds several reels at once. */
 #include "reelsim/status.h"
+#include "util/error.h"
 
 #include <stdarg.h>
 #include <stdio.h>

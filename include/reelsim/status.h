@@ -2,8 +2,10 @@
  *
  * Every library function that can fail returns an rs_status. On failure it has
  * recorded where (function, source file, line) and why (a message) in a per-thread
- * error record, read with rs_error_message() / rs_error_where(). The library never
- * prints and never exits; the CLI maps statuses to exit codes (rs_status_exit_code). */
+ * error record, read with rs_error_message() / rs_error_where(). Only the library writes
+ * the record (its setter is private), so what a program reads there is the library's own
+ * word. The library never prints and never exits; the CLI maps statuses to exit codes
+ * (rs_status_exit_code). */
 #ifndef REELSIM_STATUS_H
 #define REELSIM_STATUS_H
 
@@ -20,16 +22,9 @@ typedef enum rs_status {
   RS_ERR_INTERNAL     /* a bug: an invariant did not hold (exit 1) */
 } rs_status;
 
-/* Records an error and returns st. Use through RS_ERROR so the location is filled in.
- * The message is printf-formatted; a previous record is overwritten. */
-rs_status rs_error_set(rs_status st, const char *func, const char *file, int line,
-                       const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-
 /* Prefixes the current message with more context ("while winding layer 12: ...").
  * Returns the recorded status, so a caller can `return rs_error_wrap(...)`. */
 rs_status rs_error_wrap(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-#define RS_ERROR(st, ...) rs_error_set((st), __func__, __FILE__, __LINE__, __VA_ARGS__)
 
 rs_status rs_error_status(void);     /* RS_OK when no error is recorded */
 const char *rs_error_message(void);  /* "" when none */

@@ -26,6 +26,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"
+#include "sweep/app_error.h"
 
 static const char default_output[] = "compare.h5";
 
@@ -62,7 +63,7 @@ static int load_all(compare_state *c)
       cli_scene_warnings(c->scenes[i]);
       continue;
     }
-    if (r->variant) rs_error_wrap("--variant '%s'", r->variant);
+    if (r->variant) app_error_wrap("--variant '%s'", r->variant);
     int k = cli_fail_status(st);
     /* bad input decides the status; an I/O or memory failure only if there is none */
     if (code != CLI_EXIT_USAGE && (k == CLI_EXIT_USAGE || code == CLI_EXIT_OK)) code = k;
@@ -176,7 +177,7 @@ static void store_all(compare_state *c)
     job->wall_seconds += rs_clock_wall() - t0;
     if (st == RS_OK) continue;
     job->status = st;
-    snprintf(job->message, sizeof job->message, "during storage: %s", rs_error_message());
+    snprintf(job->message, sizeof job->message, "during storage: %s", app_error_message());
     job->where[0] = '\0';
     rs_storage_result_destroy(&c->storage[i]);
   }
@@ -298,7 +299,7 @@ int cli_compare(const cli_args *a)
   if (st == RS_OK && a->csv_dir) {
     struct stat sb; /* a --csv that cannot be a directory is found before the winding */
     if (stat(a->csv_dir, &sb) == 0 && !S_ISDIR(sb.st_mode))
-      st = RS_ERROR(RS_ERR_INPUT, "--csv '%s' is not a directory", a->csv_dir);
+      st = APP_ERROR(RS_ERR_INPUT, "--csv '%s' is not a directory", a->csv_dir);
   }
   if (st != RS_OK) {
     code = cli_fail_status(st);
@@ -343,7 +344,7 @@ int cli_compare(const cli_args *a)
   for (int i = 0; names && i < c.n; ++i) names[i] = c.runs.run[i].name;
   st = names ? rs_output_write_compare_stored(c.output, c.n, runs,
                                               (const rs_storage_result *const *)c.storage, names)
-             : RS_ERROR(RS_ERR_MEMORY, "out of memory");
+             : APP_ERROR(RS_ERR_MEMORY, "out of memory");
   free(runs);
   free(names);
   if (st != RS_OK) code = cli_fail_status(st);

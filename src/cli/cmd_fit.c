@@ -11,6 +11,7 @@
 #include "cli/json.h"
 #include "reelsim/fit.h"
 #include "reelsim/version.h"
+#include "sweep/app_error.h"
 
 #ifndef RS_FIT_MODELS_DIR
 #define RS_FIT_MODELS_DIR ""
@@ -161,7 +162,7 @@ static int fit_stack(int argc, char **argv)
   rs_status st = rs_fit_stack_read(f.csv, f.cycle, &P, &eps, &n);
   if (!st) {
     st = rs_fit_stack(n, P, eps, (rs_radial_kind)rs_fit_law_parse(f.law), f.terms, &r);
-    if (st) rs_error_wrap("%s", f.csv);
+    if (st) app_error_wrap("%s", f.csv);
   }
   if (!st && f.plot) {
     char title[512];

@@ -9,6 +9,7 @@
 #include "cli/cli.h"
 #include "reelsim/nip.h"
 #include "reelsim/scene.h"
+#include "sweep/app_error.h"
 
 static void json_array(const char *name, const double *v, int n)
 {
@@ -59,7 +60,7 @@ int cli_nip(const cli_args *a)
   st = rs_nip_contact_create_from_spec(&pb->nip, &pb->material, &nc);
   if (!st) st = rs_nip_contact_solve_state(nc, &ns, &sol);
   if (st) {
-    rs_error_wrap("%s", scene_path);
+    app_error_wrap("%s", scene_path);
     rs_nip_solution_free(&sol); /* a failed solve may have sized it already */
     rs_nip_contact_destroy(&nc);
     rs_scene_destroy(&scene);

@@ -14,6 +14,7 @@
 #include "cli/signals.h"
 #include "reelsim/output.h"
 #include "reelsim/scene.h"
+#include "sweep/app_error.h"
 #include "sweep/optimize.h"
 
 typedef struct opt_cli {
@@ -205,7 +206,7 @@ static int write_best(const cli_args *a, const opt_cli *c, const opt_problem *p,
   char title[1024];
   rs_scene *scene = NULL;
   rs_status st = all ? rs_scene_load(a->scene, n, (const char *const *)sets, &scene)
-                     : RS_ERROR(RS_ERR_MEMORY, "out of memory");
+                     : APP_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) {
     best_title(p, h, rs_scene_title(scene), title, sizeof title);
     rs_scene_destroy(&scene);
@@ -286,13 +287,13 @@ int cli_optimize(const cli_args *a)
           code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
                           opt_figure_name(q[k]), a->scene);
     }
-    rs_error_clear();
+    app_error_clear();
     rs_scene_destroy(&base);
   }
   if (code >= 0) goto done;
   rs_scene *base = NULL;
   if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK) cli_scene_warnings(base);
-  rs_error_clear();
+  app_error_clear();
   rs_scene_destroy(&base);
 
   cli_signals sig;

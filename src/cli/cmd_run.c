@@ -31,6 +31,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"
+#include "sweep/app_error.h"
 
 static int on_progress(void *user, int layers_done, int layers_total)
 {
@@ -133,7 +134,7 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
     return 0;
   }
   if (rs_output_write(rs_scene_output_file(scene), scene, res) != RS_OK) {
-    fprintf(stderr, "reelsim:   --keep-partial: %s\n", rs_error_message());
+    fprintf(stderr, "reelsim:   --keep-partial: %s\n", app_error_message());
     return 0;
   }
   return 1;
@@ -183,7 +184,7 @@ int cli_run(const cli_args *a)
     goto done;
   }
   if (st != RS_OK) {
-    if (st == RS_ERR_INPUT) rs_error_wrap("%s", rs_scene_path(scene)); /* e.g. a nip model not built */
+    if (st == RS_ERR_INPUT) app_error_wrap("%s", rs_scene_path(scene)); /* e.g. a nip model not built */
     code = cli_fail_status(st);
     if (res && st == RS_ERR_SOLVER) {
       if (a->keep_partial && write_partial(scene, res))
@@ -223,7 +224,7 @@ int cli_run(const cli_args *a)
       goto done;
     }
     if (st != RS_OK) {
-      rs_error_wrap("%s", rs_scene_path(scene));
+      app_error_wrap("%s", rs_scene_path(scene));
       code = cli_fail_status(st);
       fprintf(stderr, "reelsim:   the roll was wound; no output written\n");
       goto done;
@@ -247,7 +248,7 @@ int cli_run(const cli_args *a)
     rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv_stored(a->csv_dir, stem, res, storage);
     if (st == RS_OK && rename(staged, out_path) != 0)
-      st = RS_ERROR(RS_ERR_IO, "cannot rename '%s' onto output file '%s': %s", staged, out_path,
+      st = APP_ERROR(RS_ERR_IO, "cannot rename '%s' onto output file '%s': %s", staged, out_path,
                     strerror(errno));
     if (st != RS_OK) {
       unlink(staged);

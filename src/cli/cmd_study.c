@@ -23,6 +23,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/study.h"
+#include "sweep/app_error.h"
 
 static const char DIR_LABEL[] = "study: output directory";
 
@@ -186,7 +187,7 @@ int cli_study(const cli_args *a)
     for (int k = 0; k < a->n_sets; ++k) sets[k] = a->sets[k];
     for (int k = 0; k < r->n_sets; ++k) sets[a->n_sets + k] = r->sets[k];
     if ((st = rs_scene_load(a->scene, a->n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
-      rs_error_wrap("study run '%s'", r->label);
+      app_error_wrap("study run '%s'", r->label);
       code = cli_fail_status(st);
       fprintf(stderr, "reelsim: study: nothing was wound\n");
       goto done;
@@ -262,7 +263,7 @@ int cli_study(const cli_args *a)
   st = rs_study_plot(&rep, rs_scene_title(base), path, NULL);
   if (st != RS_OK) {
     code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
-                    rs_error_message());
+                    app_error_message());
     goto done;
   }
   if (!a->quiet)

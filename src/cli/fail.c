@@ -1,5 +1,6 @@
 /* See fail.h. */
 #include "cli/fail.h"
+#include "sweep/app_error.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -40,10 +41,10 @@ static void print_lines(const char *msg)
 int cli_fail_status(rs_status st)
 {
   int code = rs_status_exit_code(st);
-  if (st == RS_ERR_INPUT) print_lines(rs_error_message());
-  else if (st == RS_ERR_SOLVER) cli_fail(code, "solver failure: %s", rs_error_message());
-  else cli_fail(code, "%s: %s", rs_status_name(st), rs_error_message());
-  if (verbose && st != RS_ERR_INPUT && rs_error_where()[0])
-    fprintf(stderr, "reelsim:   (at %s)\n", rs_error_where());
+  if (st == RS_ERR_INPUT) print_lines(app_error_message());
+  else if (st == RS_ERR_SOLVER) cli_fail(code, "solver failure: %s", app_error_message());
+  else cli_fail(code, "%s: %s", rs_status_name(st), app_error_message());
+  if (verbose && st != RS_ERR_INPUT && app_error_where()[0])
+    fprintf(stderr, "reelsim:   (at %s)\n", app_error_where());
   return code;
 }

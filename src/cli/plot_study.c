@@ -11,6 +11,7 @@
 #include "cli/plot_study.h"
 #include "reelsim/reader.h"
 #include "reelsim/study.h"
+#include "sweep/app_error.h"
 
 static rs_study_knob knob_of(const char *name)
 {
@@ -29,7 +30,7 @@ int cli_is_study_file(const char *path)
 {
   rs_reader *r = NULL;
   if (rs_reader_open(path, &r) != RS_OK) {
-    rs_error_clear();
+    app_error_clear();
     return 0;
   }
   int yes = rs_reader_exists(r, "/study/runs");
@@ -53,7 +54,7 @@ rs_status cli_plot_study(const char *path, const char *png)
     snprintf(where, sizeof where, "/study/runs/%s", cols[c]);
     st = rs_reader_read_1d(r, where, &col[c], &len[c]);
     if (st == RS_OK && len[c] != n)
-      st = RS_ERROR(RS_ERR_INPUT, "%s: %s has %zu values for %zu runs", path, where, len[c], n);
+      st = APP_ERROR(RS_ERR_INPUT, "%s: %s has %zu values for %zu runs", path, where, len[c], n);
   }
   if (st == RS_OK) st = rs_reader_read_1d(r, "/study/uncertainty", &unc, &n_unc);
   if (st == RS_OK) st = rs_reader_attr_string(r, "/study", "title", &title);
@@ -61,14 +62,14 @@ rs_status cli_plot_study(const char *path, const char *png)
   if (st == RS_OK) st = rs_reader_attr_double(r, "/study", "quick", &quick);
   if (st == RS_OK) st = rs_reader_attr_double(r, "/study", "default_cpu_seconds", &default_cpu);
   if (st == RS_OK && (n_knobs != n || n < 3 || n_unc != RS_N_FIGURES))
-    st = RS_ERROR(RS_ERR_INPUT, "%s: not a whole study (%zu runs, %zu knobs, %zu figures)", path,
+    st = APP_ERROR(RS_ERR_INPUT, "%s: not a whole study (%zu runs, %zu knobs, %zu figures)", path,
                   n, n_knobs, n_unc);
   if (st == RS_OK) {
     plan.n_runs = (int)n;
     plan.quick = quick != 0;
     plan.runs = calloc(n, sizeof *plan.runs);
     rep.rows = calloc(n, sizeof *rep.rows);
-    if (!plan.runs || !rep.rows) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+    if (!plan.runs || !rep.rows) st = APP_ERROR(RS_ERR_MEMORY, "out of memory");
   }
   for (size_t i = 0; st == RS_OK && i < n; ++i) {
     rs_study_run *run = &plan.runs[i];

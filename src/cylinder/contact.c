@@ -2,6 +2,7 @@
  * equation (12) of the seed paper with v+ - v- = 0 and zero shear, hat pressures (16)-(18)
  * and the load from eq. (21). */
 #include "cylinder/internal.h"
+#include "util/error.h"
 
 #include <lapacke.h>
 #include <math.h>

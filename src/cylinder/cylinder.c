@@ -1,6 +1,7 @@
 /* The cylinder handle: constants, the per-mode cache and the large-n expansion of the
  * mode compliance used by the accelerated series. */
 #include "cylinder/internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdlib.h>

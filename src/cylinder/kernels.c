@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "util/cancel.h"
+#include "util/error.h"
 
 enum { KPU, KPE, KQU, KQE, NK };
 

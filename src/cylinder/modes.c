@@ -14,6 +14,7 @@
  * ((R0/r)^l). n = 1 has the double root 0 (rigid translation and a log solution), n = 0
  * decouples into a radial and a torsion problem. */
 #include "cylinder/internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,7 @@
 /* Orthotropic constants: engineering constants -> A constants of eq. (2), and the
  * half-plane limit of the mode compliance. */
 #include "cylinder/internal.h"
+#include "util/error.h"
 
 #include <math.h>
 

@@ -8,6 +8,7 @@
 #include "plot/gnuplot.h"
 #include "reelsim/fit.h"
 #include "util/atomic_file.h"
+#include "util/error.h"
 
 /* the header's columns: which index holds strain, pressure, cycle (-1: absent) */
 static rs_status read_header(const char *path, int lineno, char *line, int *ci)

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "reelsim/fit.h"
+#include "util/error.h"
 
 typedef struct fit_ctx {
   int n, p;

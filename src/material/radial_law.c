@@ -6,6 +6,7 @@
 #include "util/bracket.h"
 
 #include "reelsim/material.h"
+#include "util/error.h"
 
 /* Fritsch & Carlson (1980) monotone cubic slopes: harmonic-mean interior slopes,
  * zero where the data change direction, one-sided three-point ends clipped to keep

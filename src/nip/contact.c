@@ -1,5 +1,6 @@
 /* The nip contact handle: configuration checks, the bodies, cached kernels, warm start. */
 #include "nip/contact_internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -16,6 +16,7 @@
  * exists unless Mt is copositive-plus (docs/nip.md discusses when it is); the caller reports
  * it. The result is used only as an active set: contact_solve.c re-solves and checks it. */
 #include "nip/contact_internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdlib.h>

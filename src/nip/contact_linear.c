@@ -21,6 +21,7 @@
  * N/m; plain equilibration let the pressure vanish against the delta0 column), then row
  * and column equilibration as dgeequ does; both are frozen with the factorization. */
 #include "nip/contact_internal.h"
+#include "util/error.h"
 #include "util/sundials_compat.h"
 
 #include <math.h>

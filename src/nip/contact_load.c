@@ -3,6 +3,7 @@
  * secant steps inside a bracket, bisection when they leave it or stall) on
  * f(ln a) = ln P(a) - ln P, started from the previous a (warm) or the Hertz half-width. */
 #include "nip/contact_internal.h"
+#include "util/error.h"
 
 #include <math.h>
 

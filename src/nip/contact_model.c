@@ -15,6 +15,7 @@
  * 0.95 mu P with the sheet's 50 MPa) and no one default fits paper (tens of MPa), board
  * and film (GPa), so a material without it is refused rather than given a guess. */
 #include "nip/contact_internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdlib.h>

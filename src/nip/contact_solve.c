@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "util/cancel.h"
+#include "util/error.h"
 
 void rs_nip_solution_free(rs_nip_solution *s)
 {

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "nip/nip_seam.h"
+#include "util/error.h"
 
 struct rs_nip {
   const rs_nip_ops *ops;

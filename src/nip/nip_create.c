@@ -4,6 +4,7 @@
 
 #include "reelsim/nip.h"
 #include "nip/nip_contact.h"
+#include "util/error.h"
 
 rs_status rs_nip_create(const rs_nip_spec *spec, const rs_material *material, rs_nip **out)
 {

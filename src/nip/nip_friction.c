@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "nip/nip_seam.h"
+#include "util/error.h"
 
 typedef struct friction_ctx {
   double mu, load;

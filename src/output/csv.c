@@ -13,6 +13,7 @@
 #include "util/atomic_file.h"
 #include "util/shortest.h"
 #include "reelsim/output.h"
+#include "util/error.h"
 
 rs_status rs_output_check_csv_dir(const char *dir)
 {

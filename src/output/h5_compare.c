@@ -9,6 +9,7 @@
 #include "output/h5_util.h"
 #include "reel/result_internal.h"
 #include "reelsim/output.h"
+#include "util/error.h"
 
 void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size)
 {

@@ -7,6 +7,7 @@
 
 #include "output/h5_util.h"
 #include "reelsim/defects.h"
+#include "util/error.h"
 
 /* The flagged ranges: layer indices (0-based, as in /layers) and outer radii. */
 static rs_status write_ranges(hid_t g, const rs_defect_range *ranges, int n)

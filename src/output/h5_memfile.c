@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "output/h5_util.h"
+#include "util/error.h"
 
 rs_status rs_h5_memfile_create(hid_t *file)
 {

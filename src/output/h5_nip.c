@@ -8,6 +8,7 @@
 #include "output/h5_util.h"
 #include "reel/result_internal.h"
 #include "reelsim/nip.h"
+#include "util/error.h"
 
 /* One 1-D dataset of doubles, for the tables below. */
 typedef struct nip_column {

@@ -14,6 +14,7 @@
 
 #include "output/h5_read_check.h"
 #include "output/h5_util.h"
+#include "util/error.h"
 
 struct rs_reader {
   char *path;

@@ -1,6 +1,7 @@
 /* The reader's checks before it trusts an object; see h5_read_check.h. Callers have
  * HDF5's error printing off. */
 #include "output/h5_read_check.h"
+#include "util/error.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -7,6 +7,7 @@
 #include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "reelsim/storage.h"
+#include "util/error.h"
 
 rs_status rs_h5_write_storage(hid_t loc, const rs_storage_result *sr)
 {

@@ -9,6 +9,7 @@
 #include "output/h5_util.h"
 #include "reelsim/output.h"
 #include "util/atomic_file.h"
+#include "util/error.h"
 #include "util/shortest.h"
 
 static rs_status check_sweep(const rs_output_sweep *sw)

@@ -1,6 +1,7 @@
 /* HDF5 writing helpers; see h5_util.h. Each helper closes everything it opened on
  * every path, so a failed write leaks no HDF5 identifiers. */
 #include "output/h5_util.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdio.h>

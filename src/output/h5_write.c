@@ -17,6 +17,7 @@
 #include "reel/result_internal.h"
 #include "util/atomic_file.h"
 #include "reelsim/version.h"
+#include "util/error.h"
 
 /* The file records when it was made, in UTC so files from different machines sort. */
 static void iso8601_now(char *buf, size_t len)

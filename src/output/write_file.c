@@ -5,6 +5,7 @@
 
 #include "output/h5_util.h"
 #include "util/atomic_file.h"
+#include "util/error.h"
 
 rs_status rs_output_write_file(const char *path, const void *data, size_t size)
 {

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 const char *plot_at(char *buf, const char *fmt, ...)
 {

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "util/atomic_file.h"
+#include "util/error.h"
 
 extern char **environ;
 

@@ -11,6 +11,7 @@
 
 #include "plot/figures.h"
 #include "plot/plot_internal.h"
+#include "util/error.h"
 #include "util/path_stem.h"
 
 void rs_plot_list_free(char ***list, int n)

@@ -7,6 +7,7 @@
 #include "reelsim/reader.h"
 
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 typedef enum quantity { Q_PRESSURE, Q_HOOP, Q_TENSION, Q_AIR } quantity;
 

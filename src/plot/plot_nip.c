@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 typedef struct profile {
   size_t nx, ns;

@@ -9,6 +9,7 @@
 
 #include "plot/figures.h"
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 /* The values of quantity `name` at each of the n evaluations (*y malloc'd, NULL when the
  * file has no such quantity). */

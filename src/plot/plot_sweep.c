@@ -17,6 +17,7 @@
 
 #include "plot/figures.h"
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 /* The figures drawn, with the factor to the unit on the axis (status is not drawn). */
 static const struct {

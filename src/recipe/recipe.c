@@ -4,6 +4,7 @@
 #include "util/bracket.h"
 
 #include "reelsim/recipe.h"
+#include "util/error.h"
 
 /* constant   start
  * linear     start + (end - start) (r - r0) / (r1 - r0)

@@ -10,6 +10,7 @@
 
 #include "reelsim/clock.h"
 #include "reelsim/reel.h"
+#include "util/error.h"
 
 typedef struct pool {
   int n;

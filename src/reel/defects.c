@@ -3,6 +3,7 @@
  * rules from winding practice, not models of the defects. */
 #include "reel/defects_internal.h"
 #include "reel/result_internal.h"
+#include "util/error.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -18,6 +18,7 @@
 #include "reelsim/material.h"
 #include "reel/gauge.h"
 #include "reelsim/reel.h"
+#include "util/error.h"
 
 enum { STRAIN_TABLE = 256 };
 

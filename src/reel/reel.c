@@ -17,6 +17,7 @@
 #include "reel/result_internal.h"
 #include "reelsim/reel.h"
 #include "roll/roll.h"
+#include "util/error.h"
 
 void rs_reel_result_destroy(rs_reel_result **resp)
 {

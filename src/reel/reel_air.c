@@ -10,6 +10,7 @@
 
 #include "reel/result_internal.h"
 #include "reelsim/material.h"
+#include "util/error.h"
 
 rs_status rs_reel_air_create(rs_reel_air *air, int N)
 {

@@ -24,6 +24,7 @@
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "reelsim/recipe.h"
+#include "util/error.h"
 
 static double expm1_over(double z) { return fabs(z) < 1e-300 ? 1.0 : expm1(z) / z; }
 

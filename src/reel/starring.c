@@ -6,6 +6,7 @@
 
 #include "reel/defects_internal.h"
 #include "reel/result_internal.h"
+#include "util/error.h"
 
 /* Ring on a Winkler foundation (Brush & Almroth 1975, ring on an elastic foundation;
  * inextensional modes w ~ cos(m theta)): the hoop force at which mode m is neutral is

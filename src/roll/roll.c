@@ -50,6 +50,7 @@
 #include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
 #include "roll/vector2.h"
+#include "util/error.h"
 #include "util/sundials_compat.h"
 
 void rs_roll_destroy(rs_roll **rollp)

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "roll/roll_internal.h"
+#include "util/error.h"
 
 /* E at the nodes [lo, hi) (pressures P) becomes t / (t / E + c), c = h_j p_a / (p_a + P_j)^2 (the law of
  * rs_air_series_modulus), written E - E (c E) / (t + c E): no branch, so the loop

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/error.h"
 
 /* The decay over one layer is exp(d), d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
  * the Taylor sum to d^7 (relative error d^8/8! < 2e-17 for |d| < 0.03) costs 8 flops where

@@ -7,6 +7,7 @@
 
 #include "roll/roll_internal.h"
 #include "roll/vector2.h"
+#include "util/error.h"
 
 /* The state (w, L) at x with its first two x-derivatives, from the equations:
  *   w' = g^2 - 1 - 2w - w^2,   w'' = (g^2)' - 2 (1 + w) w',   L' = w,   L'' = w'. */

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "roll/roll_internal.h"
+#include "util/error.h"
 #include "util/log_vec.h"
 
 /* ln g^2 at node j: from the pass over the integration's nodes (roll_lg2_range), or else

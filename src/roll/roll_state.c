@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/error.h"
 
 /* ---- save / restore ------------------------------------------------------------------- */
 

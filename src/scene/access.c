@@ -5,6 +5,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "scene/scene_type.h"
+#include "util/error.h"
 #include "util/path_stem.h"
 
 const rs_problem *rs_scene_problem(const rs_scene *scene)

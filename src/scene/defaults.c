@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/error.h"
 #include "util/path_stem.h"
 
 typedef struct stems {

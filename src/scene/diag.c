@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 int ys_has(const yn *root, const char *path) { return yn_get(root, path) != NULL; }
 

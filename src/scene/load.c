@@ -6,6 +6,7 @@
 #include "reelsim/version.h"
 #include "scene/ranges.h"
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 /* The resolved scene: a header of comments (what it came from, derived values), then the
  * scene with the material inlined, shorthands expanded, defaults and overrides applied.

@@ -18,6 +18,7 @@
 
 #include "scene/model_dirs.h"
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 static int ends_with(const char *s, const char *suffix)
 {

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 static yn *scalar_like(const yn *like, const char *text, const char *path)
 {

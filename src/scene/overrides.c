@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 /* dst = a + sep + b, cut to size (paths here are bounded by the --set text anyway) */
 static void join3(char *dst, size_t size, const char *a, const char *sep, const char *b)

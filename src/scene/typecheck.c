@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 static const char *kind_name(const yn *node)
 {

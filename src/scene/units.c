@@ -17,6 +17,7 @@
 
 #include "scene/ranges.h"
 #include "scene/scene_internal.h"
+#include "util/error.h"
 
 static pthread_mutex_t units_lock = PTHREAD_MUTEX_INITIALIZER;
 static ut_system *units_sys;

@@ -13,6 +13,7 @@
 #include <yaml.h>
 
 #include "scene/ytree.h"
+#include "util/error.h"
 
 typedef struct anchor {
   char *name;

@@ -1,5 +1,6 @@
 /* The positioned YAML tree (see ytree.h): build, look up, edit, emit (yparse.c reads it). */
 #include "scene/ytree.h"
+#include "util/error.h"
 
 #include <stdarg.h>
 #include <stdio.h>

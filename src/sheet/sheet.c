@@ -1,5 +1,6 @@
 /* Thin orthotropic sheet of the seed paper (eqs. (9)-(11)); see reelsim/sheet.h. */
 #include "sheet/sheet.h"
+#include "util/error.h"
 
 #include <math.h>
 

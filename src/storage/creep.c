@@ -27,6 +27,7 @@
 #include "storage/creep.h"
 #include "util/sundials_compat.h"
 #include "storage/creep_vector.h"
+#include "util/error.h"
 
 struct rs_creep {
   rs_creep_params p;

@@ -5,6 +5,7 @@
 
 #include "storage/creep.h"
 #include "storage/storage_internal.h"
+#include "util/error.h"
 
 struct rs_storage_creep {
   rs_creep *c;

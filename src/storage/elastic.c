@@ -25,6 +25,7 @@
 #include <math.h>
 
 #include "storage/storage_internal.h"
+#include "util/error.h"
 
 /* expm1(z)/z, 1 at z = 0 */
 static double expm1_over(double z) { return fabs(z) < 1e-300 ? 1.0 : expm1(z) / z; }

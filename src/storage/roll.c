@@ -7,6 +7,7 @@
 #include "reelsim/core.h"
 #include "reelsim/material.h"
 #include "storage/storage_internal.h"
+#include "util/error.h"
 
 rs_status rs_storage_roll_init(rs_storage_roll *roll, const rs_problem *problem,
                                const rs_reel_result *wound)

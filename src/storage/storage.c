@@ -9,6 +9,7 @@
 #include "reelsim/clock.h"
 #include "reelsim/storage.h"
 #include "storage/storage_internal.h"
+#include "util/error.h"
 
 int rs_storage_requested(const rs_problem *problem)
 {

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "storage/storage_internal.h"
+#include "util/error.h"
 
 enum { MAX_SUBSTEPS = 1 << 12 };
 

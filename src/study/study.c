@@ -7,6 +7,7 @@
 
 #include "reel/result_internal.h"
 #include "reelsim/study.h"
+#include "util/error.h"
 
 const char *rs_study_figure_name(rs_study_figure f)
 {

@@ -10,6 +10,7 @@
 #include "output/h5_util.h"
 #include "util/atomic_file.h"
 #include "reelsim/study.h"
+#include "util/error.h"
 
 typedef enum col_kind { COL_DOUBLE, COL_INT, COL_STRING } col_kind;
 

@@ -8,6 +8,7 @@
 
 #include "plot/gnuplot.h"
 #include "reelsim/study.h"
+#include "util/error.h"
 
 static const char *const knob_color[RS_N_KNOBS] = {
     [RS_KNOB_RTOL] = "#1f77b4",    [RS_KNOB_LAYERS] = "#d62728",  [RS_KNOB_NODES] = "#2ca02c",

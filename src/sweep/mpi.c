@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "sweep/app_error.h"
 #include "sweep/sweep.h"
 
 #ifdef RS_HAVE_MPI
@@ -166,7 +167,7 @@ rs_status sweep_mpi_wind(const sweep_spec *spec, sweep_result *out)
 {
   (void)spec;
   memset(out, 0, sizeof *out);
-  return RS_ERROR(RS_ERR_INTERNAL, "this reelsim was built without MPI");
+  return APP_ERROR(RS_ERR_INTERNAL, "this reelsim was built without MPI");
 }
 
 #endif

@@ -18,6 +18,7 @@
 #include "reelsim/output.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
+#include "sweep/app_error.h"
 
 void opt_settings_default(opt_settings *s)
 {
@@ -172,7 +173,7 @@ static int evaluate(const opt_problem *p, opt_history *h, const double *x, int p
   f[OPT_MISFIT] = st == RS_OK ? opt_target_misfit(p->target, res) : NAN;
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
-  rs_error_clear();
+  app_error_clear();
   return i;
 }
 

@@ -14,6 +14,7 @@
 
 #include "reelsim/fit.h"
 #include "reelsim/scene.h"
+#include "sweep/app_error.h"
 #include "sweep/fitroll.h"
 
 char **fr_sets_of(const fr_problem *p, const double *x, int *n)
@@ -45,7 +46,7 @@ static rs_status load_at(const fr_problem *p, const double *x, rs_scene **sc)
 {
   int n = 0;
   char **sets = fr_sets_of(p, x, &n);
-  if (!sets) return RS_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
+  if (!sets) return APP_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
   rs_status st = rs_scene_load(p->scene, n, (const char *const *)sets, sc);
   free(sets);
   return st;
@@ -92,7 +93,7 @@ static double objective(unsigned K, const double *u, double *grad, void *data)
     c->r->stopped = 1;
     nlopt_force_stop(c->opt);
   }
-  rs_error_clear();
+  app_error_clear();
   const double rms = sqrt(ssr / p->data->n);
   if (p->after) p->after(p->user, c->r->evaluations, x, rms);
   /* a reel that fails: far worse than any that winds (BOBYQA needs finite values) */
@@ -106,7 +107,7 @@ static rs_status jacobian(const fr_problem *p, const double *x, double *J)
   rs_scene *sc[2 * RS_FIT_MAX_PARAMS] = {0};
   rs_reel_job jobs[2 * RS_FIT_MAX_PARAMS];
   double h[RS_FIT_MAX_PARAMS], *r = malloc((size_t)2 * n * sizeof *r);
-  rs_status st = r ? RS_OK : RS_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
+  rs_status st = r ? RS_OK : APP_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
   memset(jobs, 0, sizeof jobs);
   for (int k = 0; k < K && !st; ++k) {
     double xs[RS_FIT_MAX_PARAMS];
@@ -125,10 +126,10 @@ static rs_status jacobian(const fr_problem *p, const double *x, double *J)
   for (int k = 0; k < K && !st; ++k) {
     for (int s = 0; s < 2 && !st; ++s) {
       if (jobs[2 * k + s].status)
-        st = RS_ERROR(jobs[2 * k + s].status, "fit roll: the reel at %s %+g: %s", p->vars[k].key,
+        st = APP_ERROR(jobs[2 * k + s].status, "fit roll: the reel at %s %+g: %s", p->vars[k].key,
                       s ? -h[k] : h[k], jobs[2 * k + s].message);
       else if (!isfinite(residuals(p, jobs[2 * k + s].result, r + (size_t)s * n)))
-        st = RS_ERROR(RS_ERR_SOLVER, "fit roll: the reel at %s %+g has no layers", p->vars[k].key,
+        st = APP_ERROR(RS_ERR_SOLVER, "fit roll: the reel at %s %+g has no layers", p->vars[k].key,
                       s ? -h[k] : h[k]);
     }
     for (int i = 0; i < n && !st; ++i) J[(size_t)i * K + k] = (r[i] - r[n + i]) / (2 * h[k]);
@@ -146,9 +147,9 @@ rs_status fr_run(const fr_problem *p, fr_result *r)
   memset(r, 0, sizeof *r);
   const int K = p->n_vars, n = p->data->n;
   if (K < 1 || K > RS_FIT_MAX_PARAMS)
-    return RS_ERROR(RS_ERR_INPUT, "fit roll: 1 to %d --vary keys (got %d)", RS_FIT_MAX_PARAMS, K);
+    return APP_ERROR(RS_ERR_INPUT, "fit roll: 1 to %d --vary keys (got %d)", RS_FIT_MAX_PARAMS, K);
   if (n < K + 1)
-    return RS_ERROR(RS_ERR_INPUT,
+    return APP_ERROR(RS_ERR_INPUT,
                     "fit roll: %d measured points cannot determine %d keys with an error "
                     "estimate: at least %d are needed", n, K, K + 1);
   fr_ctx c = {.p = p, .r = r, .res = malloc((size_t)n * sizeof(double))};
@@ -156,14 +157,14 @@ rs_status fr_run(const fr_problem *p, fr_result *r)
   if (!c.res || !J) {
     free(c.res);
     free(J);
-    return RS_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
+    return APP_ERROR(RS_ERR_MEMORY, "fit roll: out of memory");
   }
   for (int i = 0; i < n; ++i) c.scale += p->data->y[i] * p->data->y[i];
   c.scale = c.scale > 0.0 ? sqrt(c.scale / n) : 1.0;
   double u[RS_FIT_MAX_PARAMS], lo[RS_FIT_MAX_PARAMS], hi[RS_FIT_MAX_PARAMS], f = 0.0;
   for (int k = 0; k < K; ++k) u[k] = 0.5, lo[k] = 0.0, hi[k] = 1.0;
   c.opt = nlopt_create(NLOPT_LN_BOBYQA, (unsigned)K);
-  rs_status st = c.opt ? RS_OK : RS_ERROR(RS_ERR_MEMORY, "fit roll: cannot create the optimiser");
+  rs_status st = c.opt ? RS_OK : APP_ERROR(RS_ERR_MEMORY, "fit roll: cannot create the optimiser");
   if (!st) {
     nlopt_set_lower_bounds(c.opt, lo);
     nlopt_set_upper_bounds(c.opt, hi);
@@ -175,7 +176,7 @@ rs_status fr_run(const fr_problem *p, fr_result *r)
     snprintf(r->nlopt, sizeof r->nlopt, "%s", nlopt_result_to_string(nr));
     nlopt_destroy(c.opt);
     if (c.first && !r->stopped)
-      st = RS_ERROR(c.first, "fit roll: the reel at the ranges' middle does not wind");
+      st = APP_ERROR(c.first, "fit roll: the reel at the ranges' middle does not wind");
   }
   for (int k = 0; k < K; ++k) {
     r->x[k] = p->vars[k].lo + u[k] * (p->vars[k].hi - p->vars[k].lo);
@@ -196,7 +197,7 @@ rs_status fr_run(const fr_problem *p, fr_result *r)
       st = jacobian(p, r->x, J);
       if (!st) {
         r->intervals_ok = rs_fit_intervals(n, K, J, ssr, r->half_width, NULL) == RS_OK;
-        rs_error_clear();
+        app_error_clear();
       }
     }
     if (st == RS_ERR_INTERRUPTED) r->stopped = 1, st = RS_OK;

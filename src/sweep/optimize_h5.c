@@ -12,6 +12,7 @@
 
 #include "reelsim/output.h"
 #include "reelsim/version.h"
+#include "sweep/app_error.h"
 
 /* Strings as every reelsim file has them: fixed-length UTF-8, NUL-padded (inside the
  * checksummed object header; docs/output.md, "Checksums"). */
@@ -185,6 +186,6 @@ int opt_history_write(const char *path, const opt_problem *p, const opt_history 
 {
   struct history_fill f = {p, h};
   if (rs_output_write_h5(path, fill_history, &f) == RS_OK) return 0;
-  snprintf(why, size, "%s", rs_error_message());
+  snprintf(why, size, "%s", app_error_message());
   return -1;
 }

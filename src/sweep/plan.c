@@ -1,4 +1,5 @@
 /* The runs of a sweep: grid and Latin hypercube (plan.h). */
+#include "sweep/app_error.h"
 #include "sweep/plan.h"
 
 #include <errno.h>
@@ -17,14 +18,14 @@ rs_status sweep_sample_parse(const char *arg, sweep_sample *s)
     errno = 0;
     long r = strtol(arg + 4, &end, 10);
     if (!arg[4] || *end || errno == ERANGE)
-      return RS_ERROR(RS_ERR_INPUT, "--sample %s: R is not a whole number", arg);
+      return APP_ERROR(RS_ERR_INPUT, "--sample %s: R is not a whole number", arg);
     if (r < 1 || r > SWEEP_MAX_RUNS)
-      return RS_ERROR(RS_ERR_INPUT, "--sample %s: R must lie in [1, %d]", arg, SWEEP_MAX_RUNS);
+      return APP_ERROR(RS_ERR_INPUT, "--sample %s: R must lie in [1, %d]", arg, SWEEP_MAX_RUNS);
     s->kind = SWEEP_SAMPLE_LHS;
     s->runs = (int)r;
     return RS_OK;
   }
-  return RS_ERROR(RS_ERR_INPUT, "--sample %s: expected grid or lhs:R", arg ? arg : "");
+  return APP_ERROR(RS_ERR_INPUT, "--sample %s: expected grid or lhs:R", arg ? arg : "");
 }
 
 void sweep_sample_name(const sweep_sample *s, char *buf, size_t size)
@@ -59,7 +60,7 @@ rs_status sweep_plan_check_size(int n_keys, const sweep_vary *vary, const sweep_
   for (int k = 0; k < n_keys; ++k) {
     n *= vary[k].n > 0 ? vary[k].n : 1;
     if (n > SWEEP_MAX_RUNS)
-      return RS_ERROR(RS_ERR_INPUT, "--vary: the grid has more than %d runs", SWEEP_MAX_RUNS);
+      return APP_ERROR(RS_ERR_INPUT, "--vary: the grid has more than %d runs", SWEEP_MAX_RUNS);
   }
   return RS_OK;
 }
@@ -70,11 +71,11 @@ static rs_status make_grid(sweep_plan *p)
   for (int k = 0; k < p->n_keys; ++k) {
     n *= p->vary[k].n;
     if (n > SWEEP_MAX_RUNS)
-      return RS_ERROR(RS_ERR_INPUT, "--vary: the grid has more than %d runs", SWEEP_MAX_RUNS);
+      return APP_ERROR(RS_ERR_INPUT, "--vary: the grid has more than %d runs", SWEEP_MAX_RUNS);
   }
   p->n_runs = (int)n;
   p->points = malloc((size_t)n * (size_t)p->n_keys * sizeof *p->points);
-  if (!p->points) return RS_ERROR(RS_ERR_MEMORY, "out of memory for %lld runs", n);
+  if (!p->points) return APP_ERROR(RS_ERR_MEMORY, "out of memory for %lld runs", n);
   for (long long i = 0; i < n; ++i) {
     long long rest = i;
     for (int k = p->n_keys - 1; k >= 0; --k) {
@@ -94,7 +95,7 @@ static rs_status make_lhs(sweep_plan *p, int r)
   int *perm = malloc((size_t)r * sizeof *perm);
   if (!p->points || !perm) {
     free(perm);
-    return RS_ERROR(RS_ERR_MEMORY, "out of memory for %d runs", r);
+    return APP_ERROR(RS_ERR_MEMORY, "out of memory for %d runs", r);
   }
   uint64_t state = SWEEP_LHS_SEED;
   for (int k = 0; k < p->n_keys; ++k) {
@@ -128,7 +129,7 @@ rs_status sweep_plan_make(int n_keys, const sweep_vary *vary, const sweep_sample
   memset(plan, 0, sizeof *plan);
   plan->n_keys = n_keys;
   plan->vary = vary;
-  if (n_keys < 1) return RS_ERROR(RS_ERR_INPUT, "nothing to vary: give --vary KEY=LO:HI:N");
+  if (n_keys < 1) return APP_ERROR(RS_ERR_INPUT, "nothing to vary: give --vary KEY=LO:HI:N");
   rs_status st = s->kind == SWEEP_SAMPLE_LHS ? make_lhs(plan, s->runs) : make_grid(plan);
   if (st != RS_OK) sweep_plan_free(plan);
   return st;
@@ -147,7 +148,7 @@ rs_status sweep_plan_sets(const sweep_plan *plan, int i, int n_sets, const char 
   enum { ONE = SWEEP_KEY_MAX + 512 };
   *all = malloc(((size_t)n_sets + (size_t)plan->n_keys) * sizeof **all);
   *text = malloc((size_t)plan->n_keys * ONE);
-  if (!*all || !*text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!*all || !*text) return APP_ERROR(RS_ERR_MEMORY, "out of memory");
   for (int j = 0; j < n_sets; ++j) (*all)[j] = sets[j];
   for (int k = 0; k < plan->n_keys; ++k) {
     char *t = *text + (size_t)k * ONE;

@@ -6,6 +6,7 @@
 
 #include "reelsim/clock.h"
 #include "reelsim/scene.h"
+#include "sweep/app_error.h"
 #include "sweep/sweep.h"
 
 /* Runs per batch and thread: the scenes and results of a batch are in memory together. */
@@ -26,7 +27,7 @@ static rs_status load_run(const sweep_spec *spec, int i, rs_scene **scene)
     for (int k = 0; k < spec->plan->n_keys && used < sizeof what; ++k)
       used += (size_t)snprintf(what + used, sizeof what - used, "%s%s", k ? " " : "",
                                all[spec->n_sets + k]);
-    rs_error_wrap("run %d of %d (%s)", i + 1, spec->plan->n_runs, what);
+    app_error_wrap("run %d of %d (%s)", i + 1, spec->plan->n_runs, what);
   }
   free(all);
   free(text);
@@ -52,7 +53,7 @@ rs_status sweep_result_alloc(sweep_result *r, int n, int profiles)
   if (profiles) r->profiles = calloc((size_t)n, sizeof *r->profiles);
   if (!r->figures || (profiles && !r->profiles)) {
     sweep_result_free(r);
-    return RS_ERROR(RS_ERR_MEMORY, "out of memory for %d runs", n);
+    return APP_ERROR(RS_ERR_MEMORY, "out of memory for %d runs", n);
   }
   for (size_t k = 0; k < (size_t)n * SWEEP_N_FIGURES; ++k) r->figures[k] = NAN;
   return RS_OK;
@@ -101,7 +102,7 @@ void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
     st = rs_scene_wind(scene, &opts, &res);
   }
   double wall = rs_clock_wall() - t0;
-  if (st != RS_OK) say_failed(i, rs_error_message());
+  if (st != RS_OK) say_failed(i, app_error_message());
   sweep_figures_compute(scene ? rs_scene_problem(scene) : NULL, res, st, wall, fig);
   if (prof) {
     if (st == RS_OK) keep_profile(res, prof);
@@ -131,7 +132,7 @@ static rs_status wind_batch(const sweep_spec *spec, int first, int n, sweep_resu
   rs_reel_job *todo = malloc((size_t)n * sizeof *todo);
   int *where = malloc((size_t)n * sizeof *where), m = 0, used = 0;
   rs_status st = RS_OK;
-  if (!todo || !where) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!todo || !where) st = APP_ERROR(RS_ERR_MEMORY, "out of memory");
   for (int j = 0; st == RS_OK && j < n; ++j)
     if (jobs[j].status == RS_OK) {
       where[m] = j;
@@ -173,7 +174,7 @@ rs_status sweep_wind_threads(const sweep_spec *spec, sweep_result *out)
   if (batch > n) batch = n;
   rs_scene **scenes = calloc((size_t)batch, sizeof *scenes);
   rs_reel_job *jobs = calloc((size_t)batch, sizeof *jobs);
-  if (!scenes || !jobs) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!scenes || !jobs) st = APP_ERROR(RS_ERR_MEMORY, "out of memory");
   for (int first = 0; st == RS_OK && first < n; first += batch) {
     if (stopped(spec)) {
       out->stopped = 1;

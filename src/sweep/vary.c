@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "reelsim/scene.h"
+#include "sweep/app_error.h"
 
 /* The whole of s[0..len) is a finite number. */
 static int parse_number(const char *s, size_t len, double *x)
@@ -24,7 +25,7 @@ static int parse_number(const char *s, size_t len, double *x)
 
 static rs_status bad(const sweep_vary *v, const char *why)
 {
-  return RS_ERROR(RS_ERR_INPUT, "--vary %s: %s", v->arg, why);
+  return APP_ERROR(RS_ERR_INPUT, "--vary %s: %s", v->arg, why);
 }
 
 void sweep_vary_clear(sweep_vary *v)
@@ -68,7 +69,7 @@ static rs_status parse_range(sweep_vary *v, const char *s, unsigned allowed)
   v->kind = SWEEP_GRID;
   v->n = (int)n;
   v->values = malloc((size_t)n * sizeof *v->values);
-  if (!v->values) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!v->values) return APP_ERROR(RS_ERR_MEMORY, "out of memory");
   for (int i = 0; i < v->n; ++i)
     v->values[i] = v->n == 1 ? v->lo
                  : i == v->n - 1 ? v->hi
@@ -85,7 +86,7 @@ static rs_status parse_list(sweep_vary *v, const char *s)
   v->values = malloc((size_t)n * sizeof *v->values);
   v->words = malloc((size_t)n * sizeof *v->words);
   v->words_text = strdup(s);
-  if (!v->values || !v->words || !v->words_text) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!v->values || !v->words || !v->words_text) return APP_ERROR(RS_ERR_MEMORY, "out of memory");
   int numeric = 1;
   char *p = v->words_text;
   for (int i = 0; i < n; ++i) {
@@ -141,13 +142,13 @@ rs_status sweep_vary_set_text(const sweep_vary *v, double x, char *buf, size_t s
   int len;
   if (v->words) {
     if (!(x >= 0 && x < v->n) || x != floor(x))
-      return RS_ERROR(RS_ERR_INPUT, "--vary %s: no item %g", v->arg, x);
+      return APP_ERROR(RS_ERR_INPUT, "--vary %s: no item %g", v->arg, x);
     len = snprintf(buf, size, "%s=%s", v->key, v->words[(int)x]);
   } else {
     len = snprintf(buf, size, "%s=%.17g", v->key, x);
   }
   if (len < 0 || (size_t)len >= size)
-    return RS_ERROR(RS_ERR_INPUT, "--vary %s: the value is too long", v->arg);
+    return APP_ERROR(RS_ERR_INPUT, "--vary %s: the value is too long", v->arg);
   return RS_OK;
 }
 
@@ -175,7 +176,7 @@ rs_status sweep_vary_check(const char *scene_path, int n_sets, const char *const
   rs_scene_destroy(&scene);
   if (st != RS_OK) return st;
   const char **all = malloc(((size_t)n_sets + 1) * sizeof *all);
-  if (!all) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  if (!all) return APP_ERROR(RS_ERR_MEMORY, "out of memory");
   int n = v->kind == SWEEP_RANGE ? 2 : v->n;
   for (int i = 0; i < n && st == RS_OK; ++i) {
     double x = v->kind == SWEEP_RANGE ? (i == 0 ? v->lo : v->hi)
@@ -184,6 +185,6 @@ rs_status sweep_vary_check(const char *scene_path, int n_sets, const char *const
     st = check_at(scene_path, n_sets, sets, v, x, all);
   }
   free(all);
-  if (st == RS_ERR_INPUT) return rs_error_wrap("--vary %s", v->arg);
+  if (st == RS_ERR_INPUT) return app_error_wrap("--vary %s", v->arg);
   return st;
 }

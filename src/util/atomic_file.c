@@ -1,6 +1,7 @@
 /* Temporary name, target checks and the final rename; see atomic_file.h. */
 
 #include "util/atomic_file.h"
+#include "util/error.h"
 
 #include <dirent.h>
 #include <errno.h>

@@ -7,7 +7,7 @@ function(rs_sweep_test exe label)
 endfunction()
 
 rs_sweep_test(test_sweep_vary unit SOURCES sweep/test_vary.c
-  CASES grid_values lists_and_ranges refusals checked_against_scene figures_of_a_run figure_names)
+  CASES app_error_record grid_values lists_and_ranges refusals checked_against_scene figures_of_a_run figure_names)
 
 # --- reelsim sweep from the command line ------------------------------------------------
 set(SWEEP_SCENE ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/small.yaml)

@@ -9,6 +9,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "sweep/figures.h"
+#include "sweep/app_error.h"
 #include "sweep/vary.h"
 
 #define SMALL RS_TEST_SCENES "/small.yaml"
@@ -80,7 +81,7 @@ static void refusals(void)
     sweep_vary v;
     rs_status st = sweep_vary_parse(bad[i].arg, bad[i].allowed, &v);
     CHECK(st == RS_ERR_INPUT);
-    const char *msg = rs_error_message();
+    const char *msg = app_error_message();
     int ok = strstr(msg, bad[i].arg) && strstr(msg, bad[i].why) && strncmp(msg, "--vary ", 7) == 0;
     if (!ok) fprintf(stderr, "  %s: got '%s'\n", bad[i].arg, msg);
     CHECK(ok);
@@ -98,23 +99,23 @@ static void checked_against_scene(void)
   sweep_vary_clear(&v);
   CHECK(sweep_vary_parse("winding.tensoin=100:300:3", SWEEP_VARY_GRID, &v) == RS_OK);
   CHECK(sweep_vary_check(SMALL, 0, NULL, &v) == RS_ERR_INPUT);
-  CHECK(strncmp(rs_error_message(), "--vary winding.tensoin=100:300:3: ", 34) == 0);
-  CHECK(strstr(rs_error_message(), "tensoin") != NULL);
+  CHECK(strncmp(app_error_message(), "--vary winding.tensoin=100:300:3: ", 34) == 0);
+  CHECK(strstr(app_error_message(), "tensoin") != NULL);
   sweep_vary_clear(&v);
   /* a final radius below the core's: refused at HI's end only */
   CHECK(sweep_vary_parse("winding.final_radius=0.01,0.06", SWEEP_VARY_LIST, &v) == RS_OK);
   CHECK(sweep_vary_check(SMALL, 0, NULL, &v) == RS_ERR_INPUT);
-  CHECK(strncmp(rs_error_message(), "--vary winding.final_radius=0.01,0.06: ", 38) == 0);
+  CHECK(strncmp(app_error_message(), "--vary winding.final_radius=0.01,0.06: ", 38) == 0);
   sweep_vary_clear(&v);
   CHECK(sweep_vary_parse("material.radial.law=linear,nonsense", SWEEP_VARY_LIST, &v) == RS_OK);
   CHECK(sweep_vary_check(SMALL, 0, NULL, &v) == RS_ERR_INPUT);
-  CHECK(strstr(rs_error_message(), "--vary material.radial.law=linear,nonsense") != NULL);
+  CHECK(strstr(app_error_message(), "--vary material.radial.law=linear,nonsense") != NULL);
   sweep_vary_clear(&v);
   /* a bad --set is the scene's error, not the --vary argument's */
   const char *sets[] = {"numerics.rtol=abc"};
   CHECK(sweep_vary_parse("winding.tension=100:300:3", SWEEP_VARY_GRID, &v) == RS_OK);
   CHECK(sweep_vary_check(SMALL, 1, sets, &v) == RS_ERR_INPUT);
-  CHECK(strstr(rs_error_message(), "--vary") == NULL);
+  CHECK(strstr(app_error_message(), "--vary") == NULL);
   sweep_vary_clear(&v);
 }
 
@@ -180,7 +181,31 @@ static void figure_names(void)
   CHECK(strstr(names, "status") != NULL);
 }
 
+/* The applications' record (sweep/app_error.h): an application's error is read back while
+ * the library's record is unchanged, the library's once it writes again; a wrap prefixes
+ * whichever is current; clearing clears both. */
+static void app_error_record(void)
+{
+  app_error_clear();
+  CHECK(app_error_status() == RS_OK && app_error_message()[0] == '\0');
+  CHECK(APP_ERROR(RS_ERR_INPUT, "--vary x: bad") == RS_ERR_INPUT);
+  CHECK(app_error_status() == RS_ERR_INPUT && strcmp(app_error_message(), "--vary x: bad") == 0);
+  CHECK(strstr(app_error_where(), "app_error_record (test_vary.c:") == app_error_where());
+  CHECK(rs_error_message()[0] == '\0'); /* the library's record is its own */
+  CHECK(app_error_wrap("sweep") == RS_ERR_INPUT);
+  CHECK(strcmp(app_error_message(), "sweep: --vary x: bad") == 0);
+  sweep_vary v; /* the library writes: its word is current */
+  CHECK(sweep_vary_parse("winding.tension=100:300:3", SWEEP_VARY_GRID, &v) == RS_OK);
+  const char *sets[] = {"numerics.rtol=abc"};
+  CHECK(sweep_vary_check(SMALL, 1, sets, &v) == RS_ERR_INPUT);
+  CHECK(strcmp(app_error_message(), rs_error_message()) == 0 && rs_error_message()[0]);
+  sweep_vary_clear(&v);
+  app_error_clear();
+  CHECK(app_error_status() == RS_OK && rs_error_status() == RS_OK);
+}
+
 static const check_case cases[] = {
+    {"app_error_record", app_error_record},
     {"grid_values", grid_values},
     {"lists_and_ranges", lists_and_ranges},
     {"refusals", refusals},

@@ -1,6 +1,7 @@
 /* The error record: what a failure records is what the caller reads back. */
 #include "check.h"
 #include "reelsim/status.h"
+#include "util/error.h"
 
 static rs_status fail_deep(void) { return RS_ERROR(RS_ERR_SOLVER, "no convergence after %d tries", 7); }
 
