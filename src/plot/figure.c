@@ -9,7 +9,7 @@
 #include "plot/plot_internal.h"
 #include "util/error.h"
 
-const char *plot_at(char *buf, const char *fmt, ...)
+const char *rsi_plot_at(char *buf, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -18,7 +18,7 @@ const char *plot_at(char *buf, const char *fmt, ...)
   return buf;
 }
 
-const char *plot_color(int i)
+const char *rsi_plot_color(int i)
 {
   static const char *const palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
                                         "#9467bd", "#8c564b", "#e377c2", "#17becf",
@@ -26,7 +26,7 @@ const char *plot_color(int i)
   return palette[i % (int)(sizeof palette / sizeof palette[0])];
 }
 
-char *plot_path(const plot_ctx *c, const char *what)
+char *rsi_plot_path(const plot_ctx *c, const char *what)
 {
   size_t n = strlen(c->dir) + strlen(c->stem) + strlen(what) + 8;
   char *p = malloc(n);
@@ -37,7 +37,7 @@ char *plot_path(const plot_ctx *c, const char *what)
   return p;
 }
 
-void plot_title(plot_ctx *c, const char *line1, const char *line2)
+void rsi_plot_title(plot_ctx *c, const char *line1, const char *line2)
 {
   size_t n = strlen(line1) + (line2 ? strlen(line2) : 0) + 2;
   char *t = malloc(n);
@@ -49,7 +49,7 @@ void plot_title(plot_ctx *c, const char *line1, const char *line2)
   free(t);
 }
 
-rs_status plot_curve(plot_ctx *c, const double *x, const double *y, size_t n,
+rs_status rsi_plot_curve(plot_ctx *c, const double *x, const double *y, size_t n,
                      const char *style, const char *title, size_t *rows)
 {
   const double *cols[2] = {x, y};
@@ -67,7 +67,7 @@ rs_status plot_curve(plot_ctx *c, const double *x, const double *y, size_t n,
   return st;
 }
 
-void plot_hline(plot_ctx *c, double value, const char *color, const char *title)
+void rsi_plot_hline(plot_ctx *c, double value, const char *color, const char *title)
 {
   rs_gp_plot_item(&c->gp);
   rs_gp_printf(&c->gp, "%.10g with lines dashtype 2 linewidth 2 linecolor rgb '%s' title ",
@@ -75,7 +75,7 @@ void plot_hline(plot_ctx *c, double value, const char *color, const char *title)
   rs_gp_string(&c->gp, title);
 }
 
-void plot_bands(plot_ctx *c, const double *x0, const double *x1, size_t n, double y0,
+void rsi_plot_bands(plot_ctx *c, const double *x0, const double *x1, size_t n, double y0,
                 double y1, const char *color)
 {
   for (size_t k = 0; k < n; ++k) {
@@ -87,7 +87,7 @@ void plot_bands(plot_ctx *c, const double *x0, const double *x1, size_t n, doubl
   }
 }
 
-void plot_band_key(plot_ctx *c, const char *color, const char *title)
+void rsi_plot_band_key(plot_ctx *c, const char *color, const char *title)
 {
   rs_gp_plot_item(&c->gp);
   rs_gp_printf(&c->gp,
@@ -96,7 +96,7 @@ void plot_band_key(plot_ctx *c, const char *color, const char *title)
   rs_gp_string(&c->gp, title);
 }
 
-void plot_empty(plot_ctx *c, const char *why)
+void rsi_plot_empty(plot_ctx *c, const char *why)
 {
   rs_gp_printf(&c->gp, "set xrange [0:1]\nset yrange [0:1]\nset label ");
   rs_gp_string(&c->gp, why);
@@ -107,7 +107,7 @@ void plot_empty(plot_ctx *c, const char *why)
 
 /* ---- a run's data --------------------------------------------------------------------- */
 
-void plot_run_free(run_data *d)
+void rsi_plot_run_free(run_data *d)
 {
   free(d->title);
   free(d->r_mm);
@@ -129,7 +129,7 @@ static rs_status read_layers(const plot_ctx *c, const char *base, const char *re
 {
   char path[PLOT_PATH];
   size_t k = 0;
-  rs_status st = rs_reader_read_1d(c->rd, plot_at(path, "%s%s", base, rel), v, &k);
+  rs_status st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s%s", base, rel), v, &k);
   if (st != RS_OK) return st;
   if (*n == 0) *n = k;
   if (k != *n)
@@ -144,7 +144,7 @@ static rs_status read_optional(const plot_ctx *c, const char *base, const char *
 {
   char path[PLOT_PATH];
   *v = NULL;
-  if (!rs_reader_exists(c->rd, plot_at(path, "%s%s", base, rel))) return RS_OK;
+  if (!rs_reader_exists(c->rd, rsi_plot_at(path, "%s%s", base, rel))) return RS_OK;
   rs_status st = read_layers(c, base, rel, v, &n);
   if (st != RS_OK) {
     free(*v);
@@ -155,7 +155,7 @@ static rs_status read_optional(const plot_ctx *c, const char *base, const char *
   return RS_OK;
 }
 
-rs_status plot_run_read(const plot_ctx *c, int i, run_data *d)
+rs_status rsi_plot_run_read(const plot_ctx *c, int i, run_data *d)
 {
   memset(d, 0, sizeof *d);
   d->base = rs_reader_run_base(c->rd, i);
@@ -176,7 +176,7 @@ rs_status plot_run_read(const plot_ctx *c, int i, run_data *d)
   if (st == RS_OK) st = read_layers(c, d->base, "/layers/web_tension", &d->web, &d->n);
   if (st == RS_OK) st = read_layers(c, d->base, "/layers/nip_load", &d->nip, &d->n);
   if (st == RS_OK)
-    st = rs_reader_read_scalar(c->rd, plot_at(path, "%s/final/core_pressure", d->base),
+    st = rs_reader_read_scalar(c->rd, rsi_plot_at(path, "%s/final/core_pressure", d->base),
                                &d->core_kpa);
   if (st == RS_OK)
     st = read_optional(c, d->base, "/final_at_speed/sigma_r", -1e-3, &d->spin_p_kpa, d->n);
@@ -198,6 +198,6 @@ rs_status plot_run_read(const plot_ctx *c, int i, run_data *d)
     if (d->n >= 2) d->core_r_mm = 2 * d->r_mm[0] - d->r_mm[1];
   }
   free(sr);
-  if (st != RS_OK) plot_run_free(d);
+  if (st != RS_OK) rsi_plot_run_free(d);
   return st;
 }

@@ -40,14 +40,14 @@ static rs_status check_dir(const char *dir)
 
 static rs_status draw(plot_ctx *c, run_data *runs, int n)
 {
-  if (plot_is_search_file(c)) return plot_search_figures(c);
+  if (rsi_plot_is_search_file(c)) return rsi_plot_search_figures(c);
   rs_status st = RS_OK;
-  for (int i = 0; st == RS_OK && i < n; ++i) st = plot_run_read(c, i, &runs[i]);
+  for (int i = 0; st == RS_OK && i < n; ++i) st = rsi_plot_run_read(c, i, &runs[i]);
   if (st != RS_OK) return st;
-  if (rs_reader_is_compare(c->rd)) st = plot_compare_figures(c, runs, n);
-  else st = plot_run_figures(c, &runs[0]);
+  if (rs_reader_is_compare(c->rd)) st = rsi_plot_compare_figures(c, runs, n);
+  else st = rsi_plot_run_figures(c, &runs[0]);
   for (int i = 0; st == RS_OK && i < n; ++i)
-    st = plot_nip_figures(c, &runs[i], rs_reader_is_compare(c->rd));
+    st = rsi_plot_nip_figures(c, &runs[i], rs_reader_is_compare(c->rd));
   return st;
 }
 
@@ -76,7 +76,7 @@ rs_status rs_plot_file(const char *file, const char *dir, const rs_plot_options 
     c.gp.final = NULL;
     c.gp.n_png = 0;
   }
-  for (int i = 0; runs && i < n; ++i) plot_run_free(&runs[i]);
+  for (int i = 0; runs && i < n; ++i) rsi_plot_run_free(&runs[i]);
   free(runs);
   rs_gp_end(&c.gp);
   rs_reader_close(&c.rd);

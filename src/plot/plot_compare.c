@@ -33,7 +33,7 @@ static void limits(plot_ctx *c, const run_data *runs, int n, double scale)
   for (int i = 0; i < n; ++i) {
     char path[PLOT_PATH], title[128];
     double limit;
-    plot_at(path, "%s/defects/pressure", runs[i].base);
+    rsi_plot_at(path, "%s/defects/pressure", runs[i].base);
     if (!rs_reader_exists(c->rd, path) ||
         rs_reader_attr_double(c->rd, path, "limit", &limit) != RS_OK || !isfinite(limit) ||
         !(limit > 0)) {
@@ -43,20 +43,20 @@ static void limits(plot_ctx *c, const run_data *runs, int n, double scale)
     if (limit == drawn) continue;
     snprintf(title, sizeof title, "pressure limit %.4g %s (%s)", limit * scale,
              scale < 1e-3 ? "MPa" : "kPa", runs[i].name);
-    plot_hline(c, limit * scale, plot_color(i), title);
+    rsi_plot_hline(c, limit * scale, rsi_plot_color(i), title);
     drawn = limit;
   }
 }
 
 static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
 {
-  char *out = plot_path(c, figs[q].file), head[512], style[160], title[768];
+  char *out = rsi_plot_path(c, figs[q].file), head[512], style[160], title[768];
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
   if (st != RS_OK) return st;
   snprintf(head, sizeof head, "comparison of %d run%s (%s)", n, n == 1 ? "" : "s", c->stem);
-  plot_title(c, head, figs[q].what);
+  rsi_plot_title(c, head, figs[q].what);
   /* the pressures in kPa, or MPa once any reaches 1000 kPa */
   double top = 0.0, scale = 1e-3, f = 1.0;
   for (int i = 0; q == Q_PRESSURE && i < n; ++i)
@@ -91,35 +91,35 @@ static rs_status overlay(plot_ctx *c, const run_data *runs, int n, quantity q)
       for (size_t j = 0; j < d->n; ++j) ys[j] = y[j] * f;
       y = ys;
     }
-    snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", plot_color(i));
+    snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", rsi_plot_color(i));
     snprintf(title, sizeof title, "%s: %s", d->name, d->title);
-    st = plot_curve(c, d->r_mm, y, d->n, style, title, NULL);
+    st = rsi_plot_curve(c, d->r_mm, y, d->n, style, title, NULL);
     free(ys);
     /* the centrifugal load: the roll spinning (/final_at_speed), dashed in the run's colour */
     const double *spin = q == Q_PRESSURE ? d->spin_p_kpa : q == Q_HOOP ? d->spin_hoop_mpa : NULL;
     if (st == RS_OK && spin) {
       snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
-               plot_color(i));
+               rsi_plot_color(i));
       snprintf(title, sizeof title, "%s spinning (/final_at_speed)", d->name);
       double *ss = q == Q_PRESSURE && f < 1 ? malloc((d->n ? d->n : 1) * sizeof *ss) : NULL;
       for (size_t j = 0; ss && j < d->n; ++j) ss[j] = spin[j] * f;
       if (q == Q_PRESSURE && f < 1 && !ss) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
-      else st = plot_curve(c, d->r_mm, ss ? ss : spin, d->n, style, title, NULL);
+      else st = rsi_plot_curve(c, d->r_mm, ss ? ss : spin, d->n, style, title, NULL);
       free(ss);
     }
     if (st == RS_OK && q == Q_TENSION) {
       snprintf(style, sizeof style, "with lines dashtype 2 linewidth 1.5 linecolor rgb '%s'",
-               plot_color(i));
-      st = plot_curve(c, d->r_mm, d->web, d->n, style, "", NULL);
+               rsi_plot_color(i));
+      st = rsi_plot_curve(c, d->r_mm, d->web, d->n, style, "", NULL);
     }
   }
   if (st == RS_OK && q == Q_PRESSURE) limits(c, runs, n, scale);
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   return st;
 }
 
-rs_status plot_compare_figures(plot_ctx *c, const run_data *runs, int n)
+rs_status rsi_plot_compare_figures(plot_ctx *c, const run_data *runs, int n)
 {
   rs_status st = overlay(c, runs, n, Q_PRESSURE);
   if (st == RS_OK) st = overlay(c, runs, n, Q_HOOP);

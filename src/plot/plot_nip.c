@@ -35,7 +35,7 @@ static rs_status read_opt(plot_ctx *c, const char *group, const char *name, doub
                           size_t *n)
 {
   char path[PLOT_PATH];
-  plot_at(path, "%s/%s", group, name);
+  rsi_plot_at(path, "%s/%s", group, name);
   *v = NULL;
   *n = 0;
   return rs_reader_exists(c->rd, path) ? rs_reader_read_1d(c->rd, path, v, n) : RS_OK;
@@ -74,7 +74,7 @@ static rs_status stick_bands(plot_ctx *c, const double *cx, const double *slip, 
       ++k;
     }
   }
-  plot_bands(c, b0, b1, k, y0, y1, color);
+  rsi_plot_bands(c, b0, b1, k, y0, y1, color);
   *any = k > 0;
   free(b0);
   free(b1);
@@ -120,7 +120,7 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
     snprintf(sub, sizeof sub, "nip profile %s", label);
   }
   snprintf(head, sizeof head, "%s\n%s", d->title, sub);
-  char *out = plot_path(c, file_what);
+  char *out = rsi_plot_path(c, file_what);
   if (!out) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -131,7 +131,7 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
     rs_gp_printf(&c->gp, "\nset grid\nset key outside right top\nset lmargin 10\nset rmargin 34\n"
                          "set xlabel 'position across the nip x (mm)'\n"
                          "set ylabel 'contact pressure p (kPa)'\n");
-    st = plot_curve(c, f.x, f.p, f.nx, "with lines linewidth 2.5 linecolor rgb '#1f77b4'",
+    st = rsi_plot_curve(c, f.x, f.p, f.nx, "with lines linewidth 2.5 linecolor rgb '#1f77b4'",
                     "pressure", NULL);
     rs_gp_plot_end(&c->gp);
   }
@@ -143,14 +143,14 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
     if (st == RS_OK && f.slip_lo && f.n_slip_lo == ns)
       st = stick_bands(c, sx, f.slip_lo, ns, 0.0, 0.5, "#2ca02c", &stick_lo);
     if (st == RS_OK && f.up && f.n_up == ns)
-      st = plot_curve(c, sx, f.up, ns, "with lines linewidth 2 linecolor rgb '#d62728'",
+      st = rsi_plot_curve(c, sx, f.up, ns, "with lines linewidth 2 linecolor rgb '#d62728'",
                       "τ+ sheet on the roll", NULL);
     if (st == RS_OK && f.lo && f.n_lo == ns)
-      st = plot_curve(c, sx, f.lo, ns, "with lines linewidth 2 linecolor rgb '#2ca02c'",
+      st = rsi_plot_curve(c, sx, f.lo, ns, "with lines linewidth 2 linecolor rgb '#2ca02c'",
                       "τ− sheet on the drum / rider", NULL);
-    if (st == RS_OK && stick_up) plot_band_key(c, "#d62728", "stick, roll side (upper half)");
-    if (st == RS_OK && stick_lo) plot_band_key(c, "#2ca02c", "stick, drum side (lower half)");
-    if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no shear data");
+    if (st == RS_OK && stick_up) rsi_plot_band_key(c, "#d62728", "stick, roll side (upper half)");
+    if (st == RS_OK && stick_lo) rsi_plot_band_key(c, "#2ca02c", "stick, drum side (lower half)");
+    if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no shear data");
     rs_gp_plot_end(&c->gp);
   }
   rs_gp_printf(&c->gp, "unset multiplot\n");
@@ -158,19 +158,19 @@ static rs_status profile_figure(plot_ctx *c, const run_data *d, const char *grou
   return st;
 }
 
-rs_status plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run)
+rs_status rsi_plot_nip_figures(plot_ctx *c, const run_data *d, int prefix_run)
 {
   char group[PLOT_PATH];
-  plot_at(group, "%s/nip/profiles", d->base);
+  rsi_plot_at(group, "%s/nip/profiles", d->base);
   if (!rs_reader_exists(c->rd, group)) return RS_OK;
   char **names = NULL;
   size_t n = 0;
   rs_status st = rs_reader_children(c->rd, group, &names, &n);
   for (size_t i = 0; st == RS_OK && i < n; ++i) {
     char sub[PLOT_PATH], what[PLOT_PATH];
-    plot_at(sub, "%s/%s", group, names[i]);
-    if (prefix_run) plot_at(what, "%s-nip-%s", d->name, names[i]);
-    else plot_at(what, "nip-%s", names[i]);
+    rsi_plot_at(sub, "%s/%s", group, names[i]);
+    if (prefix_run) rsi_plot_at(what, "%s-nip-%s", d->name, names[i]);
+    else rsi_plot_at(what, "nip-%s", names[i]);
     st = profile_figure(c, d, sub, names[i], what);
   }
   rs_reader_free_strings(&names, n);

@@ -18,7 +18,7 @@ static rs_status read_quantity(plot_ctx *c, const char *name, double **y, size_t
   char path[PLOT_PATH];
   *y = NULL;
   *n = 0;
-  if (rs_reader_exists(c->rd, plot_at(path, "/optimize/figures/%s", name)))
+  if (rs_reader_exists(c->rd, rsi_plot_at(path, "/optimize/figures/%s", name)))
     return rs_reader_read_1d(c->rd, path, y, n);
   if (!rs_reader_exists(c->rd, "/optimize/parameters") || !rs_reader_exists(c->rd, "/optimize/values"))
     return RS_OK;
@@ -72,7 +72,7 @@ static rs_status feasibility(plot_ctx *c, size_t n, int *ok)
   return st;
 }
 
-rs_status plot_optimize_history(plot_ctx *c)
+rs_status rsi_plot_optimize_history(plot_ctx *c)
 {
   char *objective = NULL, *sense = NULL;
   if (rs_reader_attr_string(c->rd, "/optimize", "objective", &objective) != RS_OK)
@@ -85,7 +85,7 @@ rs_status plot_optimize_history(plot_ctx *c)
   rs_status st = read_quantity(c, objective, &y, &n);
   if (st == RS_OK && rs_reader_exists(c->rd, "/optimize/best"))
     st = rs_reader_read_scalar(c->rd, "/optimize/best", &best);
-  char *out = st == RS_OK ? plot_path(c, "optimize") : NULL;
+  char *out = st == RS_OK ? rsi_plot_path(c, "optimize") : NULL;
   if (st == RS_OK && !out) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -97,25 +97,25 @@ rs_status plot_optimize_history(plot_ctx *c)
     char head[512];
     snprintf(head, sizeof head, "optimisation history (%s): %s %s", c->stem,
              sense ? sense : "objective", objective);
-    plot_title(c, head, "every evaluation; the best feasible one marked");
+    rsi_plot_title(c, head, "every evaluation; the best feasible one marked");
     rs_gp_printf(&c->gp, "set grid\nset xlabel 'evaluation'\nset ylabel ");
     rs_gp_string(&c->gp, objective);
     rs_gp_printf(&c->gp, "\nset key outside below horizontal\nset offsets 0.5, 0.5, 0, 0\n");
     for (size_t i = 0; i < n; ++i) x[i] = (double)(i + 1);
     char style[128];
     for (size_t i = 0; i < n; ++i) yf[i] = ok[i] ? y[i] : NAN;
-    snprintf(style, sizeof style, "with points pointtype 7 linecolor rgb '%s'", plot_color(0));
-    st = plot_curve(c, x, yf, n, style, "feasible", NULL);
+    snprintf(style, sizeof style, "with points pointtype 7 linecolor rgb '%s'", rsi_plot_color(0));
+    st = rsi_plot_curve(c, x, yf, n, style, "feasible", NULL);
     for (size_t i = 0; i < n; ++i) yf[i] = ok[i] ? NAN : y[i];
-    snprintf(style, sizeof style, "with points pointtype 2 linecolor rgb '%s'", plot_color(1));
-    if (st == RS_OK) st = plot_curve(c, x, yf, n, style, "infeasible or failed", NULL);
+    snprintf(style, sizeof style, "with points pointtype 2 linecolor rgb '%s'", rsi_plot_color(1));
+    if (st == RS_OK) st = rsi_plot_curve(c, x, yf, n, style, "infeasible or failed", NULL);
     size_t b = best >= 0 && best < (double)n ? (size_t)best : n;
     if (st == RS_OK && b < n) {
       snprintf(style, sizeof style, "with points pointtype 6 pointsize 3 linewidth 2 "
-                                    "linecolor rgb '%s'", plot_color(3));
-      st = plot_curve(c, &x[b], &y[b], 1, style, "best", NULL);
+                                    "linecolor rgb '%s'", rsi_plot_color(3));
+      st = rsi_plot_curve(c, &x[b], &y[b], 1, style, "best", NULL);
     }
-    if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no evaluation of the objective");
+    if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no evaluation of the objective");
     rs_gp_plot_end(&c->gp);
   }
   free(x);

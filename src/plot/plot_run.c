@@ -43,14 +43,14 @@ static rs_status history_read(plot_ctx *c, const run_data *d, const char *what, 
   char path[PLOT_PATH];
   size_t ns = 0, nl = 0;
   memset(h, 0, sizeof *h);
-  plot_at(path, "%s/history/%s", d->base, what);
+  rsi_plot_at(path, "%s/history/%s", d->base, what);
   if (!rs_reader_exists(c->rd, path)) return RS_OK;
   rs_status st = rs_reader_read_2d(c->rd, path, &h->stress, &h->stages, &h->cols);
   if (st == RS_OK)
-    st = rs_reader_read_1d(c->rd, plot_at(path, "%s/history/layers", d->base), &h->layers,
+    st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s/history/layers", d->base), &h->layers,
                            &nl);
   if (st == RS_OK)
-    st = rs_reader_read_1d(c->rd, plot_at(path, "%s/history/outer_radius", d->base),
+    st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s/history/outer_radius", d->base),
                            &h->outer, &ns);
   if (st == RS_ERR_INPUT || (st == RS_OK && (nl != h->stages || ns != h->stages ||
                                              h->cols > d->n))) {
@@ -84,7 +84,7 @@ static rs_status history_curves(plot_ctx *c, const run_data *d, const history *h
              stage_color[MAX_STAGES - h->n_pick + k]);
     snprintf(title, sizeof title, "after %.0f layers (r = %.1f mm)", h->layers[s],
              h->outer[s] * 1e3);
-    st = plot_curve(c, d->r_mm, y, h->cols, style, title, NULL);
+    st = rsi_plot_curve(c, d->r_mm, y, h->cols, style, title, NULL);
   }
   free(y);
   return st;
@@ -96,8 +96,8 @@ static rs_status defect_bands(plot_ctx *c, const run_data *d, const char *rule,
                               const char *color, int *drawn)
 {
   char p0[PLOT_PATH], p1[PLOT_PATH];
-  plot_at(p0, "%s/defects/%s/range_inner_radius", d->base, rule);
-  plot_at(p1, "%s/defects/%s/range_outer_radius", d->base, rule);
+  rsi_plot_at(p0, "%s/defects/%s/range_inner_radius", d->base, rule);
+  rsi_plot_at(p1, "%s/defects/%s/range_outer_radius", d->base, rule);
   *drawn = 0;
   if (!rs_reader_exists(c->rd, p0) || !rs_reader_exists(c->rd, p1)) return RS_OK;
   double *r0 = NULL, *r1 = NULL;
@@ -115,7 +115,7 @@ static rs_status defect_bands(plot_ctx *c, const run_data *d, const char *rule,
       r0[k] = r0[k] * 1e3 - t;
       r1[k] *= 1e3;
     }
-    plot_bands(c, r0, r1, n0, 0.0, 1.0, color);
+    rsi_plot_bands(c, r0, r1, n0, 0.0, 1.0, color);
     *drawn = 1;
   }
   free(r0);
@@ -131,7 +131,7 @@ static void axes_radius(plot_ctx *c)
 
 static rs_status fig_pressure(plot_ctx *c, const run_data *d)
 {
-  char *out = plot_path(c, "pressure"), title[256];
+  char *out = rsi_plot_path(c, "pressure"), title[256];
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -139,7 +139,7 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   int slip = 0;
   if (st == RS_OK) st = history_read(c, d, "sigma_r", &h);
   if (st != RS_OK) return st;
-  plot_title(c, d->title, "interlayer pressure in the wound reel");
+  rsi_plot_title(c, d->title, "interlayer pressure in the wound reel");
   axes_radius(c);
   /* kPa, or MPa once the pressures reach 1000 kPa (2500 kPa reads better as 2.5 MPa) */
   double top = d->core_kpa, f = 1.0;
@@ -157,29 +157,29 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   char style[128];
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
-  if (st == RS_OK) st = plot_curve(c, d->r_mm, p, d->n, style, title, NULL);
+  if (st == RS_OK) st = rsi_plot_curve(c, d->r_mm, p, d->n, style, title, NULL);
   if (st == RS_OK && sp)
-    st = plot_curve(c, d->r_mm, sp, d->n, spin_style,
+    st = rsi_plot_curve(c, d->r_mm, sp, d->n, spin_style,
                     "spinning at the last layer's speed (/final at rest)", NULL);
   if (st == RS_OK && isfinite(d->core_r_mm)) {
     snprintf(title, sizeof title, "core pressure %.*f %s", f < 1 ? 3 : 2, core, unit);
     snprintf(style, sizeof style, "with points pointtype 7 pointsize 1.6 linecolor rgb '%s'",
              final_color);
-    st = plot_curve(c, &d->core_r_mm, &core, 1, style, title, NULL);
+    st = rsi_plot_curve(c, &d->core_r_mm, &core, 1, style, title, NULL);
   }
   char path[PLOT_PATH];
   double limit;
-  plot_at(path, "%s/defects/pressure", d->base);
+  rsi_plot_at(path, "%s/defects/pressure", d->base);
   if (st == RS_OK && rs_reader_exists(c->rd, path)) {
     if (rs_reader_attr_double(c->rd, path, "limit", &limit) == RS_OK && isfinite(limit)) {
       snprintf(title, sizeof title, "pressure limit %.*f %s", f < 1 ? 3 : 1, limit / 1e3 * f, unit);
-      plot_hline(c, limit / 1e3 * f, "#d62728", title);
+      rsi_plot_hline(c, limit / 1e3 * f, "#d62728", title);
     } else {
       rs_error_clear(); /* no limit recorded: the figure goes without it */
     }
   }
-  if (st == RS_OK && slip) plot_band_key(c, "#ff7f0e", "interlayer slip risk");
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  if (st == RS_OK && slip) rsi_plot_band_key(c, "#ff7f0e", "interlayer slip risk");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);
   free(p);
@@ -189,7 +189,7 @@ static rs_status fig_pressure(plot_ctx *c, const run_data *d)
 
 static rs_status fig_hoop(plot_ctx *c, const run_data *d)
 {
-  char *out = plot_path(c, "hoop"), title[256], style[128];
+  char *out = rsi_plot_path(c, "hoop"), title[256], style[128];
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -197,7 +197,7 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   int hoop = 0, star = 0;
   if (st == RS_OK) st = history_read(c, d, "sigma_theta", &h);
   if (st != RS_OK) return st;
-  plot_title(c, d->title, "hoop stress in the wound reel (compression negative)");
+  rsi_plot_title(c, d->title, "hoop stress in the wound reel (compression negative)");
   axes_radius(c);
   rs_gp_printf(&c->gp, "set ylabel 'hoop stress σθ (MPa)'\nset xzeroaxis linetype -1\n");
   st = defect_bands(c, d, "hoop_compression", "#d62728", &hoop);
@@ -207,13 +207,13 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
   if (st == RS_OK) st = history_curves(c, d, &h, 1e-6);
   snprintf(title, sizeof title, "final (%zu layers)", d->n);
   snprintf(style, sizeof style, "with lines linewidth 2.5 linecolor rgb '%s'", final_color);
-  if (st == RS_OK) st = plot_curve(c, d->r_mm, d->hoop_mpa, d->n, style, title, NULL);
+  if (st == RS_OK) st = rsi_plot_curve(c, d->r_mm, d->hoop_mpa, d->n, style, title, NULL);
   if (st == RS_OK && d->spin_hoop_mpa)
-    st = plot_curve(c, d->r_mm, d->spin_hoop_mpa, d->n, spin_style,
+    st = rsi_plot_curve(c, d->r_mm, d->spin_hoop_mpa, d->n, spin_style,
                     "spinning at the last layer's speed (/final at rest)", NULL);
-  if (st == RS_OK && hoop) plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
-  if (st == RS_OK && star) plot_band_key(c, "#7f0000", "starring risk (docs/defects.md §2)");
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  if (st == RS_OK && hoop) rsi_plot_band_key(c, "#d62728", "hoop compression (σθ < 0)");
+  if (st == RS_OK && star) rsi_plot_band_key(c, "#7f0000", "starring risk (docs/defects.md §2)");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   history_free(&h);
   return st;
@@ -221,7 +221,7 @@ static rs_status fig_hoop(plot_ctx *c, const run_data *d)
 
 static rs_status fig_tension(plot_ctx *c, const run_data *d)
 {
-  char *out = plot_path(c, "tension");
+  char *out = rsi_plot_path(c, "tension");
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -232,7 +232,7 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
     t_max = fmax(t_max, fmax(d->t0[j], d->web[j]));
   }
   int nip = nip_max > 0.0;
-  plot_title(c, d->title, nip ? "wound-on tension T0 and the recipe (web tension, nip load)"
+  rsi_plot_title(c, d->title, nip ? "wound-on tension T0 and the recipe (web tension, nip load)"
                               : "wound-on tension T0 and the web tension of the recipe");
   axes_radius(c);
   /* from 0, with room for the legend above the curves: constant recipes are common and
@@ -243,18 +243,18 @@ static rs_status fig_tension(plot_ctx *c, const run_data *d)
   if (nip)
     rs_gp_printf(&c->gp, "set ytics nomirror\nset y2tics\nset y2label 'nip load (N/m)'\n"
                          "set y2range [0:%.10g]\n", 2.0 * nip_max);
-  st = plot_curve(c, d->r_mm, d->web, d->n,
+  st = rsi_plot_curve(c, d->r_mm, d->web, d->n,
                   "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",
                   "web tension (recipe)", NULL);
   if (st == RS_OK)
-    st = plot_curve(c, d->r_mm, d->t0, d->n,
+    st = rsi_plot_curve(c, d->r_mm, d->t0, d->n,
                     "with lines linewidth 2.5 linecolor rgb '#1f77b4'", "wound-on tension T0",
                     NULL);
   if (st == RS_OK && nip)
-    st = plot_curve(c, d->r_mm, d->nip, d->n,
+    st = rsi_plot_curve(c, d->r_mm, d->nip, d->n,
                     "axes x1y2 with lines dashtype 4 linewidth 2 linecolor rgb '#2ca02c'",
                     "nip load (recipe, right axis)", NULL);
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   return st;
 }
@@ -269,38 +269,38 @@ static rs_status fig_air(plot_ctx *c, const run_data *d)
     if (d->air0_um && d->air0_um[j] > most) most = d->air0_um[j];
     if (d->air_um[j] > most) most = d->air_um[j];
   }
-  char *out = plot_path(c, "air");
+  char *out = rsi_plot_path(c, "air");
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
   if (st != RS_OK) return st;
-  plot_title(c, d->title, "entrained air film under each layer");
+  rsi_plot_title(c, d->title, "entrained air film under each layer");
   axes_radius(c);
   rs_gp_printf(&c->gp, "set ylabel 'air film (µm)'\nset yrange [0:*]\n");
   if (!(most > 0.0)) { /* a flat 0 um line reads as a broken chart: say what happened */
-    plot_empty(c, "no air kept: every entrained film is below air.cutoff roughnesses");
+    rsi_plot_empty(c, "no air kept: every entrained film is below air.cutoff roughnesses");
     rs_gp_plot_end(&c->gp);
     return st;
   }
   if (d->air0_um)
-    st = plot_curve(c, d->r_mm, d->air0_um, d->n,
+    st = rsi_plot_curve(c, d->r_mm, d->air0_um, d->n,
                     "with lines dashtype 2 linewidth 2 linecolor rgb '#7f7f7f'",
                     "as wound on (ambient pressure)", NULL);
   if (st == RS_OK)
-    st = plot_curve(c, d->r_mm, d->air_um, d->n,
+    st = rsi_plot_curve(c, d->r_mm, d->air_um, d->n,
                     "with lines linewidth 2.5 linecolor rgb '#1f77b4'",
                     "in the wound reel (compressed)", NULL);
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
   rs_gp_plot_end(&c->gp);
   return st;
 }
 
-rs_status plot_run_figures(plot_ctx *c, const run_data *d)
+rs_status rsi_plot_run_figures(plot_ctx *c, const run_data *d)
 {
   rs_status st = fig_pressure(c, d);
   if (st == RS_OK) st = fig_hoop(c, d);
   if (st == RS_OK) st = fig_tension(c, d);
   if (st == RS_OK) st = fig_air(c, d);
-  if (st == RS_OK) st = plot_storage_figures(c, d); /* only when the file has /storage */
+  if (st == RS_OK) st = rsi_plot_storage_figures(c, d); /* only when the file has /storage */
   return st;
 }

@@ -37,18 +37,18 @@ static rs_status storage_read(plot_ctx *c, const run_data *d, const char *what, 
   char path[PLOT_PATH];
   size_t n1 = 0, n2 = 0, n3 = 0, n4 = 0;
   memset(s, 0, sizeof *s);
-  if (!rs_reader_exists(c->rd, plot_at(path, "%s/storage/hours", d->base))) return RS_OK;
+  if (!rs_reader_exists(c->rd, rsi_plot_at(path, "%s/storage/hours", d->base))) return RS_OK;
   rs_status st = rs_reader_read_1d(c->rd, path, &s->hours, &n1);
   if (st == RS_OK)
-    st = rs_reader_read_1d(c->rd, plot_at(path, "%s/storage/temperature", d->base), &s->temp, &n2);
+    st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s/storage/temperature", d->base), &s->temp, &n2);
   if (st == RS_OK)
-    st = rs_reader_read_1d(c->rd, plot_at(path, "%s/storage/humidity", d->base), &s->hum, &n3);
+    st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s/storage/humidity", d->base), &s->hum, &n3);
   if (st == RS_OK)
-    st = rs_reader_read_1d(c->rd, plot_at(path, "%s/storage/core_pressure", d->base), &s->core,
+    st = rs_reader_read_1d(c->rd, rsi_plot_at(path, "%s/storage/core_pressure", d->base), &s->core,
                            &n4);
   size_t rows = n1;
   if (st == RS_OK && what)
-    st = rs_reader_read_2d(c->rd, plot_at(path, "%s/storage/%s", d->base, what), &s->stress,
+    st = rs_reader_read_2d(c->rd, rsi_plot_at(path, "%s/storage/%s", d->base, what), &s->stress,
                            &rows, &s->cols);
   if (st == RS_ERR_INPUT || (st == RS_OK && (n2 != n1 || n3 != n1 || n4 != n1 || rows != n1 ||
                                              (what && s->cols != d->n)))) {
@@ -78,7 +78,7 @@ static rs_status fig_by_stage(plot_ctx *c, const run_data *d, const char *what, 
   storage s;
   rs_status st = storage_read(c, d, what, &s);
   if (st != RS_OK || s.S == 0) return st;
-  char *out = plot_path(c, file);
+  char *out = rsi_plot_path(c, file);
   if (!out) {
     storage_free(&s);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory");
@@ -88,7 +88,7 @@ static rs_status fig_by_stage(plot_ctx *c, const run_data *d, const char *what, 
   double *y = malloc((s.cols ? s.cols : 1) * sizeof *y);
   if (st == RS_OK && !y) st = RS_ERROR(RS_ERR_MEMORY, "out of memory");
   if (st == RS_OK) {
-    plot_title(c, d->title, sub);
+    rsi_plot_title(c, d->title, sub);
     rs_gp_printf(&c->gp, "set xlabel 'radius r (mm)'\nset grid\nset key below left Left reverse\n"
                          "set ylabel '%s'\nset xzeroaxis linetype -1\n", ylabel);
     size_t idx[MAX_DRAWN];
@@ -104,9 +104,9 @@ static rs_status fig_by_stage(plot_ctx *c, const run_data *d, const char *what, 
       else
         snprintf(title, sizeof title, "stage %zu: %.1f h, %.1f C, %.0f %% RH", i, s.hours[i],
                  s.temp[i], s.hum[i]);
-      st = plot_curve(c, d->r_mm, y, s.cols, style, title, NULL);
+      st = rsi_plot_curve(c, d->r_mm, y, s.cols, style, title, NULL);
     }
-    if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no layers wound");
+    if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no layers wound");
     rs_gp_plot_end(&c->gp);
   }
   free(y);
@@ -119,7 +119,7 @@ static rs_status fig_core(plot_ctx *c, const run_data *d)
   storage s;
   rs_status st = storage_read(c, d, NULL, &s);
   if (st != RS_OK || s.S == 0) return st;
-  char *out = plot_path(c, "storage-core");
+  char *out = rsi_plot_path(c, "storage-core");
   if (!out) {
     storage_free(&s);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory");
@@ -136,7 +136,7 @@ static rs_status fig_core(plot_ctx *c, const run_data *d)
     }
     const double f = top >= 1000.0 ? 1e-6 : 1e-3;
     for (size_t i = 0; i < s.S; ++i) s.core[i] *= f;
-    plot_title(c, d->title, "core pressure after each stage's change, held to its end (steps)");
+    rsi_plot_title(c, d->title, "core pressure after each stage's change, held to its end (steps)");
     rs_gp_printf(&c->gp, "set xlabel 'storage time (h)'\nset grid\nset key below left Left reverse\n"
                          "set ylabel 'core pressure (%s)'\nset ytics nomirror\nset y2tics\n"
                          "set y2label 'temperature (C)'\n", f < 1e-3 ? "MPa" : "kPa");
@@ -145,14 +145,14 @@ static rs_status fig_core(plot_ctx *c, const run_data *d)
     if (isfinite(tlo)) rs_gp_printf(&c->gp, "set y2range [%.10g:%.10g]\n", tlo - pad, thi + pad);
     /* a stage changes temperature and humidity at its start (the elastic response) and
      * holds them to its end: the value at the end of stage s is drawn from its start */
-    st = plot_curve(c, s.hours, s.core, s.S,
+    st = rsi_plot_curve(c, s.hours, s.core, s.S,
                     "with fsteps linewidth 2.5 linecolor rgb '#1f77b4'",
                     "core pressure (each stage's end value from its start)", NULL);
     if (st == RS_OK)
-      st = plot_curve(c, s.hours, s.core, s.S, "with points pointtype 7 linecolor rgb '#1f77b4'",
+      st = rsi_plot_curve(c, s.hours, s.core, s.S, "with points pointtype 7 linecolor rgb '#1f77b4'",
                       "", NULL);
     if (st == RS_OK)
-      st = plot_curve(c, s.hours, s.temp, s.S,
+      st = rsi_plot_curve(c, s.hours, s.temp, s.S,
                       "axes x1y2 with fsteps dashtype 2 linewidth 1.5 linecolor rgb '#d62728'",
                       "temperature (right axis)", NULL);
     rs_gp_plot_end(&c->gp);
@@ -161,7 +161,7 @@ static rs_status fig_core(plot_ctx *c, const run_data *d)
   return st;
 }
 
-rs_status plot_storage_figures(plot_ctx *c, const run_data *d)
+rs_status rsi_plot_storage_figures(plot_ctx *c, const run_data *d)
 {
   rs_status st = fig_by_stage(c, d, "sigma_r", -1e-3, "storage-pressure",
                               "interlayer pressure at the end of each storage stage",

@@ -106,7 +106,7 @@ static int by_x(const void *a, const void *b)
 
 static rs_status one_figure(plot_ctx *c, const sweep_data *s, int f, const double *fig)
 {
-  char *out = plot_path(c, sweep_figs[f].name), head[512];
+  char *out = rsi_plot_path(c, sweep_figs[f].name), head[512];
   if (!out) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   rs_status st = rs_gp_figure(&c->gp, out);
   free(out);
@@ -117,7 +117,7 @@ static rs_status one_figure(plot_ctx *c, const sweep_data *s, int f, const doubl
   if (!x) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   double *y = x + n, *z = x + 2 * n;
   snprintf(head, sizeof head, "sweep of %zu run%s (%s)", n, n == 1 ? "" : "s", c->stem);
-  plot_title(c, head, sweep_figs[f].label);
+  rsi_plot_title(c, head, sweep_figs[f].label);
   rs_gp_printf(&c->gp, "set grid\nset xlabel ");
   rs_gp_string(&c->gp, s->keys[kx]);
   rs_gp_printf(&c->gp, "\n");
@@ -145,8 +145,8 @@ static rs_status one_figure(plot_ctx *c, const sweep_data *s, int f, const doubl
     char style[128];
     snprintf(style, sizeof style,
              "with linespoints linewidth 2 pointtype 7 pointsize 1.2 linecolor rgb '%s'",
-             plot_color(0));
-    st = plot_curve(c, x, y, n, style, "", NULL);
+             rsi_plot_color(0));
+    st = rsi_plot_curve(c, x, y, n, style, "", NULL);
   } else {
     for (size_t i = 0; i < n; ++i) {
       x[i] = s->values[i * s->k + (size_t)kx];
@@ -171,7 +171,7 @@ static rs_status one_figure(plot_ctx *c, const sweep_data *s, int f, const doubl
     }
     free(name);
   }
-  if (st == RS_OK && c->gp.n_terms == 0) plot_empty(c, "no run succeeded");
+  if (st == RS_OK && c->gp.n_terms == 0) rsi_plot_empty(c, "no run succeeded");
   rs_gp_plot_end(&c->gp);
   free(x);
   return st;
@@ -201,15 +201,15 @@ static rs_status sweep_figures(plot_ctx *c)
   return st;
 }
 
-int plot_is_search_file(const plot_ctx *c)
+int rsi_plot_is_search_file(const plot_ctx *c)
 {
   return rs_reader_exists(c->rd, "/sweep") || rs_reader_exists(c->rd, "/optimize");
 }
 
-rs_status plot_search_figures(plot_ctx *c)
+rs_status rsi_plot_search_figures(plot_ctx *c)
 {
   rs_status st = RS_OK;
   if (rs_reader_exists(c->rd, "/sweep")) st = sweep_figures(c);
-  if (st == RS_OK && rs_reader_exists(c->rd, "/optimize")) st = plot_optimize_history(c);
+  if (st == RS_OK && rs_reader_exists(c->rd, "/optimize")) st = rsi_plot_optimize_history(c);
   return st;
 }

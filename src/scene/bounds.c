@@ -33,7 +33,7 @@ static void slip_hint(const ys_range *r, const char *path, const char *unit, dou
     snprintf(alt, sizeof alt, "%.*s", (int)len, p);
     p += len;
     while (*p == ' ') ++p;
-    if (ys_unit_convert(v, alt, unit, &si) && within(si, lo, hi)) {
+    if (rsi_ys_unit_convert(v, alt, unit, &si) && within(si, lo, hi)) {
       snprintf(out, size, "did you mean %s %s?", num, alt);
       return;
     }
@@ -43,29 +43,29 @@ static void slip_hint(const ys_range *r, const char *path, const char *unit, dou
 static rs_status check_node(yn *node, const char *path, int column, void *ctx)
 {
   rs_scene *scene = ctx;
-  const ys_range *r = ys_range_of(path);
+  const ys_range *r = rsi_ys_range_of(path);
   double v;
   /* a pair's first column is the radius the recipe or law is tabulated at: checked by its law */
-  if (!r || column == 0 || !ys_parse_double(node->text, &v)) return RS_OK;
+  if (!r || column == 0 || !rsi_ys_parse_double(node->text, &v)) return RS_OK;
   char unit[32], hint[160], num[64], lo[64], hi[64], where[512];
-  ys_column_unit(r->unit, column, unit, sizeof unit);
+  rsi_ys_column_unit(r->unit, column, unit, sizeof unit);
   const char *sp = unit[0] ? " " : "";
   /* the number as written (a value given with a unit is shown in the key's unit) */
   snprintf(num, sizeof num, "%s", node->text);
   if (!within(v, r->lo, r->hi)) {
     slip_hint(r, path, unit, v, num, hint, sizeof hint);
-    ys_fmt(lo, sizeof lo, r->lo);
-    ys_fmt(hi, sizeof hi, r->hi);
-    return ys_note(yn_error(node, "%s%s%s is %s the plausible bound %s%s%s (%s to %s%s%s): %s", num, sp,
+    rsi_ys_fmt(lo, sizeof lo, r->lo);
+    rsi_ys_fmt(hi, sizeof hi, r->hi);
+    return rsi_ys_note(rsi_yn_error(node, "%s%s%s is %s the plausible bound %s%s%s (%s to %s%s%s): %s", num, sp,
                     unit, v < r->lo ? "below" : "above", v < r->lo ? lo : hi, sp, unit, lo, hi,
                     sp, unit, hint));
   }
   /* zero is never a slip of units */
   if (v == 0.0 || isnan(r->plo) || within(v, r->plo, r->phi)) return RS_OK;
   slip_hint(r, path, unit, v, num, hint, sizeof hint);
-  ys_fmt(lo, sizeof lo, r->plo);
-  ys_fmt(hi, sizeof hi, r->phi);
-  yn_where(node, where, sizeof where);
+  rsi_ys_fmt(lo, sizeof lo, r->plo);
+  rsi_ys_fmt(hi, sizeof hi, r->phi);
+  rsi_yn_where(node, where, sizeof where);
   /* the path as written ("storage[1].hours"), unless the value came from a model file,
    * whose paths are its own ("caliper") */
   const char *shown = path;
@@ -83,8 +83,8 @@ static rs_status check_node(yn *node, const char *path, int column, void *ctx)
   return RS_OK;
 }
 
-rs_status ys_check_ranges(const yn *root, rs_scene *scene)
+rs_status rsi_ys_check_ranges(const yn *root, rs_scene *scene)
 {
   /* the walk takes a mutable tree for the unit conversion; this check changes nothing */
-  return ys_each_number((yn *)root, check_node, scene);
+  return rsi_ys_each_number((yn *)root, check_node, scene);
 }

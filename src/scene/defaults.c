@@ -16,19 +16,19 @@ typedef struct stems {
 
 static rs_status put(yn *map, const char *key, yn *node)
 {
-  rs_status st = yn_set_origin(node, "default");
+  rs_status st = rsi_yn_set_origin(node, "default");
   if (st != RS_OK) {
-    yn_free(node);
+    rsi_yn_free(node);
     return st;
   }
-  return yn_map_put(map, key, node);
+  return rsi_yn_map_put(map, key, node);
 }
 
 /* `when` holds for this mapping: the sibling key has (or, "!x", has not) the text */
 static int applies(const yn *map, const ys_field *f)
 {
   if (!f->when) return 1;
-  const yn *sib = yn_map_get(map, f->when);
+  const yn *sib = rsi_yn_map_get(map, f->when);
   if (!sib || sib->kind != YN_SCALAR) return 0;
   if (f->when_is[0] == '!') return strcmp(sib->text, f->when_is + 1) != 0;
   return strcmp(sib->text, f->when_is) == 0;
@@ -38,7 +38,7 @@ static rs_status fill(yn *map, const ys_value *schema, const stems *st)
 {
   char path[600];
   for (const ys_field *f = schema->fields; f->key; ++f) {
-    yn *kid = yn_map_get(map, f->key);
+    yn *kid = rsi_yn_map_get(map, f->key);
     if (!kid && (f->def || f->derived != YS_PLAIN) && applies(map, f)) {
       const char *text = f->def;
       if (f->derived == YS_FROM_STEM) text = st->title;
@@ -50,7 +50,7 @@ static rs_status fill(yn *map, const ys_value *schema, const stems *st)
       }
       snprintf(path, sizeof path, "%s%s%s", map->path, map->path[0] ? "." : "", f->key);
       int is_map = f->value->type == YS_MAP;
-      kid = is_map ? yn_new_map(map->file, 0, path) : yn_new_scalar(text, map->file, 0, path);
+      kid = is_map ? rsi_yn_new_map(map->file, 0, path) : rsi_yn_new_scalar(text, map->file, 0, path);
       if (!kid) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
       rs_status s = put(map, f->key, kid);
       if (s != RS_OK) return s;
@@ -63,7 +63,7 @@ static rs_status fill(yn *map, const ys_value *schema, const stems *st)
   return RS_OK;
 }
 
-rs_status ys_fill_defaults(yn *root, const char *scene_path)
+rs_status rsi_ys_fill_defaults(yn *root, const char *scene_path)
 {
   stems st = {.scene_path = scene_path};
   char name[RS_PATH_MAX];
@@ -80,5 +80,5 @@ rs_status ys_fill_defaults(yn *root, const char *scene_path)
   }
   memcpy(st.title, name, cut);
   st.title[cut] = '\0';
-  return fill(root, &ys_scene_schema, &st);
+  return fill(root, &rsi_ys_scene_schema, &st);
 }

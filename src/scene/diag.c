@@ -7,9 +7,9 @@
 #include "scene/scene_internal.h"
 #include "util/error.h"
 
-int ys_has(const yn *root, const char *path) { return yn_get(root, path) != NULL; }
+int rsi_ys_has(const yn *root, const char *path) { return rsi_yn_get(root, path) != NULL; }
 
-rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
+rs_status rsi_ys_fail(const yn *root, const char *path, const char *fmt, ...)
 {
   char msg[1536], trimmed[1024];
   va_list ap;
@@ -17,8 +17,8 @@ rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
 
-  const yn *node = yn_get(root, path);
-  if (node) return yn_error(node, "%s", msg);
+  const yn *node = rsi_yn_get(root, path);
+  if (node) return rsi_yn_error(node, "%s", msg);
   /* absent key: report at the nearest parent that is there, under the full key name */
   snprintf(trimmed, sizeof trimmed, "%s", path);
   for (;;) {
@@ -30,16 +30,16 @@ rs_status ys_fail(const yn *root, const char *path, const char *fmt, ...)
       break;
     }
     *cut = '\0';
-    node = yn_get(root, trimmed);
+    node = rsi_yn_get(root, trimmed);
     if (node) break;
   }
   const char *rest = path + strlen(trimmed);
   if (*rest == '.') ++rest;
-  return yn_error_key(node, rest, "%s", msg);
+  return rsi_yn_error_key(node, rest, "%s", msg);
 }
 
 /* %g without the exponent's plus sign and leading zeros: 1e9, 7e-5, 0.19. */
-void ys_fmt(char *buf, size_t size, double v)
+void rsi_ys_fmt(char *buf, size_t size, double v)
 {
   char tmp[64];
   snprintf(tmp, sizeof tmp, "%g", v);
@@ -65,14 +65,14 @@ static _Thread_local struct {
   char text[YS_ERRORS_TEXT];  /* the first YS_MAX_ERRORS, one a line */
 } errs;
 
-void ys_errors_begin(void)
+void rsi_ys_errors_begin(void)
 {
   errs.n = 0;
   errs.len = 0;
   errs.text[0] = '\0';
 }
 
-rs_status ys_note(rs_status st)
+rs_status rsi_ys_note(rs_status st)
 {
   if (st != RS_ERR_INPUT) return st;
   if (errs.n++ < YS_MAX_ERRORS) {
@@ -84,9 +84,9 @@ rs_status ys_note(rs_status st)
   return st;
 }
 
-int ys_errors(void) { return errs.n; }
+int rsi_ys_errors(void) { return errs.n; }
 
-rs_status ys_errors_end(void)
+rs_status rsi_ys_errors_end(void)
 {
   if (errs.n == 0) return RS_OK;
   if (errs.n == 1) return RS_ERROR(RS_ERR_INPUT, "%s", errs.text);

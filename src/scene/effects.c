@@ -15,7 +15,7 @@ static void print_air(FILE *out, const rs_scene *s);
 
 static const char *f(num_t buf, double v)
 {
-  ys_fmt(buf, sizeof(num_t), v);
+  rsi_ys_fmt(buf, sizeof(num_t), v);
   return buf;
 }
 

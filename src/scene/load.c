@@ -38,17 +38,17 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
   ADD("# scene: %s\n# material: %s\n", one_line(s->path, safe[0], sizeof safe[0]),
       one_line(s->material_source, safe[1], sizeof safe[1]));
   for (int i = 0; i < n_sets; ++i) ADD("# --set %s\n", one_line(sets[i], safe[0], sizeof safe[0]));
-  ys_fmt(num[0], sizeof num[0], s->problem.final_radius);
-  ys_fmt(num[1], sizeof num[1], s->problem.material.caliper);
+  rsi_ys_fmt(num[0], sizeof num[0], s->problem.final_radius);
+  rsi_ys_fmt(num[1], sizeof num[1], s->problem.material.caliper);
   ADD("# derived: final radius %s m, %d layers of caliper %s m", num[0], s->problem.n_layers, num[1]);
   if (s->web_length > 0.0) {
-    ys_fmt(num[2], sizeof num[2], s->web_length);
+    rsi_ys_fmt(num[2], sizeof num[2], s->web_length);
     ADD(" (from web length %s m)", num[2]);
   }
   ADD("\n%s", s->units_text);
   if (s->problem.tension.law == RS_RECIPE_HYPERBOLIC) {
-    ys_fmt(num[0], sizeof num[0], s->problem.tension.k);
-    ys_fmt(num[1], sizeof num[1], s->problem.tension.end);
+    rsi_ys_fmt(num[0], sizeof num[0], s->problem.tension.k);
+    rsi_ys_fmt(num[1], sizeof num[1], s->problem.tension.end);
     ADD("# derived: tension taper k = %s, end = %s N/m\n", num[0], num[1]);
   }
 #undef ADD
@@ -60,7 +60,7 @@ static rs_status build_resolved(rs_scene *s, int n_sets, const char *const *sets
   return RS_OK;
 }
 
-/* Bad input is noted and reported with the rest (ys_errors_end); any other failure stops. */
+/* Bad input is noted and reported with the rest (rsi_ys_errors_end); any other failure stops. */
 static rs_status input_ok(rs_status st) { return st == RS_ERR_INPUT ? RS_OK : st; }
 
 /* text == NULL: read the file `path`; otherwise parse text[0..len) and use `path` only as
@@ -82,33 +82,33 @@ static rs_status scene_load(const char *path, const char *text, size_t len, int 
 
   yn *root = NULL;
   char *body = NULL;
-  /* Every error is reported together (ys_note): every bad --set and every unknown key or
+  /* Every error is reported together (rsi_ys_note): every bad --set and every unknown key or
    * value of the wrong type; when there are none, every value out of range (the range
    * checks need a tree of the right types). A syntax error or a missing model stops at once. */
-  ys_errors_begin();
-  rs_status st = text ? yn_parse_text(text, len, s->path, &root) : yn_parse_file(s->path, &root);
-  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = ys_apply_set(root, sets[i], 0);
-  if (st == RS_OK) st = ys_inline_material(root, s);
-  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = input_ok(ys_note(ys_apply_set(root, sets[i], 1)));
+  rsi_ys_errors_begin();
+  rs_status st = text ? rsi_yn_parse_text(text, len, s->path, &root) : rsi_yn_parse_file(s->path, &root);
+  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = rsi_ys_apply_set(root, sets[i], 0);
+  if (st == RS_OK) st = rsi_ys_inline_material(root, s);
+  for (int i = 0; st == RS_OK && i < n_sets; ++i) st = input_ok(rsi_ys_note(rsi_ys_apply_set(root, sets[i], 1)));
   if (st == RS_OK) {
     /* a bad --set leaves the tree as it was: the file's own errors are still looked for */
-    rs_status norm = ys_normalize(root);
+    rs_status norm = rsi_ys_normalize(root);
     /* numbers with units -> the keys' SI numbers (units.c), then the schema's checks */
-    if (norm == RS_OK) st = input_ok(ys_convert_units(root, s));
-    if (norm == RS_OK && st == RS_OK) st = input_ok(ys_typecheck(root, &ys_scene_schema));
-    if (norm != RS_OK) st = input_ok(ys_note(norm));
-    ys_units_note_errors();
+    if (norm == RS_OK) st = input_ok(rsi_ys_convert_units(root, s));
+    if (norm == RS_OK && st == RS_OK) st = input_ok(rsi_ys_typecheck(root, &rsi_ys_scene_schema));
+    if (norm != RS_OK) st = input_ok(rsi_ys_note(norm));
+    rsi_ys_units_note_errors();
   }
-  if (st == RS_OK) st = ys_errors_end();
-  if (st == RS_OK) st = ys_fill_defaults(root, s->path);
-  if (st == RS_OK && (st = input_ok(ys_resolve(root, s))) == RS_OK) st = ys_errors_end();
+  if (st == RS_OK) st = rsi_ys_errors_end();
+  if (st == RS_OK) st = rsi_ys_fill_defaults(root, s->path);
+  if (st == RS_OK && (st = input_ok(rsi_ys_resolve(root, s))) == RS_OK) st = rsi_ys_errors_end();
   /* plausibility bounds and slip warnings (bounds.c), on values the resolution accepted */
-  if (st == RS_OK && (st = input_ok(ys_check_ranges(root, s))) == RS_OK) st = ys_errors_end();
-  if (st == RS_OK) st = yn_emit(root, &body);
+  if (st == RS_OK && (st = input_ok(rsi_ys_check_ranges(root, s))) == RS_OK) st = rsi_ys_errors_end();
+  if (st == RS_OK) st = rsi_yn_emit(root, &body);
   if (st == RS_OK) st = build_resolved(s, n_sets, sets, body);
 
   free(body);
-  yn_free(root);
+  rsi_yn_free(root);
   if (st != RS_OK) {
     rs_scene_destroy(&s);
     return st;

@@ -58,7 +58,7 @@ static int under(const char *path, const char *dir)
 }
 #endif
 
-int ys_model_dirs(char dirs[][RS_PATH_MAX], int max)
+int rsi_ys_model_dirs(char dirs[][RS_PATH_MAX], int max)
 {
   int n = 0;
   const char *env = getenv("REELSIM_MODELS");

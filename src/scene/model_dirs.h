@@ -13,6 +13,6 @@ enum { YS_MODEL_DIRS_MAX = 4 };
  *   3. otherwise the installed <datadir>/reelsim/models, found relative to the library or
  *      program that holds this code (so a moved install still finds its models), then
  *      at the install prefix it was configured for. */
-int ys_model_dirs(char dirs[][RS_PATH_MAX], int max);
+int rsi_ys_model_dirs(char dirs[][RS_PATH_MAX], int max);
 
 #endif

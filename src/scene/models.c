@@ -75,7 +75,7 @@ static void join(char *out, size_t size, const char *dir, const char *rest)
   clean_path(raw, out, size);
 }
 
-int ys_model_candidates(const char *scene_path, const char *name, char cand[][RS_PATH_MAX],
+int rsi_ys_model_candidates(const char *scene_path, const char *name, char cand[][RS_PATH_MAX],
                         int max)
 {
   char dir[RS_PATH_MAX], file[RS_PATH_MAX];
@@ -93,7 +93,7 @@ int ys_model_candidates(const char *scene_path, const char *name, char cand[][RS
     join(cand[n++], RS_PATH_MAX, dir, rel);
   }
   char lib[YS_MODEL_DIRS_MAX][RS_PATH_MAX];
-  int n_lib = ys_model_dirs(lib, YS_MODEL_DIRS_MAX);
+  int n_lib = rsi_ys_model_dirs(lib, YS_MODEL_DIRS_MAX);
   for (int i = 0; i < n_lib && n < max; ++i) join(cand[n++], RS_PATH_MAX, lib[i], file);
   return n;
 }
@@ -110,35 +110,35 @@ static rs_status override_model(yn *model, yn *given)
 {
   for (int i = 0; i < given->n; ++i) {
     if (strcmp(given->keys[i], "model") == 0) continue;
-    yn *v = yn_copy(given->kids[i]);
+    yn *v = rsi_yn_copy(given->kids[i]);
     if (!v) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-    rs_status st = yn_map_put(model, given->keys[i], v);
+    rs_status st = rsi_yn_map_put(model, given->keys[i], v);
     if (st != RS_OK) return st;
   }
   return RS_OK;
 }
 
-rs_status ys_inline_material(yn *root, rs_scene *scene)
+rs_status rsi_ys_inline_material(yn *root, rs_scene *scene)
 {
-  yn *mat = yn_map_get(root, "material");
-  if (!mat) return yn_error_key(root, "material", "required key is missing");
+  yn *mat = rsi_yn_map_get(root, "material");
+  if (!mat) return rsi_yn_error_key(root, "material", "required key is missing");
   yn *given = NULL; /* the mapping holding `model`, whose other keys override the model's */
   if (mat->kind == YN_MAP) {
-    yn *name = yn_map_get(mat, "model");
+    yn *name = rsi_yn_map_get(mat, "model");
     if (!name) {
       snprintf(scene->material_source, sizeof scene->material_source, "inline");
       return RS_OK;
     }
-    if (name->kind != YN_SCALAR || yn_is_empty(name))
-      return yn_error(name, "expected a model name (e.g. pet-film)");
+    if (name->kind != YN_SCALAR || rsi_yn_is_empty(name))
+      return rsi_yn_error(name, "expected a model name (e.g. pet-film)");
     given = mat;
     mat = name;
   }
-  if (mat->kind != YN_SCALAR || yn_is_empty(mat))
-    return yn_error(mat, "expected a model name (e.g. newsprint) or a mapping of material keys");
+  if (mat->kind != YN_SCALAR || rsi_yn_is_empty(mat))
+    return rsi_yn_error(mat, "expected a model name (e.g. newsprint) or a mapping of material keys");
 
   char cand[3 + YS_MODEL_DIRS_MAX][RS_PATH_MAX];
-  int n = ys_model_candidates(scene->path, mat->text, cand, 3 + YS_MODEL_DIRS_MAX);
+  int n = rsi_ys_model_candidates(scene->path, mat->text, cand, 3 + YS_MODEL_DIRS_MAX);
   struct stat self, st;
   int have_self = stat(scene->path, &self) == 0;
   const char *found = NULL;
@@ -153,41 +153,41 @@ rs_status ys_inline_material(yn *root, rs_scene *scene)
       int w = snprintf(tried + len, sizeof tried - len, "%s%s", i ? ", " : "", cand[i]);
       if (w > 0 && (size_t)w < sizeof tried - len) len += (size_t)w;
     }
-    return yn_error(mat, "no material model '%s' (looked for: %s)", mat->text, tried);
+    return rsi_yn_error(mat, "no material model '%s' (looked for: %s)", mat->text, tried);
   }
   memcpy(scene->material_source, found, strlen(found) + 1); /* both RS_PATH_MAX */
 
   yn *model;
-  rs_status s = yn_parse_file(scene->material_source, &model);
+  rs_status s = rsi_yn_parse_file(scene->material_source, &model);
   if (s != RS_OK) return s;
-  yn *nested = yn_map_get(model, "model");
+  yn *nested = rsi_yn_map_get(model, "model");
   if (nested) {
-    s = yn_error(nested, "a model file cannot name another model");
-    yn_free(model);
+    s = rsi_yn_error(nested, "a model file cannot name another model");
+    rsi_yn_free(model);
     return s;
   }
   /* the model's values keep their own file and lines; a --set on the name stays visible */
-  if (!yn_map_get(model, "name")) {
-    yn *name = yn_new_scalar(mat->text, mat->file, mat->line, "material");
+  if (!rsi_yn_map_get(model, "name")) {
+    yn *name = rsi_yn_new_scalar(mat->text, mat->file, mat->line, "material");
     if (!name) {
-      yn_free(model);
+      rsi_yn_free(model);
       return RS_ERROR(RS_ERR_MEMORY, "out of memory");
     }
-    if (mat->origin) yn_set_origin(name, mat->origin);
-    if ((s = yn_map_put(model, "name", name)) != RS_OK) {
-      yn_free(model);
+    if (mat->origin) rsi_yn_set_origin(name, mat->origin);
+    if ((s = rsi_yn_map_put(model, "name", name)) != RS_OK) {
+      rsi_yn_free(model);
       return s;
     }
   }
-  yn *source = yn_new_scalar(scene->material_source, root->file, 0, "material.source");
-  if (!source || yn_set_origin(source, "default") != RS_OK ||
-      (s = yn_map_put(model, "source", source)) != RS_OK) {
-    yn_free(model);
+  yn *source = rsi_yn_new_scalar(scene->material_source, root->file, 0, "material.source");
+  if (!source || rsi_yn_set_origin(source, "default") != RS_OK ||
+      (s = rsi_yn_map_put(model, "source", source)) != RS_OK) {
+    rsi_yn_free(model);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   }
   if (given && (s = override_model(model, given)) != RS_OK) {
-    yn_free(model);
+    rsi_yn_free(model);
     return s;
   }
-  return yn_map_put(root, "material", model);
+  return rsi_yn_map_put(root, "material", model);
 }

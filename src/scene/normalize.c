@@ -11,9 +11,9 @@
 
 static yn *scalar_like(const yn *like, const char *text, const char *path)
 {
-  yn *n = yn_new_scalar(text, like->file, like->line, path);
-  if (n && like->origin && yn_set_origin(n, like->origin) != RS_OK) {
-    yn_free(n);
+  yn *n = rsi_yn_new_scalar(text, like->file, like->line, path);
+  if (n && like->origin && rsi_yn_set_origin(n, like->origin) != RS_OK) {
+    rsi_yn_free(n);
     return NULL;
   }
   return n;
@@ -22,42 +22,42 @@ static yn *scalar_like(const yn *like, const char *text, const char *path)
 static rs_status normalize_recipe(yn *root, const char *parent_path, const char *key)
 {
   char path[256];
-  yn *parent = yn_get(root, parent_path);
-  int i = yn_map_index(parent, key);
+  yn *parent = rsi_yn_get(root, parent_path);
+  int i = rsi_yn_map_index(parent, key);
   if (i < 0) return RS_OK;
   yn *node = parent->kids[i];
   snprintf(path, sizeof path, "%s.%s.law", parent_path, key);
-  if (yn_is_empty(node))
-    return yn_error(node, "missing value (a number in N/m, or a recipe such as "
+  if (rsi_yn_is_empty(node))
+    return rsi_yn_error(node, "missing value (a number in N/m, or a recipe such as "
                           "{law: linear, start: 350, end: 280})");
   if (node->kind == YN_SCALAR) {
-    yn *map = yn_new_map(node->file, node->line, node->path);
+    yn *map = rsi_yn_new_map(node->file, node->line, node->path);
     yn *law = scalar_like(node, "constant", path);
     if (!map || !law) {
-      yn_free(map);
-      yn_free(law);
+      rsi_yn_free(map);
+      rsi_yn_free(law);
       return RS_ERROR(RS_ERR_MEMORY, "out of memory");
     }
-    if (node->origin && yn_set_origin(map, node->origin) != RS_OK) {
-      yn_free(map);
-      yn_free(law);
+    if (node->origin && rsi_yn_set_origin(map, node->origin) != RS_OK) {
+      rsi_yn_free(map);
+      rsi_yn_free(law);
       return RS_ERROR(RS_ERR_MEMORY, "out of memory");
     }
-    rs_status st = yn_map_put(map, "law", law);
+    rs_status st = rsi_yn_map_put(map, "law", law);
     if (st != RS_OK) {
-      yn_free(map);
+      rsi_yn_free(map);
       return st;
     }
     /* move the scalar itself under `value`: it keeps its path, line and origin */
     parent->kids[i] = map;
-    st = yn_map_put(map, "value", node);
+    st = rsi_yn_map_put(map, "value", node);
     return st;
   }
-  if (node->kind == YN_MAP && !yn_map_get(node, "law") &&
-      (yn_map_get(node, "table") || yn_map_get(node, "points"))) {
+  if (node->kind == YN_MAP && !rsi_yn_map_get(node, "law") &&
+      (rsi_yn_map_get(node, "table") || rsi_yn_map_get(node, "points"))) {
     yn *law = scalar_like(node, "table", path);
     if (!law) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-    rs_status st = yn_map_put(node, "law", law);
+    rs_status st = rsi_yn_map_put(node, "law", law);
     if (st != RS_OK) return st;
     /* law first, as people write it */
     for (int j = node->n - 1; j > 0; --j) {
@@ -76,33 +76,33 @@ static rs_status normalize_recipe(yn *root, const char *parent_path, const char 
 /* centrifugal: true -> centrifugal: {}; centrifugal: false -> no key (off) */
 static rs_status normalize_switch(yn *root, const char *key)
 {
-  int i = yn_map_index(root, key);
+  int i = rsi_yn_map_index(root, key);
   if (i < 0 || root->kids[i]->kind != YN_SCALAR) return RS_OK;
   yn *node = root->kids[i];
   if (strcmp(node->text, "false") == 0) {
-    yn_map_remove(root, key);
+    rsi_yn_map_remove(root, key);
     return RS_OK;
   }
   if (strcmp(node->text, "true") != 0)
-    return yn_error(node, "must be {} or true (on) or false (off) (got '%s')", node->text);
-  yn *map = yn_new_map(node->file, node->line, node->path);
-  if (!map || (node->origin && yn_set_origin(map, node->origin) != RS_OK)) {
-    yn_free(map);
+    return rsi_yn_error(node, "must be {} or true (on) or false (off) (got '%s')", node->text);
+  yn *map = rsi_yn_new_map(node->file, node->line, node->path);
+  if (!map || (node->origin && rsi_yn_set_origin(map, node->origin) != RS_OK)) {
+    rsi_yn_free(map);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   }
   root->kids[i] = map;
-  yn_free(node);
+  rsi_yn_free(node);
   return RS_OK;
 }
 
-rs_status ys_normalize(yn *root)
+rs_status rsi_ys_normalize(yn *root)
 {
   rs_status st = RS_OK;
-  if (yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
+  if (rsi_yn_get(root, "winding") && rsi_yn_get(root, "winding")->kind == YN_MAP)
     st = normalize_recipe(root, "winding", "tension");
-  if (st == RS_OK && yn_get(root, "winding") && yn_get(root, "winding")->kind == YN_MAP)
+  if (st == RS_OK && rsi_yn_get(root, "winding") && rsi_yn_get(root, "winding")->kind == YN_MAP)
     st = normalize_recipe(root, "winding", "speed");
-  if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
+  if (st == RS_OK && rsi_yn_get(root, "nip") && rsi_yn_get(root, "nip")->kind == YN_MAP)
     st = normalize_recipe(root, "nip", "load");
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "centrifugal");
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "air");

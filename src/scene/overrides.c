@@ -36,7 +36,7 @@ static rs_status set_scalar(yn *node, const char *value, const char *origin)
   free(node->text);
   node->text = text;
   node->quoted = 0;
-  return yn_set_origin(node, origin);
+  return rsi_yn_set_origin(node, origin);
 }
 
 /* --set KEY=null: the key goes, as if the file had never had it (its default, if any,
@@ -45,13 +45,13 @@ static rs_status set_scalar(yn *node, const char *value, const char *origin)
 static rs_status remove_key(yn *root, const char *origin, const char *path,
                             char seg[][YN_SEG_MAX], int n)
 {
-  if (!ys_schema_at(path)) {
+  if (!rsi_ys_schema_at(path)) {
     char keys[512], parent[1024];
     snprintf(parent, sizeof parent, "%s", path);
     char *dot = strrchr(parent, '.');
     if (dot) *dot = '\0';
-    const ys_value *ps = dot ? ys_schema_at(parent) : &ys_scene_schema;
-    ys_schema_keys(ps ? ps : &ys_scene_schema, keys, sizeof keys);
+    const ys_value *ps = dot ? rsi_ys_schema_at(parent) : &rsi_ys_scene_schema;
+    rsi_ys_schema_keys(ps ? ps : &rsi_ys_scene_schema, keys, sizeof keys);
     return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
                     seg[n - 1], dot ? " in " : "", dot ? parent : "", keys);
   }
@@ -59,14 +59,14 @@ static rs_status remove_key(yn *root, const char *origin, const char *path,
   for (int i = 0; i < n - 1 && cur; ++i) {
     long idx;
     if (cur->kind == YN_SEQ)
-      cur = yn_seg_index(seg[i], &idx) && idx < cur->n ? cur->kids[idx] : NULL;
+      cur = rsi_yn_seg_index(seg[i], &idx) && idx < cur->n ? cur->kids[idx] : NULL;
     else
-      cur = yn_map_get(cur, seg[i]);
+      cur = rsi_yn_map_get(cur, seg[i]);
   }
   if (!cur) return RS_OK;
   if (cur->kind != YN_MAP)
     return RS_ERROR(RS_ERR_INPUT, "%s: only a key of a mapping can be removed", origin);
-  yn_map_remove(cur, seg[n - 1]);
+  rsi_yn_map_remove(cur, seg[n - 1]);
   return RS_OK;
 }
 
@@ -78,20 +78,20 @@ static int is_switch(const char *path) { return strcmp(path, "centrifugal") == 0
 static rs_status set_switch(yn *root, const char *key, const char *value, const char *origin)
 {
   if (strcmp(value, "false") == 0) {
-    yn_map_remove(root, key);
+    rsi_yn_map_remove(root, key);
     return RS_OK;
   }
-  yn *have = yn_map_get(root, key);
+  yn *have = rsi_yn_map_get(root, key);
   if (have && have->kind == YN_MAP) return RS_OK;
-  yn *map = yn_new_map(root->file, 0, key);
+  yn *map = rsi_yn_new_map(root->file, 0, key);
   if (!map) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-  rs_status st = yn_set_origin(map, origin);
-  if (st == RS_OK) st = yn_map_put(root, key, map);
-  else yn_free(map);
+  rs_status st = rsi_yn_set_origin(map, origin);
+  if (st == RS_OK) st = rsi_yn_map_put(root, key, map);
+  else rsi_yn_free(map);
   return st;
 }
 
-rs_status ys_apply_set(yn *root, const char *set, int pass)
+rs_status rsi_ys_apply_set(yn *root, const char *set, int pass)
 {
   char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
   snprintf(origin, sizeof origin, "--set %s", set);
@@ -108,7 +108,7 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
   int names_model = strcmp(path, "material") == 0 || strcmp(path, "material.model") == 0;
   if ((pass == 0) != names_model) return RS_OK;
   if (strcmp(path, "material.model") == 0 && !is_null(value)) {
-    yn *mat = yn_map_get(root, "material");
+    yn *mat = rsi_yn_map_get(root, "material");
     if (mat && mat->kind == YN_SCALAR) return set_scalar(mat, value, origin); /* material: NAME */
   }
 
@@ -116,7 +116,7 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
       root->kind == YN_MAP)
     return set_switch(root, path, value, origin);
 
-  int n = yn_path_split(path, seg, 16);
+  int n = rsi_yn_path_split(path, seg, 16);
   if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);
   if (is_null(value)) return remove_key(root, origin, path, seg, n);
 
@@ -125,7 +125,7 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
     char next[sizeof walked], num[32];
     long idx;
     if (cur->kind == YN_SEQ) {
-      if (!yn_seg_index(seg[i], &idx))
+      if (!rsi_yn_seg_index(seg[i], &idx))
         return RS_ERROR(RS_ERR_INPUT, "%s: %s is a list: expected an entry number, got '%s'",
                         origin, walked, seg[i]);
       if (idx >= cur->n)
@@ -141,28 +141,28 @@ rs_status ys_apply_set(yn *root, const char *set, int pass)
       return RS_ERROR(RS_ERR_INPUT, "%s: %s is a single value, not a mapping with key '%s'",
                       origin, walked, seg[i]);
     join3(next, sizeof next, walked, walked[0] ? "." : "", seg[i]);
-    yn *kid = yn_map_get(cur, seg[i]);
+    yn *kid = rsi_yn_map_get(cur, seg[i]);
     if (!kid) {
       /* absent: create it when the schema knows the key */
-      const ys_value *s = ys_schema_at(next);
+      const ys_value *s = rsi_ys_schema_at(next);
       if (!s) {
-        const ys_value *ps = walked[0] ? ys_schema_at(walked) : &ys_scene_schema;
-        ys_schema_keys(ps ? ps : &ys_scene_schema, keys, sizeof keys);
+        const ys_value *ps = walked[0] ? rsi_ys_schema_at(walked) : &rsi_ys_scene_schema;
+        rsi_ys_schema_keys(ps ? ps : &rsi_ys_scene_schema, keys, sizeof keys);
         return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
                         seg[i], walked[0] ? " in " : "", walked, keys);
       }
       int last = i == n - 1;
-      if (last && !is_scalar_schema(s) && !ys_is_shorthand(next))
+      if (last && !is_scalar_schema(s) && !rsi_ys_is_shorthand(next))
         return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, next,
                         s->type == YS_MAP ? "mapping" : "list");
       if (!last && s->type != YS_MAP)
         return RS_ERROR(RS_ERR_INPUT, "%s: cannot create entries of the list %s with --set",
                         origin, next);
-      kid = last ? yn_new_scalar(value, root->file, 0, next) : yn_new_map(root->file, 0, next);
+      kid = last ? rsi_yn_new_scalar(value, root->file, 0, next) : rsi_yn_new_map(root->file, 0, next);
       if (!kid) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-      rs_status st = yn_set_origin(kid, origin);
-      if (st == RS_OK) st = yn_map_put(cur, seg[i], kid);
-      else yn_free(kid);
+      rs_status st = rsi_yn_set_origin(kid, origin);
+      if (st == RS_OK) st = rsi_yn_map_put(cur, seg[i], kid);
+      else rsi_yn_free(kid);
       if (st != RS_OK) return st;
     }
     memcpy(walked, next, sizeof walked);

@@ -104,13 +104,13 @@ static const ys_range table[] = {
     {"air.nip_radius", "m", 1e-3, 10, 0.01, 1.5, "mm in"},
 };
 
-const ys_range *ys_ranges(int *n)
+const ys_range *rsi_ys_ranges(int *n)
 {
   *n = (int)(sizeof table / sizeof table[0]);
   return table;
 }
 
-const ys_range *ys_range_of(const char *path)
+const ys_range *rsi_ys_range_of(const char *path)
 {
   char key[256];
   size_t len = 0;
@@ -175,12 +175,12 @@ static rs_status walk(yn *node, const ys_value *s, const char *path, ys_number_f
   return bad;
 }
 
-rs_status ys_each_number(yn *root, ys_number_fn fn, void *ctx)
+rs_status rsi_ys_each_number(yn *root, ys_number_fn fn, void *ctx)
 {
-  return root ? walk(root, &ys_scene_schema, "", fn, ctx) : RS_OK;
+  return root ? walk(root, &rsi_ys_scene_schema, "", fn, ctx) : RS_OK;
 }
 
-void ys_column_unit(const char *unit, int column, char *out, size_t size)
+void rsi_ys_column_unit(const char *unit, int column, char *out, size_t size)
 {
   const char *bar = strchr(unit, '|');
   if (!bar || column < 0) snprintf(out, size, "%s", unit);

@@ -24,34 +24,34 @@ typedef struct ys_range {
 } ys_range;
 
 /* The entry of a key path (indices dropped); NULL when the key has none. */
-const ys_range *ys_range_of(const char *path);
+const ys_range *rsi_ys_range_of(const char *path);
 /* The unit of a key (column < 0) or of one column of its pairs ("m|N/m", column 0 or 1). */
-void ys_column_unit(const char *unit, int column, char *out, size_t size);
+void rsi_ys_column_unit(const char *unit, int column, char *out, size_t size);
 /* The table, for the test that every numeric key of the schema has an entry. */
-const ys_range *ys_ranges(int *n);
+const ys_range *rsi_ys_ranges(int *n);
 
 /* units.c: converts every number written with a unit into the key's scene unit, in place
  * (the text becomes the SI number, %.15g; scene->units_text lists each conversion). Errors
  * (unknown unit, wrong dimension, a unit on a plain-number key), located at the value, are
- * held back (RS_ERR_INPUT if any) and noted (ys_note) by ys_units_note_errors() after the
+ * held back (RS_ERR_INPUT if any) and noted (rsi_ys_note) by rsi_ys_units_note_errors() after the
  * schema checks, so that the load's errors stay in the order of the file's keys as before. */
-rs_status ys_convert_units(yn *root, rs_scene *scene);
-void ys_units_note_errors(void);
+rs_status rsi_ys_convert_units(yn *root, rs_scene *scene);
+void rsi_ys_units_note_errors(void);
 /* v (in unit `from`) in unit `to`; 0 when either is unknown or they do not convert. */
-int ys_unit_convert(double v, const char *from, const char *to, double *out);
+int rsi_ys_unit_convert(double v, const char *from, const char *to, double *out);
 /* A value text "NUMBER UNIT": the number and the unit part (trimmed) in unit[]; 0 when the
  * text does not start with a number or has no unit. */
-int ys_split_quantity(const char *text, double *v, char *unit, size_t size);
+int rsi_ys_split_quantity(const char *text, double *v, char *unit, size_t size);
 
 /* bounds.c: the hard bounds (errors noted) and slip warnings (kept in the scene) over the
  * resolved tree. */
-rs_status ys_check_ranges(const yn *root, rs_scene *scene);
+rs_status rsi_ys_check_ranges(const yn *root, rs_scene *scene);
 
 /* Calls fn on every number of the tree the schema calls a number (lists of numbers and the
  * columns of tables of pairs included), with its key path without indices and, for a
  * column of a pair, the column (0, 1; -1 otherwise). Stops at the first status not RS_OK
  * other than RS_ERR_INPUT (which fn notes itself, if it wants) and goes on after that. */
 typedef rs_status (*ys_number_fn)(yn *node, const char *path, int column, void *ctx);
-rs_status ys_each_number(yn *root, ys_number_fn fn, void *ctx);
+rs_status rsi_ys_each_number(yn *root, ys_number_fn fn, void *ctx);
 
 #endif

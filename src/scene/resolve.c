@@ -17,32 +17,32 @@ static const double pi = 3.14159265358979323846;
 
 static rs_status resolve_core(const yn *root, rs_core *c)
 {
-  const double rating = ys_num(root, "core.rating"),
-               stiffness = ys_num(root, "core.stiffness"),
-               modulus = ys_num(root, "core.modulus"), poisson = ys_num(root, "core.poisson");
-  int elastic = ys_has(root, "core.stiffness");
-  int tube = ys_has(root, "core.bore") || ys_has(root, "core.modulus") ||
-             ys_has(root, "core.poisson");
+  const double rating = rsi_ys_num(root, "core.rating"),
+               stiffness = rsi_ys_num(root, "core.stiffness"),
+               modulus = rsi_ys_num(root, "core.modulus"), poisson = rsi_ys_num(root, "core.poisson");
+  int elastic = rsi_ys_has(root, "core.stiffness");
+  int tube = rsi_ys_has(root, "core.bore") || rsi_ys_has(root, "core.modulus") ||
+             rsi_ys_has(root, "core.poisson");
   double radius = 0.0, bore_given = 0.0;
   const char *size_key = NULL, *bore_key = NULL; /* which keys gave the outside and inside */
   int has_bore = 0;
   memset(c, 0, sizeof *c);
-  rs_status st = ys_core_geometry(root, &radius, &size_key, &bore_given, &has_bore, &bore_key);
+  rs_status st = rsi_ys_core_geometry(root, &radius, &size_key, &bore_given, &has_bore, &bore_key);
   if (st != RS_OK) return st;
   c->radius = radius;
-  if (ys_has(root, "core.rating")) {
+  if (rsi_ys_has(root, "core.rating")) {
     if (!(rating > 0.0))
-      return ys_fail(root, "core.rating", "must be > 0 Pa (got %g; omit the key to skip the check)",
+      return rsi_ys_fail(root, "core.rating", "must be > 0 Pa (got %g; omit the key to skip the check)",
                      rating);
     c->rating = rating;
   }
   if (elastic && tube)
-    return ys_fail(root, "core.stiffness",
+    return rsi_ys_fail(root, "core.stiffness",
                    "give either stiffness (an elastic core) or bore, modulus and poisson "
                    "(a tube), not both");
   if (elastic) {
     if (!(stiffness > 0.0))
-      return ys_fail(root, "core.stiffness", "must be > 0 Pa (got %g)", stiffness);
+      return rsi_ys_fail(root, "core.stiffness", "must be > 0 Pa (got %g)", stiffness);
     c->kind = RS_CORE_ELASTIC;
     c->stiffness = stiffness;
     return RS_OK;
@@ -53,16 +53,16 @@ static rs_status resolve_core(const yn *root, rs_core *c)
   }
   static const char *const tube_keys[] = {"core.bore", "core.modulus", "core.poisson"};
   for (int i = 0; i < 3; ++i)
-    if (i == 0 ? !has_bore : !ys_has(root, tube_keys[i]))
-      return ys_fail(root, tube_keys[i], "a tube core needs bore (or inner_diameter or wall), "
+    if (i == 0 ? !has_bore : !rsi_ys_has(root, tube_keys[i]))
+      return rsi_ys_fail(root, tube_keys[i], "a tube core needs bore (or inner_diameter or wall), "
                                          "modulus and poisson");
   if (!(bore_given >= 0.0 && bore_given < radius))
-    return ys_fail(root, bore_key, "must be >= 0 and < core.radius = %g m (got %g)", radius,
+    return rsi_ys_fail(root, bore_key, "must be >= 0 and < core.radius = %g m (got %g)", radius,
                    bore_given);
   if (!(modulus > 0.0))
-    return ys_fail(root, "core.modulus", "must be > 0 Pa (got %g)", modulus);
+    return rsi_ys_fail(root, "core.modulus", "must be > 0 Pa (got %g)", modulus);
   if (!(poisson > -1.0 && poisson < 0.5))
-    return ys_fail(root, "core.poisson", "must lie in (-1, 0.5) (got %g)", poisson);
+    return rsi_ys_fail(root, "core.poisson", "must lie in (-1, 0.5) (got %g)", poisson);
   c->kind = RS_CORE_TUBE;
   c->bore = bore_given;
   c->modulus = modulus;
@@ -78,23 +78,23 @@ static rs_status resolve_acceleration(const yn *root, rs_scene *s)
   const char *key = "winding.acceleration";
   s->problem.acceleration = 0.0;
   s->problem.core_friction = 0.0;
-  if (ys_has(root, "core.friction")) {
-    const double mu = ys_num(root, "core.friction");
+  if (rsi_ys_has(root, "core.friction")) {
+    const double mu = rsi_ys_num(root, "core.friction");
     if (!(mu > 0.0))
-      return ys_fail(root, "core.friction", "must be > 0 (got %g; omit the key to skip the check)",
+      return rsi_ys_fail(root, "core.friction", "must be > 0 (got %g; omit the key to skip the check)",
                      mu);
     s->problem.core_friction = mu;
   }
-  if (!ys_has(root, key)) return RS_OK;
-  const double a = ys_num(root, key);
+  if (!rsi_ys_has(root, key)) return RS_OK;
+  const double a = rsi_ys_num(root, key);
   if (!(a > 0.0))
-    return ys_fail(root, key, "must be > 0 m/s^2 (got %g; omit the key to skip the check)", a);
-  if (ys_has(root, "winding.accel_torque"))
-    return ys_fail(root, key, "give either winding.acceleration or winding.accel_torque, not both");
+    return rsi_ys_fail(root, key, "must be > 0 m/s^2 (got %g; omit the key to skip the check)", a);
+  if (rsi_ys_has(root, "winding.accel_torque"))
+    return rsi_ys_fail(root, key, "give either winding.acceleration or winding.accel_torque, not both");
   if (!(s->problem.material.density > 0.0))
-    return ys_fail(root, key, "the roll's inertia needs material.density (kg/m^3)");
+    return rsi_ys_fail(root, key, "the roll's inertia needs material.density (kg/m^3)");
   if (!(s->problem.material.friction_layer > 0.0))
-    return ys_fail(root, key,
+    return rsi_ys_fail(root, key,
                    "the interlayer slip check needs material.friction_layer (the web-on-web "
                    "friction coefficient)");
   s->problem.acceleration = a;
@@ -106,39 +106,39 @@ static rs_status resolve_acceleration(const yn *root, rs_scene *s)
  * The size is one of final_radius, final_diameter (d = 2 r) and web_length. */
 static rs_status resolve_winding(const yn *root, rs_scene *s)
 {
-  const double web_length = ys_num(root, "winding.web_length"),
-               accel_torque = ys_num(root, "winding.accel_torque");
-  int has_r = ys_has(root, "winding.final_radius"), has_L = ys_has(root, "winding.web_length"),
-      has_d = ys_has(root, "winding.final_diameter");
+  const double web_length = rsi_ys_num(root, "winding.web_length"),
+               accel_torque = rsi_ys_num(root, "winding.accel_torque");
+  int has_r = rsi_ys_has(root, "winding.final_radius"), has_L = rsi_ys_has(root, "winding.web_length"),
+      has_d = rsi_ys_has(root, "winding.final_diameter");
   double rc = s->problem.core.radius, t = s->problem.material.caliper;
   if (has_r && has_d)
-    return ys_fail(root, "winding.final_diameter",
+    return rsi_ys_fail(root, "winding.final_diameter",
                    "give either winding.final_radius or winding.final_diameter, not both");
   if (has_r && has_L)
-    return ys_fail(root, "winding.web_length",
+    return rsi_ys_fail(root, "winding.web_length",
                    "give either final_radius or web_length, not both");
   if (has_d && has_L)
-    return ys_fail(root, "winding.web_length",
+    return rsi_ys_fail(root, "winding.web_length",
                    "give either final_diameter or web_length, not both");
   if (!has_r && !has_L && !has_d)
-    return ys_fail(root, "winding.final_radius",
+    return rsi_ys_fail(root, "winding.final_radius",
                    "required: the roll size as final_radius (m), final_diameter (m) or "
                    "web_length (m)");
   const char *key = has_r ? "winding.final_radius"
                           : has_d ? "winding.final_diameter" : "winding.web_length";
-  const double final_radius = has_d ? 0.5 * ys_num(root, key) : ys_num(root, "winding.final_radius");
+  const double final_radius = has_d ? 0.5 * rsi_ys_num(root, key) : rsi_ys_num(root, "winding.final_radius");
   if (has_L) {
     if (!(web_length > 0.0))
-      return ys_fail(root, key, "must be > 0 m (got %g)", web_length);
+      return rsi_ys_fail(root, key, "must be > 0 m (got %g)", web_length);
     s->web_length = web_length;
     s->problem.web_length = web_length;
     s->problem.final_radius = sqrt(rc * rc + web_length * t / pi);
   } else {
     if (!(final_radius > rc)) {
       if (has_d)
-        return ys_fail(root, key, "must be > the core diameter %g m (got %g)", 2.0 * rc,
+        return rsi_ys_fail(root, key, "must be > the core diameter %g m (got %g)", 2.0 * rc,
                        2.0 * final_radius);
-      return ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, final_radius);
+      return rsi_ys_fail(root, key, "must be > the core radius %g m (got %g)", rc, final_radius);
     }
     s->web_length = 0.0;
     s->problem.web_length = 0.0;
@@ -146,21 +146,21 @@ static rs_status resolve_winding(const yn *root, rs_scene *s)
   }
   double layers = round((s->problem.final_radius - rc) / t);
   if (layers < 1.0)
-    return ys_fail(root, key,
+    return rsi_ys_fail(root, key,
                    "the roll would have no layers: %g m of build-up is less than half a "
                    "caliper (%g m)",
                    s->problem.final_radius - rc, t);
   if (layers > RS_MAX_LAYERS)
-    return ys_fail(root, key, "the roll would have %.0f layers (at most %d)", layers,
+    return rsi_ys_fail(root, key, "the roll would have %.0f layers (at most %d)", layers,
                    RS_MAX_LAYERS);
   s->problem.n_layers = (int)layers;
   s->problem.accel_torque = 0.0;
-  if (ys_has(root, "winding.accel_torque")) {
+  if (rsi_ys_has(root, "winding.accel_torque")) {
     if (!(accel_torque > 0.0))
-      return ys_fail(root, "winding.accel_torque",
+      return rsi_ys_fail(root, "winding.accel_torque",
                      "must be > 0 N m/m (got %g; omit the key to skip the check)", accel_torque);
     if (!(s->problem.material.friction_layer > 0.0))
-      return ys_fail(root, "winding.accel_torque",
+      return rsi_ys_fail(root, "winding.accel_torque",
                      "the interlayer slip check needs material.friction_layer (the web-on-web "
                      "friction coefficient)");
     s->problem.accel_torque = accel_torque;
@@ -170,39 +170,39 @@ static rs_status resolve_winding(const yn *root, rs_scene *s)
 
 static rs_status resolve_drum(const yn *root, rs_drum *d)
 {
-  const double radius = ys_num(root, "nip.drum.radius"),
-               core_radius = ys_num(root, "nip.drum.core_radius"), E = ys_num(root, "nip.drum.E"),
-               nu = ys_num(root, "nip.drum.nu"), E_r = ys_num(root, "nip.drum.E_r"),
-               E_theta = ys_num(root, "nip.drum.E_theta"),
-               nu_rtheta = ys_num(root, "nip.drum.nu_rtheta"),
-               G_rtheta = ys_num(root, "nip.drum.G_rtheta");
+  const double radius = rsi_ys_num(root, "nip.drum.radius"),
+               core_radius = rsi_ys_num(root, "nip.drum.core_radius"), E = rsi_ys_num(root, "nip.drum.E"),
+               nu = rsi_ys_num(root, "nip.drum.nu"), E_r = rsi_ys_num(root, "nip.drum.E_r"),
+               E_theta = rsi_ys_num(root, "nip.drum.E_theta"),
+               nu_rtheta = rsi_ys_num(root, "nip.drum.nu_rtheta"),
+               G_rtheta = rsi_ys_num(root, "nip.drum.G_rtheta");
   static const char *const ortho[] = {"nip.drum.E_r", "nip.drum.E_theta", "nip.drum.nu_rtheta",
                                       "nip.drum.G_rtheta"};
   memset(d, 0, sizeof *d);
   if (!(core_radius >= 0.0))
-    return ys_fail(root, "nip.drum.core_radius", "must be >= 0 m (got %g)", core_radius);
+    return rsi_ys_fail(root, "nip.drum.core_radius", "must be >= 0 m (got %g)", core_radius);
   if (!(radius > core_radius))
-    return ys_fail(root, "nip.drum.radius", "must be > nip.drum.core_radius = %g m (got %g)",
+    return rsi_ys_fail(root, "nip.drum.radius", "must be > nip.drum.core_radius = %g m (got %g)",
                    core_radius, radius);
   d->radius = radius;
   d->core_radius = core_radius;
   int any_ortho = 0;
-  for (int i = 0; i < 4; ++i) any_ortho |= ys_has(root, ortho[i]);
+  for (int i = 0; i < 4; ++i) any_ortho |= rsi_ys_has(root, ortho[i]);
   if (any_ortho) {
-    if (ys_has(root, "nip.drum.E") || ys_has(root, "nip.drum.nu"))
-      return ys_fail(root, ys_has(root, "nip.drum.E") ? "nip.drum.E" : "nip.drum.nu",
+    if (rsi_ys_has(root, "nip.drum.E") || rsi_ys_has(root, "nip.drum.nu"))
+      return rsi_ys_fail(root, rsi_ys_has(root, "nip.drum.E") ? "nip.drum.E" : "nip.drum.nu",
                      "give either E, nu (isotropic) or E_r, E_theta, nu_rtheta, G_rtheta "
                      "(orthotropic), not both");
     for (int i = 0; i < 4; ++i)
-      if (!ys_has(root, ortho[i]))
-        return ys_fail(root, ortho[i],
+      if (!rsi_ys_has(root, ortho[i]))
+        return rsi_ys_fail(root, ortho[i],
                        "an orthotropic drum needs E_r, E_theta, nu_rtheta and G_rtheta");
-    if (!(E_r > 0.0)) return ys_fail(root, ortho[0], "must be > 0 Pa (got %g)", E_r);
-    if (!(E_theta > 0.0)) return ys_fail(root, ortho[1], "must be > 0 Pa (got %g)", E_theta);
+    if (!(E_r > 0.0)) return rsi_ys_fail(root, ortho[0], "must be > 0 Pa (got %g)", E_r);
+    if (!(E_theta > 0.0)) return rsi_ys_fail(root, ortho[1], "must be > 0 Pa (got %g)", E_theta);
     if (!(nu_rtheta > -1.0 && nu_rtheta < 1.0))
-      return ys_fail(root, ortho[2], "must lie in (-1, 1) (got %g)", nu_rtheta);
+      return rsi_ys_fail(root, ortho[2], "must lie in (-1, 1) (got %g)", nu_rtheta);
     if (!(G_rtheta > 0.0))
-      return ys_fail(root, ortho[3], "must be > 0 Pa (got %g)", G_rtheta);
+      return rsi_ys_fail(root, ortho[3], "must be > 0 Pa (got %g)", G_rtheta);
     d->orthotropic = 1;
     d->E_r = E_r;
     d->E_theta = E_theta;
@@ -210,13 +210,13 @@ static rs_status resolve_drum(const yn *root, rs_drum *d)
     d->G_rtheta = G_rtheta;
     return RS_OK;
   }
-  if (!ys_has(root, "nip.drum.E") || !ys_has(root, "nip.drum.nu"))
-    return ys_fail(root, ys_has(root, "nip.drum.E") ? "nip.drum.nu" : "nip.drum.E",
+  if (!rsi_ys_has(root, "nip.drum.E") || !rsi_ys_has(root, "nip.drum.nu"))
+    return rsi_ys_fail(root, rsi_ys_has(root, "nip.drum.E") ? "nip.drum.nu" : "nip.drum.E",
                    "the drum needs E and nu (isotropic) or E_r, E_theta, nu_rtheta, G_rtheta "
                    "(orthotropic)");
-  if (!(E > 0.0)) return ys_fail(root, "nip.drum.E", "must be > 0 Pa (got %g)", E);
+  if (!(E > 0.0)) return rsi_ys_fail(root, "nip.drum.E", "must be > 0 Pa (got %g)", E);
   if (!(nu > -1.0 && nu < 0.5))
-    return ys_fail(root, "nip.drum.nu", "must lie in (-1, 0.5) (got %g)", nu);
+    return rsi_ys_fail(root, "nip.drum.nu", "must lie in (-1, 0.5) (got %g)", nu);
   d->E = E;
   d->nu = nu;
   return RS_OK;
@@ -242,17 +242,17 @@ static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
     double carried = (1.0 - share) * Ti;
     if (carried > 0 && n->mu_drum * P <= carried * (1 + 1e-9)) {
       char a[4][32], what[256];
-      ys_fmt(a[0], sizeof a[0], R);
-      ys_fmt(a[1], sizeof a[1], n->mu_drum * P);
-      ys_fmt(a[2], sizeof a[2], carried);
-      ys_fmt(a[3], sizeof a[3], Ti);
+      rsi_ys_fmt(a[0], sizeof a[0], R);
+      rsi_ys_fmt(a[1], sizeof a[1], n->mu_drum * P);
+      rsi_ys_fmt(a[2], sizeof a[2], carried);
+      rsi_ys_fmt(a[3], sizeof a[3], Ti);
       if (n->winder == RS_WINDER_SURFACE)
         snprintf(what, sizeof what, "winding.tension = %s N/m, all of which the drum carries "
                  "on a surface winder", a[3]);
       else
         snprintf(what, sizeof what, "(1 - nip.torque_share) x winding.tension = (1 - %g) x %s "
                  "= %s N/m, what the drum carries on a center-surface winder", share, a[3], a[2]);
-      return ys_fail(root, "nip.friction.drum",
+      return rsi_ys_fail(root, "nip.friction.drum",
                      "the drum cannot carry the web by friction from roll radius r = %s m "
                      "(layer %d of %d) on: nip.friction.drum x nip.load = %g x %g = %s N/m is "
                      "not above %s; raise nip.load or nip.friction.drum, or lower "
@@ -266,78 +266,78 @@ static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
 
 static rs_status resolve_nip(const yn *root, rs_scene *s)
 {
-  const int model_kind = ys_enum(root, "nip.model"), winder = ys_enum(root, "nip.winder"),
-            update = ys_enum(root, "nip.update");
-  const int nodes = (int)ys_int(root, "nip.nodes"), terms = (int)ys_int(root, "nip.terms"),
-            update_every = (int)ys_int(root, "nip.update_every");
-  const double mu_roll = ys_num(root, "nip.friction.roll"),
-               mu_drum = ys_num(root, "nip.friction.drum"),
-               torque_share = ys_num(root, "nip.torque_share"),
-               T0_rtol = ys_num(root, "nip.T0_rtol");
+  const int model_kind = rsi_ys_enum(root, "nip.model"), winder = rsi_ys_enum(root, "nip.winder"),
+            update = rsi_ys_enum(root, "nip.update");
+  const int nodes = (int)rsi_ys_int(root, "nip.nodes"), terms = (int)rsi_ys_int(root, "nip.terms"),
+            update_every = (int)rsi_ys_int(root, "nip.update_every");
+  const double mu_roll = rsi_ys_num(root, "nip.friction.roll"),
+               mu_drum = rsi_ys_num(root, "nip.friction.drum"),
+               torque_share = rsi_ys_num(root, "nip.torque_share"),
+               T0_rtol = rsi_ys_num(root, "nip.T0_rtol");
   rs_nip_spec *n = &s->problem.nip;
   memset(n, 0, sizeof *n);
   n->model = RS_NIP_NONE;
-  if (!ys_has(root, "nip") || model_kind == RS_NIP_NONE) return RS_OK;
+  if (!rsi_ys_has(root, "nip") || model_kind == RS_NIP_NONE) return RS_OK;
   n->model = (rs_nip_model_kind)model_kind;
   const char *model = n->model == RS_NIP_CONTACT ? "contact" : "friction";
 
-  if (!ys_has(root, "nip.load"))
-    return ys_fail(root, "nip.load", "required by nip model %s (N/m, a number or a recipe)", model);
-  rs_status st = ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
+  if (!rsi_ys_has(root, "nip.load"))
+    return rsi_ys_fail(root, "nip.load", "required by nip model %s (N/m, a number or a recipe)", model);
+  rs_status st = rsi_ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
                                    s->problem.final_radius, &n->load);
   if (st != RS_OK) return st;
 
-  if (!ys_has(root, "nip.friction.roll"))
-    return ys_fail(root, "nip.friction.roll",
+  if (!rsi_ys_has(root, "nip.friction.roll"))
+    return rsi_ys_fail(root, "nip.friction.roll",
                    "required by nip model %s (friction coefficient of the sheet on the roll)",
                    model);
   if (!(mu_roll >= 0.0))
-    return ys_fail(root, "nip.friction.roll", "must be >= 0 (got %g)", mu_roll);
+    return rsi_ys_fail(root, "nip.friction.roll", "must be >= 0 (got %g)", mu_roll);
   n->mu_roll = mu_roll;
-  if (ys_has(root, "nip.friction.drum")) {
+  if (rsi_ys_has(root, "nip.friction.drum")) {
     if (!(mu_drum >= 0.0))
-      return ys_fail(root, "nip.friction.drum", "must be >= 0 (got %g)", mu_drum);
+      return rsi_ys_fail(root, "nip.friction.drum", "must be >= 0 (got %g)", mu_drum);
     n->mu_drum = mu_drum;
   } else if (n->model == RS_NIP_CONTACT) {
-    return ys_fail(root, "nip.friction.drum",
+    return rsi_ys_fail(root, "nip.friction.drum",
                    "required by nip model contact (friction coefficient of the sheet on the "
                    "drum)");
   }
 
   n->winder = (rs_winder_kind)winder;
   n->torque_share = n->winder == RS_WINDER_CENTER_SURFACE ? torque_share : 0.0;
-  if (ys_has(root, "nip.torque_share")) {
+  if (rsi_ys_has(root, "nip.torque_share")) {
     if (!(torque_share >= 0.0 && torque_share <= 1.0))
-      return ys_fail(root, "nip.torque_share", "must lie in [0, 1] (got %g)", torque_share);
+      return rsi_ys_fail(root, "nip.torque_share", "must lie in [0, 1] (got %g)", torque_share);
     if (n->winder != RS_WINDER_CENTER_SURFACE)
-      return ys_fail(root, "nip.torque_share", "only used with winder: center-surface");
+      return rsi_ys_fail(root, "nip.torque_share", "only used with winder: center-surface");
   }
-  if (ys_has(root, "nip.drum")) {
+  if (rsi_ys_has(root, "nip.drum")) {
     if ((st = resolve_drum(root, &n->drum)) != RS_OK) return st;
   } else if (n->model == RS_NIP_CONTACT) {
-    return ys_fail(root, "nip.drum",
+    return rsi_ys_fail(root, "nip.drum",
                    "required by nip model contact: {radius, core_radius, E, nu} (or "
                    "E_r, E_theta, nu_rtheta, G_rtheta)");
   }
-  if (!(nodes >= 3)) return ys_fail(root, "nip.nodes", "must be >= 3 (got %d)", nodes);
+  if (!(nodes >= 3)) return rsi_ys_fail(root, "nip.nodes", "must be >= 3 (got %d)", nodes);
   if (nodes > RS_NIP_MAX_NODES)
-    return ys_fail(root, "nip.nodes", "at most %d nodes (got %d; 400 take seconds per solve)",
+    return rsi_ys_fail(root, "nip.nodes", "at most %d nodes (got %d; 400 take seconds per solve)",
                    RS_NIP_MAX_NODES, nodes);
-  if (!(terms >= 0)) return ys_fail(root, "nip.terms", "must be >= 0 (got %d)", terms);
+  if (!(terms >= 0)) return rsi_ys_fail(root, "nip.terms", "must be >= 0 (got %d)", terms);
   if (terms > RS_NIP_MAX_TERMS)
-    return ys_fail(root, "nip.terms",
+    return rsi_ys_fail(root, "nip.terms",
                    "at most %d series terms (got %d; the default 256 is within 1e-6, "
                    "docs/cylinder.md)", RS_NIP_MAX_TERMS, terms);
   n->nodes = nodes;
   n->terms = terms;
-  if (ys_has(root, "nip.update_every") && update != RS_NIP_UPDATE_EVERY)
-    return ys_fail(root, "nip.update_every", "only used with update: every");
-  if (ys_has(root, "nip.T0_rtol") && update != RS_NIP_UPDATE_ADAPTIVE)
-    return ys_fail(root, "nip.T0_rtol", "only used with update: adaptive");
+  if (rsi_ys_has(root, "nip.update_every") && update != RS_NIP_UPDATE_EVERY)
+    return rsi_ys_fail(root, "nip.update_every", "only used with update: every");
+  if (rsi_ys_has(root, "nip.T0_rtol") && update != RS_NIP_UPDATE_ADAPTIVE)
+    return rsi_ys_fail(root, "nip.T0_rtol", "only used with update: adaptive");
   if (update == RS_NIP_UPDATE_EVERY && !(update_every >= 1))
-    return ys_fail(root, "nip.update_every", "must be >= 1 layer (got %d)", update_every);
+    return rsi_ys_fail(root, "nip.update_every", "must be >= 1 layer (got %d)", update_every);
   if (update == RS_NIP_UPDATE_ADAPTIVE && !(T0_rtol > 0.0 && T0_rtol < 0.5))
-    return ys_fail(root, "nip.T0_rtol", "must lie in (0, 0.5) (got %g)", T0_rtol);
+    return rsi_ys_fail(root, "nip.T0_rtol", "must lie in (0, 0.5) (got %g)", T0_rtol);
   n->update = (rs_nip_update_kind)update;
   n->update_every = update_every;
   n->T0_rtol = T0_rtol;
@@ -346,28 +346,28 @@ static rs_status resolve_nip(const yn *root, rs_scene *s)
 
 static rs_status resolve_numerics(const yn *root, rs_numerics *n)
 {
-  const int layers_per_step = (int)ys_int(root, "numerics.layers_per_step");
-  const long max_steps = (long)ys_int(root, "numerics.max_steps");
-  const double rtol = ys_num(root, "numerics.rtol"), atol = ys_num(root, "numerics.atol");
+  const int layers_per_step = (int)rsi_ys_int(root, "numerics.layers_per_step");
+  const long max_steps = (long)rsi_ys_int(root, "numerics.max_steps");
+  const double rtol = rsi_ys_num(root, "numerics.rtol"), atol = rsi_ys_num(root, "numerics.atol");
   if (layers_per_step < 1)
-    return ys_fail(root, "numerics.layers_per_step", "must be >= 1 (got %d)", layers_per_step);
+    return rsi_ys_fail(root, "numerics.layers_per_step", "must be >= 1 (got %d)", layers_per_step);
   if (!(rtol > 0.0 && rtol < 1.0))
-    return ys_fail(root, "numerics.rtol", "must lie in (0, 1) (got %g)", rtol);
+    return rsi_ys_fail(root, "numerics.rtol", "must lie in (0, 1) (got %g)", rtol);
   if (!(atol >= 0.0))
-    return ys_fail(root, "numerics.atol", "must be >= 0 (got %g)", atol);
+    return rsi_ys_fail(root, "numerics.atol", "must be >= 0 (got %g)", atol);
   if (max_steps < 0)
-    return ys_fail(root, "numerics.max_steps", "must be >= 0 (got %ld; 0 = engine default)",
+    return rsi_ys_fail(root, "numerics.max_steps", "must be >= 0 (got %ld; 0 = engine default)",
                    max_steps);
   if (max_steps > RS_MAX_CVODE_STEPS)
-    return ys_fail(root, "numerics.max_steps", "at most %ld steps per increment (got %ld)",
+    return rsi_ys_fail(root, "numerics.max_steps", "at most %ld steps per increment (got %ld)",
                    (long)RS_MAX_CVODE_STEPS, max_steps);
   n->layers_per_step = layers_per_step;
   n->rtol = rtol;
   n->atol = atol;
   n->max_steps = max_steps;
-  n->reuse = (rs_reuse)ys_enum(root, "numerics.reuse");
-  n->load_placement = (rs_load_placement)ys_enum(root, "numerics.load_placement");
-  n->error_correction = (rs_correction)ys_enum(root, "numerics.error_correction");
+  n->reuse = (rs_reuse)rsi_ys_enum(root, "numerics.reuse");
+  n->load_placement = (rs_load_placement)rsi_ys_enum(root, "numerics.load_placement");
+  n->error_correction = (rs_correction)rsi_ys_enum(root, "numerics.error_correction");
   return RS_OK;
 }
 
@@ -386,20 +386,20 @@ static int output_path_contained(const char *p)
 static rs_status resolve_output(const yn *root, rs_scene *s)
 {
   double at[RS_MAX_PROFILES];
-  const int n_at = ys_nums(root, "output.nip_profiles_at", at, RS_MAX_PROFILES);
-  const int history_every = (int)ys_int(root, "output.history_every");
+  const int n_at = rsi_ys_nums(root, "output.nip_profiles_at", at, RS_MAX_PROFILES);
+  const int history_every = (int)rsi_ys_int(root, "output.history_every");
   rs_output_spec *o = &s->output;
   rs_record_spec *rec = &s->problem.record;
-  snprintf(o->file, sizeof o->file, "%s", ys_str(root, "output.file"));
+  snprintf(o->file, sizeof o->file, "%s", rsi_ys_str(root, "output.file"));
   /* A received scene must not write outside the folder it is run in: its own output.file
    * (not -o or --set) is a relative path without a ".." component. */
-  const yn *file = yn_get(root, "output.file");
+  const yn *file = rsi_yn_get(root, "output.file");
   if (file && !file->origin && !output_path_contained(o->file))
-    return ys_fail(root, "output.file",
+    return rsi_ys_fail(root, "output.file",
                    "a scene's own output file must stay in the folder it is run in (a relative "
                    "path without '..'; got '%s'): give -o FILE to write elsewhere", o->file);
   if (history_every < 0)
-    return ys_fail(root, "output.history_every", "must be >= 0 (got %d; 0 = no history)",
+    return rsi_ys_fail(root, "output.history_every", "must be >= 0 (got %d; 0 = no history)",
                    history_every);
   rec->history_every = history_every;
   rec->n_profiles = n_at;
@@ -408,20 +408,20 @@ static rs_status resolve_output(const yn *root, rs_scene *s)
     if (!(r >= s->problem.core.radius && r <= s->problem.final_radius)) {
       char key[64];
       snprintf(key, sizeof key, "output.nip_profiles_at[%d]", i);
-      return ys_fail(root, key, "must lie on the roll, in [%g, %g] m (got %g)", s->problem.core.radius,
+      return rsi_ys_fail(root, key, "must lie on the roll, in [%g, %g] m (got %g)", s->problem.core.radius,
                      s->problem.final_radius, r);
     }
     rec->nip_profiles_at[i] = r;
   }
   if (rec->n_profiles > 0 && s->problem.nip.model == RS_NIP_NONE)
-    return ys_fail(root, "output.nip_profiles_at", "needs a nip (the scene has none)");
+    return rsi_ys_fail(root, "output.nip_profiles_at", "needs a nip (the scene has none)");
   return RS_OK;
 }
 
-/* A part of the scene checked: its input error noted (ys_note) and remembered in *bad. */
+/* A part of the scene checked: its input error noted (rsi_ys_note) and remembered in *bad. */
 static rs_status part(rs_status st, rs_status *bad)
 {
-  ys_note(st);
+  rsi_ys_note(st);
   if (st == RS_ERR_INPUT) *bad = st;
   return st;
 }
@@ -432,26 +432,26 @@ static int fatal(rs_status st) { return st != RS_OK && st != RS_ERR_INPUT; }
  * together; a part that needs another (the roll size needs the core and the caliper, the
  * recipes and the nip the roll size, the nip profiles the nip) is checked only when that
  * one is good. */
-rs_status ys_resolve(const yn *root, rs_scene *s)
+rs_status rsi_ys_resolve(const yn *root, rs_scene *s)
 {
   rs_status bad = RS_OK, st;
-  snprintf(s->title, sizeof s->title, "%s", ys_str(root, "title"));
-  rs_status mat = part(ys_resolve_material(root, &s->problem.material), &bad);
+  snprintf(s->title, sizeof s->title, "%s", rsi_ys_str(root, "title"));
+  rs_status mat = part(rsi_ys_resolve_material(root, &s->problem.material), &bad);
   if (fatal(mat)) return mat;
   rs_status core = part(resolve_core(root, &s->problem.core), &bad);
   if (fatal(core)) return core;
   if (fatal(st = part(resolve_numerics(root, &s->problem.numerics), &bad))) return st;
   if (mat != RS_OK || core != RS_OK) return bad;
   if ((st = part(resolve_winding(root, s), &bad)) != RS_OK) return st;
-  rs_status tension = part(ys_resolve_recipe(root, "winding.tension", "tension",
+  rs_status tension = part(rsi_ys_resolve_recipe(root, "winding.tension", "tension",
                                              s->problem.core.radius, s->problem.final_radius,
                                              &s->problem.tension),
                            &bad);
   if (fatal(tension)) return tension;
   if ((st = part(resolve_nip(root, s), &bad)) != RS_OK) return st;
   if (tension == RS_OK && fatal(st = part(check_drum_capacity(root, s), &bad))) return st;
-  if (tension == RS_OK && fatal(st = part(ys_resolve_speed(root, s), &bad))) return st;
-  if (mat == RS_OK && fatal(st = part(ys_resolve_storage(root, s), &bad))) return st;
+  if (tension == RS_OK && fatal(st = part(rsi_ys_resolve_speed(root, s), &bad))) return st;
+  if (mat == RS_OK && fatal(st = part(rsi_ys_resolve_storage(root, s), &bad))) return st;
   if (fatal(st = part(resolve_output(root, s), &bad))) return st;
   return bad;
 }

@@ -39,16 +39,16 @@ static double num(const yn *root, const char *path, const char *key)
 {
   char full[256];
   snprintf(full, sizeof full, "%s.%s", path, key);
-  return ys_num(root, full);
+  return rsi_ys_num(root, full);
 }
 
-rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
+rs_status rsi_ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
                             double r1, rs_recipe *out)
 {
   char key[256];
-  const yn *node = yn_get(root, path);
+  const yn *node = rsi_yn_get(root, path);
   snprintf(key, sizeof key, "%s.law", path);
-  rs_recipe_kind law = (rs_recipe_kind)ys_enum(root, key);
+  rs_recipe_kind law = (rs_recipe_kind)rsi_ys_enum(root, key);
   const char *law_name = rs_recipe_law_name(law);
 
   for (int i = 0; i < node->n; ++i) {
@@ -56,16 +56,16 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
     if (strcmp(k, "law") == 0 || law_uses(law, k)) continue;
     snprintf(key, sizeof key, "%s.%s", path, k);
     if (law == RS_RECIPE_TORQUE && strcmp(k, "end") == 0)
-      return ys_fail(root, key,
+      return rsi_ys_fail(root, key,
                      "a torque recipe is fixed by its start value (%s = start r0 / r); "
                      "remove 'end', or use law: hyperbolic with end (or k)",
                      what);
-    return ys_fail(root, key, "not used by law %s (it takes: %s)", law_name, law_keys(law));
+    return rsi_ys_fail(root, key, "not used by law %s (it takes: %s)", law_name, law_keys(law));
   }
 #define NEED(k)                                                                              \
   do {                                                                                       \
-    if (!yn_map_get(node, k))                                                                \
-      return ys_fail(root, path, "law %s needs '%s' (it takes: %s)", law_name, k,            \
+    if (!rsi_yn_map_get(node, k))                                                                \
+      return rsi_ys_fail(root, path, "law %s needs '%s' (it takes: %s)", law_name, k,            \
                      law_keys(law));                                                         \
   } while (0)
 
@@ -86,10 +86,10 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
     break;
   case RS_RECIPE_HYPERBOLIC: {
     NEED("start");
-    int has_end = yn_map_get(node, "end") != NULL, has_k = yn_map_get(node, "k") != NULL;
+    int has_end = rsi_yn_map_get(node, "end") != NULL, has_k = rsi_yn_map_get(node, "k") != NULL;
     if (has_end == has_k) {
       snprintf(key, sizeof key, "%s.%s", path, has_k ? "k" : "end");
-      return ys_fail(root, has_k ? key : path,
+      return rsi_ys_fail(root, has_k ? key : path,
                      "law hyperbolic takes either 'end' or 'k', %s",
                      has_k ? "not both" : "and neither is given");
     }
@@ -103,20 +103,20 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
     out->start = num(root, path, "start");
     break;
   case RS_RECIPE_TABLE: {
-    int has_t = yn_map_get(node, "table") != NULL, has_p = yn_map_get(node, "points") != NULL;
+    int has_t = rsi_yn_map_get(node, "table") != NULL, has_p = rsi_yn_map_get(node, "points") != NULL;
     if (has_t && has_p) {
       snprintf(key, sizeof key, "%s.points", path);
-      return ys_fail(root, key, "give the table as 'table' or as 'points', not both");
+      return rsi_ys_fail(root, key, "give the table as 'table' or as 'points', not both");
     }
     NEED(has_p ? "points" : "table");
     snprintf(key, sizeof key, "%s.%s", path, has_p ? "points" : "table");
-    out->n_points = ys_pairs(root, key, out->r, out->value, RS_TABLE_MAX);
+    out->n_points = rsi_ys_pairs(root, key, out->r, out->value, RS_TABLE_MAX);
     break;
   }
   }
 #undef NEED
 
-  const char *tkey = yn_map_get(node, "points") ? "points" : "table";
+  const char *tkey = rsi_yn_map_get(node, "points") ? "points" : "table";
   if (rs_recipe_prepare(out, r0, r1) != RS_OK) {
     char msg[1024];
     int idx;
@@ -126,7 +126,7 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
       snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, idx);
     else
       snprintf(key, sizeof key, "%s", path);
-    return ys_fail(root, key, "%s", msg);
+    return rsi_ys_fail(root, key, "%s", msg);
   }
 
   /* the least value on [r0, r1] and where it is (each law is monotone, a table is
@@ -141,27 +141,27 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
       for (int i = 1; i < out->n_points; ++i)
         if (out->value[i] < out->value[imin]) imin = i;
       snprintf(key, sizeof key, "%s.%s[%d][1]", path, tkey, imin);
-      return ys_fail(root, key, "the %s must not be negative (got %g %s at r = %g m)", what,
+      return rsi_ys_fail(root, key, "the %s must not be negative (got %g %s at r = %g m)", what,
                      out->value[imin], unit, out->r[imin]);
     }
     case RS_RECIPE_CONSTANT:
       snprintf(key, sizeof key, "%s.value", path);
-      return ys_fail(root, key, "the %s must not be negative (got %g %s)", what, v0, unit);
+      return rsi_ys_fail(root, key, "the %s must not be negative (got %g %s)", what, v0, unit);
     default:
       if (!(v0 >= 0.0)) {
         snprintf(key, sizeof key, "%s.start", path);
-        return ys_fail(root, key, "the %s must not be negative (got %g %s at the core, r = %g m)",
+        return rsi_ys_fail(root, key, "the %s must not be negative (got %g %s at the core, r = %g m)",
                        what, v0, unit, r0);
       }
-      snprintf(key, sizeof key, "%s.%s", path, yn_map_get(node, "k") ? "k" : "end");
-      return ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g %s)", what, r1,
+      snprintf(key, sizeof key, "%s.%s", path, rsi_yn_map_get(node, "k") ? "k" : "end");
+      return rsi_ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g %s)", what, r1,
                      v1, unit);
     }
   }
   for (int i = 0; i < out->n_points; ++i)
     if (out->r[i] <= 0.0) {
       snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, i);
-      return ys_fail(root, key, "radius must be > 0 m (got %g)", out->r[i]);
+      return rsi_ys_fail(root, key, "radius must be > 0 m (got %g)", out->r[i]);
     }
   return RS_OK;
 }

@@ -215,24 +215,24 @@ static const ys_field scene_fields[] = {
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
     END};
-const ys_value ys_scene_schema = MAP(scene_fields);
+const ys_value rsi_ys_scene_schema = MAP(scene_fields);
 
-int ys_is_shorthand(const char *p)
+int rsi_ys_is_shorthand(const char *p)
 {
   return strcmp(p, "material") == 0 || strcmp(p, "winding.tension") == 0 ||
          strcmp(p, "winding.speed") == 0 ||
          strcmp(p, "nip.load") == 0;
 }
 
-const ys_value *ys_schema_at(const char *path)
+const ys_value *rsi_ys_schema_at(const char *path)
 {
   char seg[32][YN_SEG_MAX];
-  int n = yn_path_split(path, seg, 32);
-  const ys_value *s = n < 0 ? NULL : &ys_scene_schema;
+  int n = rsi_yn_path_split(path, seg, 32);
+  const ys_value *s = n < 0 ? NULL : &rsi_ys_scene_schema;
   for (int i = 0; s && i < n; ++i) {
     if (s->type == YS_LIST) {
       long k;
-      s = yn_seg_index(seg[i], &k) ? s->entry : NULL;
+      s = rsi_yn_seg_index(seg[i], &k) ? s->entry : NULL;
       continue;
     }
     if (s->type != YS_MAP) return NULL;
@@ -243,7 +243,7 @@ const ys_value *ys_schema_at(const char *path)
   return s;
 }
 
-void ys_schema_keys(const ys_value *mapping, char *buf, size_t size)
+void rsi_ys_schema_keys(const ys_value *mapping, char *buf, size_t size)
 {
   size_t len = 0;
   buf[0] = '\0';

@@ -53,17 +53,17 @@ struct ys_field {
 };
 
 /* The top-level mapping of a scene file. */
-extern const ys_value ys_scene_schema;
+extern const ys_value rsi_ys_scene_schema;
 
 /* Keys whose value may also be written as a plain number (a constant recipe) or a name
  * (a model file): the loader rewrites them into mappings before the checks apply. */
-int ys_is_shorthand(const char *scene_path);
+int rsi_ys_is_shorthand(const char *scene_path);
 
 /* The schema of the value at a dotted path from the top level ("nip.load.table[2]");
  * NULL if the schema has no such key. */
-const ys_value *ys_schema_at(const char *scene_path);
+const ys_value *rsi_ys_schema_at(const char *scene_path);
 
 /* The keys of a mapping, ", "-separated, for messages. */
-void ys_schema_keys(const ys_value *mapping, char *buf, size_t size);
+void rsi_ys_schema_keys(const ys_value *mapping, char *buf, size_t size);
 
 #endif

@@ -22,7 +22,7 @@ static const char *kind_name(const yn *node)
   return "a single value";
 }
 
-int ys_parse_double(const char *text, double *out)
+int rsi_ys_parse_double(const char *text, double *out)
 {
   char *end;
   if (!text[0]) return 0;
@@ -36,25 +36,25 @@ int ys_parse_double(const char *text, double *out)
 static rs_status check_float(const yn *node)
 {
   double v;
-  if (yn_is_empty(node)) return yn_error(node, "missing value (expected a number)");
-  if (node->quoted) return yn_error(node, "expected a number, got the string \"%s\"", node->text);
-  if (!ys_parse_double(node->text, &v)) return yn_error(node, "not a number (got '%s')", node->text);
-  if (!isfinite(v)) return yn_error(node, "must be a finite number (got '%s')", node->text);
+  if (rsi_yn_is_empty(node)) return rsi_yn_error(node, "missing value (expected a number)");
+  if (node->quoted) return rsi_yn_error(node, "expected a number, got the string \"%s\"", node->text);
+  if (!rsi_ys_parse_double(node->text, &v)) return rsi_yn_error(node, "not a number (got '%s')", node->text);
+  if (!isfinite(v)) return rsi_yn_error(node, "must be a finite number (got '%s')", node->text);
   return RS_OK;
 }
 
 static rs_status check_int(const yn *node, int is_long)
 {
   char *end;
-  if (yn_is_empty(node)) return yn_error(node, "missing value (expected a whole number)");
+  if (rsi_yn_is_empty(node)) return rsi_yn_error(node, "missing value (expected a whole number)");
   if (node->quoted)
-    return yn_error(node, "expected a whole number, got the string \"%s\"", node->text);
+    return rsi_yn_error(node, "expected a whole number, got the string \"%s\"", node->text);
   errno = 0;
   long long v = strtoll(node->text, &end, 10);
-  if (*end || end == node->text) return yn_error(node, "not a whole number (got '%s')", node->text);
+  if (*end || end == node->text) return rsi_yn_error(node, "not a whole number (got '%s')", node->text);
   long long lo = is_long ? LLONG_MIN : INT_MIN, hi = is_long ? LLONG_MAX : INT_MAX;
   if (errno == ERANGE || v < lo || v > hi)
-    return yn_error(node, "number out of range (got '%s')", node->text);
+    return rsi_yn_error(node, "number out of range (got '%s')", node->text);
   return RS_OK;
 }
 
@@ -68,8 +68,8 @@ static rs_status check_enum(const yn *node, const ys_value *s)
     int n = snprintf(list + len, sizeof list - len, "%s%s", e != s->names ? ", " : "", e->name);
     if (n > 0 && (size_t)n < sizeof list - len) len += (size_t)n;
   }
-  if (yn_is_empty(node)) return yn_error(node, "missing value (one of: %s)", list);
-  return yn_error(node, "unknown value '%s' (expected one of: %s)", node->text, list);
+  if (rsi_yn_is_empty(node)) return rsi_yn_error(node, "missing value (one of: %s)", list);
+  return rsi_yn_error(node, "unknown value '%s' (expected one of: %s)", node->text, list);
 }
 
 /* 1 when s is well-formed UTF-8 (no overlong forms, surrogates or code points beyond
@@ -100,24 +100,24 @@ static int is_utf8(const unsigned char *s)
 static rs_status check_value(const yn *node, const ys_value *s);
 
 /* Mappings and lists go on after a bad entry, so that one load reports every error
- * (ys_note); each error is noted where it is found. */
+ * (rsi_ys_note); each error is noted where it is found. */
 static rs_status check_mapping(const yn *node, const ys_value *s)
 {
   char keys[512];
   rs_status bad = RS_OK;
   if (node->kind != YN_MAP) {
-    if (yn_is_empty(node))
-      return ys_note(yn_error(node, "missing value (expected a mapping of keys)"));
+    if (rsi_yn_is_empty(node))
+      return rsi_ys_note(rsi_yn_error(node, "missing value (expected a mapping of keys)"));
     if (node->kind == YN_SCALAR)
-      return ys_note(yn_error(node, "expected a mapping of keys, got '%s'", node->text));
-    return ys_note(yn_error(node, "expected a mapping of keys, got %s", kind_name(node)));
+      return rsi_ys_note(rsi_yn_error(node, "expected a mapping of keys, got '%s'", node->text));
+    return rsi_ys_note(rsi_yn_error(node, "expected a mapping of keys, got %s", kind_name(node)));
   }
   for (int i = 0; i < node->n; ++i) {
     const ys_field *f = s->fields;
     while (f->key && strcmp(f->key, node->keys[i]) != 0) ++f;
     if (!f->key) {
-      ys_schema_keys(s, keys, sizeof keys);
-      bad = ys_note(yn_error(node->kids[i], "unknown key '%s' (expected one of: %s)",
+      rsi_ys_schema_keys(s, keys, sizeof keys);
+      bad = rsi_ys_note(rsi_yn_error(node->kids[i], "unknown key '%s' (expected one of: %s)",
                              node->keys[i], keys));
       continue;
     }
@@ -126,26 +126,26 @@ static rs_status check_mapping(const yn *node, const ys_value *s)
     if (st != RS_OK) bad = st;
   }
   for (const ys_field *f = s->fields; f->key; ++f)
-    if (f->required && yn_map_index(node, f->key) < 0)
-      bad = ys_note(yn_error_key(node, f->key, "required key is missing"));
+    if (f->required && rsi_yn_map_index(node, f->key) < 0)
+      bad = rsi_ys_note(rsi_yn_error_key(node, f->key, "required key is missing"));
   return bad;
 }
 
 static rs_status check_sequence(const yn *node, const ys_value *s)
 {
   if (node->kind != YN_SEQ) {
-    if (yn_is_empty(node)) return ys_note(yn_error(node, "missing value (expected a list)"));
+    if (rsi_yn_is_empty(node)) return rsi_ys_note(rsi_yn_error(node, "missing value (expected a list)"));
     if (node->kind == YN_SCALAR)
-      return ys_note(yn_error(node, "expected a list, got '%s'", node->text));
-    return ys_note(yn_error(node, "expected a list, got %s", kind_name(node)));
+      return rsi_ys_note(rsi_yn_error(node, "expected a list, got '%s'", node->text));
+    return rsi_ys_note(rsi_yn_error(node, "expected a list, got %s", kind_name(node)));
   }
   unsigned n = (unsigned)node->n;
   if (s->exact && n != s->min)
-    return ys_note(yn_error(node, "must have exactly %u values (got %u)", s->min, n));
+    return rsi_ys_note(rsi_yn_error(node, "must have exactly %u values (got %u)", s->min, n));
   if (n < s->min)
-    return ys_note(yn_error(node, "needs at least %u entr%s (got %u)", s->min,
+    return rsi_ys_note(rsi_yn_error(node, "needs at least %u entr%s (got %u)", s->min,
                             s->min == 1 ? "y" : "ies", n));
-  if (n > s->max) return ys_note(yn_error(node, "takes at most %u entries (got %u)", s->max, n));
+  if (n > s->max) return rsi_ys_note(rsi_yn_error(node, "takes at most %u entries (got %u)", s->max, n));
   rs_status bad = RS_OK;
   for (int i = 0; i < node->n; ++i) {
     rs_status st = check_value(node->kids[i], s->entry);
@@ -161,13 +161,13 @@ static rs_status check_value(const yn *node, const ys_value *s)
 {
   if (s->type == YS_MAP) return check_mapping(node, s);
   if (s->type == YS_LIST) return check_sequence(node, s);
-  return ys_note(check_scalar(node, s));
+  return rsi_ys_note(check_scalar(node, s));
 }
 
 static rs_status check_scalar(const yn *node, const ys_value *s)
 {
   if (node->kind != YN_SCALAR)
-    return yn_error(node, "expected a single value, got %s", kind_name(node));
+    return rsi_yn_error(node, "expected a single value, got %s", kind_name(node));
   switch (s->type) {
   case YS_FLOAT: return check_float(node);
   case YS_INT: return check_int(node, 0);
@@ -175,10 +175,10 @@ static rs_status check_scalar(const yn *node, const ys_value *s)
   case YS_ENUM: return check_enum(node, s);
   case YS_STRING: {
     size_t len = strlen(node->text);
-    if (node->text[0] == '\0' && s->min > 0) return yn_error(node, "must not be empty");
-    if (yn_is_empty(node) && s->min > 0) return yn_error(node, "missing value");
-    if (len > s->max) return yn_error(node, "too long (at most %u characters)", s->max);
-    if (!is_utf8((const unsigned char *)node->text)) return yn_error(node, "not UTF-8 text");
+    if (node->text[0] == '\0' && s->min > 0) return rsi_yn_error(node, "must not be empty");
+    if (rsi_yn_is_empty(node) && s->min > 0) return rsi_yn_error(node, "missing value");
+    if (len > s->max) return rsi_yn_error(node, "too long (at most %u characters)", s->max);
+    if (!is_utf8((const unsigned char *)node->text)) return rsi_yn_error(node, "not UTF-8 text");
     return RS_OK;
   }
   case YS_MAP:
@@ -187,7 +187,7 @@ static rs_status check_scalar(const yn *node, const ys_value *s)
   return RS_ERROR(RS_ERR_INTERNAL, "schema type %d not handled by the scene checks", (int)s->type);
 }
 
-rs_status ys_typecheck(const yn *node, const ys_value *schema)
+rs_status rsi_ys_typecheck(const yn *node, const ys_value *schema)
 {
   return check_value(node, schema);
 }

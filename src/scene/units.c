@@ -97,12 +97,12 @@ static int convert(double v, const char *from, const char *to, double *out)
   return r;
 }
 
-int ys_unit_convert(double v, const char *from, const char *to, double *out)
+int rsi_ys_unit_convert(double v, const char *from, const char *to, double *out)
 {
   return convert(v, from, to, out) == 1;
 }
 
-int ys_split_quantity(const char *text, double *v, char *unit, size_t size)
+int rsi_ys_split_quantity(const char *text, double *v, char *unit, size_t size)
 {
   char *end;
   double x = strtod(text, &end);
@@ -143,7 +143,7 @@ static void describe(const char *unit, const char **what, const char **examples)
   *examples = unit;
 }
 
-/* the errors of the load in progress on this thread, held until ys_units_note_errors */
+/* the errors of the load in progress on this thread, held until rsi_ys_units_note_errors */
 static _Thread_local struct {
   int n;
   char text[YS_MAX_ERRORS][640];
@@ -156,9 +156,9 @@ static rs_status hold(rs_status st)
   return st;
 }
 
-void ys_units_note_errors(void)
+void rsi_ys_units_note_errors(void)
 {
-  for (int i = 0; i < held.n; ++i) ys_note(RS_ERROR(RS_ERR_INPUT, "%s", held.text[i]));
+  for (int i = 0; i < held.n; ++i) rsi_ys_note(RS_ERROR(RS_ERR_INPUT, "%s", held.text[i]));
   held.n = 0;
 }
 
@@ -167,28 +167,28 @@ static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
   rs_scene *scene = ctx;
   double v, si = 0.0;
   char unit[64], key_unit[32], text[64];
-  if (node->quoted || yn_is_empty(node) || ys_parse_double(node->text, &v)) return RS_OK;
-  if (!ys_split_quantity(node->text, &v, unit, sizeof unit)) return RS_OK; /* typecheck says why */
-  const ys_range *r = ys_range_of(path);
-  ys_column_unit(r ? r->unit : "", column, key_unit, sizeof key_unit);
+  if (node->quoted || rsi_yn_is_empty(node) || rsi_ys_parse_double(node->text, &v)) return RS_OK;
+  if (!rsi_ys_split_quantity(node->text, &v, unit, sizeof unit)) return RS_OK; /* typecheck says why */
+  const ys_range *r = rsi_ys_range_of(path);
+  rsi_ys_column_unit(r ? r->unit : "", column, key_unit, sizeof key_unit);
   rs_status st = RS_OK;
   if (!key_unit[0]) {
-    st = yn_error(node, "takes a plain number, without a unit (got '%s')", node->text);
+    st = rsi_yn_error(node, "takes a plain number, without a unit (got '%s')", node->text);
   } else {
     const char *what, *examples;
     describe(key_unit, &what, &examples);
     int c = convert(v, unit, key_unit, &si);
     if (c == -2)
-      st = yn_error(node, "'%s': the units database (udunits2.xml) cannot be read; give the "
+      st = rsi_yn_error(node, "'%s': the units database (udunits2.xml) cannot be read; give the "
                           "value in %s", node->text, key_unit);
     else if (c == 0)
-      st = yn_error(node, "unknown unit '%s' in '%s' (expected %s: %s or e.g. %s)", unit,
+      st = rsi_yn_error(node, "unknown unit '%s' in '%s' (expected %s: %s or e.g. %s)", unit,
                     node->text, what, key_unit, examples);
     else if (c < 0)
-      st = yn_error(node, "'%s' is not %s (expected a unit of %s: %s or e.g. %s)", node->text,
+      st = rsi_yn_error(node, "'%s' is not %s (expected a unit of %s: %s or e.g. %s)", node->text,
                     what, what, key_unit, examples);
     else if (!isfinite(si))
-      st = yn_error(node, "must be a finite number (got '%s')", node->text);
+      st = rsi_yn_error(node, "must be a finite number (got '%s')", node->text);
   }
   /* a bad value has been reported: a number stands in for it so that the schema checks do
    * not report it again (the load stops after them) */
@@ -209,8 +209,8 @@ static rs_status convert_node(yn *node, const char *path, int column, void *ctx)
   return st;
 }
 
-rs_status ys_convert_units(yn *root, rs_scene *scene)
+rs_status rsi_ys_convert_units(yn *root, rs_scene *scene)
 {
   held.n = 0;
-  return ys_each_number(root, convert_node, scene);
+  return rsi_ys_each_number(root, convert_node, scene);
 }

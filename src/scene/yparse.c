@@ -133,9 +133,9 @@ static rs_status expand_alias(builder *b, const yaml_event_t *ev, int line, cons
   rs_status st = count_value(b, line_of(ev), a->size);
   if (st != RS_OK) return st;
   b->copied += a->size;
-  yn *c = yn_copy(a->node);
-  if (!c || yn_set_paths(c, path) != RS_OK) {
-    yn_free(c);
+  yn *c = rsi_yn_copy(a->node);
+  if (!c || rsi_yn_set_paths(c, path) != RS_OK) {
+    rsi_yn_free(c);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", b->file);
   }
   c->line = line;
@@ -160,7 +160,7 @@ static rs_status build_seq(builder *b, yn *n, const char *path, int depth)
     yn *kid = NULL;
     child_path(sub, sizeof sub, path, NULL, i);
     st = build(b, &ev, line_of(&ev), sub, depth + 1, &kid);
-    if (st == RS_OK) st = yn_seq_push(n, kid);
+    if (st == RS_OK) st = rsi_yn_seq_push(n, kid);
     if (st != RS_OK) return st;
   }
 }
@@ -197,14 +197,14 @@ static rs_status build_map(builder *b, yn *n, const char *path, int depth)
     else if (n->n == YN_MAX_KEYS)
       st = RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: more than %d keys in one mapping (the limit for "
                     "scene files)", b->file, kline, path[0] ? path : "(top level)", YN_MAX_KEYS);
-    else if (yn_map_index(n, key) >= 0)
+    else if (rsi_yn_map_index(n, key) >= 0)
       st = RS_ERROR(RS_ERR_INPUT, "%s:%d: %s: duplicate key '%s'", b->file, kline, sub, key);
     /* the value comes next; the key stays in `ev` until it is stored */
     yaml_event_t val;
     if (st == RS_OK) st = next_event(b, &val);
     yn *kid = NULL;
     if (st == RS_OK) st = build(b, &val, kline, sub, depth + 1, &kid);
-    if (st == RS_OK) st = yn_map_put(n, key, kid);
+    if (st == RS_OK) st = rsi_yn_map_put(n, key, kid);
     yaml_event_delete(&ev);
     if (st != RS_OK) return st;
   }
@@ -229,7 +229,7 @@ static rs_status build(builder *b, yaml_event_t *ev, int line, const char *path,
   const yaml_char_t *anchor_name = NULL;
   switch (ev->type) {
   case YAML_SCALAR_EVENT:
-    n = yn_new_scalar("", b->file, line, path);
+    n = rsi_yn_new_scalar("", b->file, line, path);
     if (n) {
       free(n->text);
       n->text = malloc(ev->data.scalar.length + 1);
@@ -248,7 +248,7 @@ static rs_status build(builder *b, yaml_event_t *ev, int line, const char *path,
   case YAML_SEQUENCE_START_EVENT:
   case YAML_MAPPING_START_EVENT: {
     int seq = ev->type == YAML_SEQUENCE_START_EVENT;
-    n = seq ? yn_new_seq(b->file, line, path) : yn_new_map(b->file, line, path);
+    n = seq ? rsi_yn_new_seq(b->file, line, path) : rsi_yn_new_map(b->file, line, path);
     if (!n) {
       st = RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", b->file);
       break;
@@ -265,7 +265,7 @@ static rs_status build(builder *b, yaml_event_t *ev, int line, const char *path,
   if (st == RS_OK) st = add_anchor(b, anchor_name, n);
   yaml_event_delete(ev);
   if (st != RS_OK) {
-    yn_free(n);
+    rsi_yn_free(n);
     return st;
   }
   *out = n;
@@ -300,7 +300,7 @@ static rs_status parse_stream(builder *b, yn **out)
   if ((st = next_event(b, &ev)) != RS_OK) return st;
   if ((st = build(b, &ev, 1, "", 0, &root)) != RS_OK) return st;
   if (root->kind != YN_MAP) {
-    yn_free(root);
+    rsi_yn_free(root);
     return RS_ERROR(RS_ERR_INPUT, "%s:1: the file must be a mapping of keys to values", b->file);
   }
   st = expect(b, YAML_DOCUMENT_END_EVENT, &ev);
@@ -317,14 +317,14 @@ static rs_status parse_stream(builder *b, yn **out)
   }
   yaml_event_delete(&ev); /* zeroed by libyaml when it was not filled or deleted */
   if (st != RS_OK) {
-    yn_free(root);
+    rsi_yn_free(root);
     return st;
   }
   *out = root;
   return RS_OK;
 }
 
-rs_status yn_parse_text(const char *text, size_t len, const char *file, yn **out)
+rs_status rsi_yn_parse_text(const char *text, size_t len, const char *file, yn **out)
 {
   builder b = {.file = file};
   *out = NULL;
@@ -341,7 +341,7 @@ rs_status yn_parse_text(const char *text, size_t len, const char *file, yn **out
   return st;
 }
 
-rs_status yn_parse_file(const char *file, yn **out)
+rs_status rsi_yn_parse_file(const char *file, yn **out)
 {
   *out = NULL;
   FILE *f = fopen(file, "rb");
@@ -356,7 +356,7 @@ rs_status yn_parse_file(const char *file, yn **out)
   int bad = ferror(f);
   fclose(f);
   rs_status st = bad ? RS_ERROR(RS_ERR_INPUT, "%s: read error", file)
-                     : yn_parse_text(text, len, file, out);
+                     : rsi_yn_parse_text(text, len, file, out);
   free(text);
   return st;
 }

@@ -31,34 +31,34 @@ static yn *yn_alloc(yn_kind kind, const char *file, int line, const char *path)
   return n;
 }
 
-yn *yn_new_scalar(const char *text, const char *file, int line, const char *path)
+yn *rsi_yn_new_scalar(const char *text, const char *file, int line, const char *path)
 {
   yn *n = yn_alloc(YN_SCALAR, file, line, path);
   if (!n) return NULL;
   n->text = dup_str(text);
   if (!n->text) {
-    yn_free(n);
+    rsi_yn_free(n);
     return NULL;
   }
   return n;
 }
 
-yn *yn_new_map(const char *file, int line, const char *path)
+yn *rsi_yn_new_map(const char *file, int line, const char *path)
 {
   return yn_alloc(YN_MAP, file, line, path);
 }
 
-yn *yn_new_seq(const char *file, int line, const char *path)
+yn *rsi_yn_new_seq(const char *file, int line, const char *path)
 {
   return yn_alloc(YN_SEQ, file, line, path);
 }
 
-void yn_free(yn *node)
+void rsi_yn_free(yn *node)
 {
   if (!node) return;
   for (int i = 0; i < node->n; ++i) {
     if (node->keys) free(node->keys[i]);
-    yn_free(node->kids[i]);
+    rsi_yn_free(node->kids[i]);
   }
   free(node->keys);
   free(node->kids);
@@ -84,7 +84,7 @@ static int grow(yn *node)
   return 1;
 }
 
-int yn_map_index(const yn *map, const char *key)
+int rsi_yn_map_index(const yn *map, const char *key)
 {
   if (!map || map->kind != YN_MAP) return -1;
   for (int i = 0; i < map->n; ++i)
@@ -92,24 +92,24 @@ int yn_map_index(const yn *map, const char *key)
   return -1;
 }
 
-yn *yn_map_get(const yn *map, const char *key)
+yn *rsi_yn_map_get(const yn *map, const char *key)
 {
-  int i = yn_map_index(map, key);
+  int i = rsi_yn_map_index(map, key);
   return i < 0 ? NULL : map->kids[i];
 }
 
-rs_status yn_map_put(yn *map, const char *key, yn *child)
+rs_status rsi_yn_map_put(yn *map, const char *key, yn *child)
 {
-  int i = yn_map_index(map, key);
+  int i = rsi_yn_map_index(map, key);
   if (i >= 0) {
-    yn_free(map->kids[i]);
+    rsi_yn_free(map->kids[i]);
     map->kids[i] = child;
     return RS_OK;
   }
   char *k = dup_str(key);
   if (!k || !grow(map)) {
     free(k);
-    yn_free(child);
+    rsi_yn_free(child);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory building the scene tree");
   }
   map->keys[map->n] = k;
@@ -117,12 +117,12 @@ rs_status yn_map_put(yn *map, const char *key, yn *child)
   return RS_OK;
 }
 
-void yn_map_remove(yn *map, const char *key)
+void rsi_yn_map_remove(yn *map, const char *key)
 {
-  int i = yn_map_index(map, key);
+  int i = rsi_yn_map_index(map, key);
   if (i < 0) return;
   free(map->keys[i]);
-  yn_free(map->kids[i]);
+  rsi_yn_free(map->kids[i]);
   for (int j = i + 1; j < map->n; ++j) {
     map->keys[j - 1] = map->keys[j];
     map->kids[j - 1] = map->kids[j];
@@ -130,10 +130,10 @@ void yn_map_remove(yn *map, const char *key)
   --map->n;
 }
 
-rs_status yn_seq_push(yn *seq, yn *child)
+rs_status rsi_yn_seq_push(yn *seq, yn *child)
 {
   if (!grow(seq)) {
-    yn_free(child);
+    rsi_yn_free(child);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory building the scene tree");
   }
   seq->kids[seq->n++] = child;
@@ -151,7 +151,7 @@ static void child_path(char *buf, size_t size, const char *parent, const char *k
 /* ---- lookup and edits ------------------------------------------------------------ */
 
 /* Splits "a.b[2].c" into segments "a", "b", "2", "c". */
-int yn_path_split(const char *path, char seg[][YN_SEG_MAX], int max)
+int rsi_yn_path_split(const char *path, char seg[][YN_SEG_MAX], int max)
 {
   int n = 0;
   const char *p = path;
@@ -180,7 +180,7 @@ int yn_path_split(const char *path, char seg[][YN_SEG_MAX], int max)
   return n;
 }
 
-int yn_seg_index(const char *seg, long *i)
+int rsi_yn_seg_index(const char *seg, long *i)
 {
   char *end;
   if (!seg[0]) return 0;
@@ -188,58 +188,58 @@ int yn_seg_index(const char *seg, long *i)
   return *end == '\0' && *i >= 0;
 }
 
-yn *yn_get(const yn *root, const char *path)
+yn *rsi_yn_get(const yn *root, const char *path)
 {
   char seg[32][YN_SEG_MAX];
-  int n = yn_path_split(path, seg, 32);
+  int n = rsi_yn_path_split(path, seg, 32);
   const yn *cur = root;
   for (int i = 0; cur && i < n; ++i) {
     long k;
     if (cur->kind == YN_SEQ)
-      cur = yn_seg_index(seg[i], &k) && k < cur->n ? cur->kids[k] : NULL;
+      cur = rsi_yn_seg_index(seg[i], &k) && k < cur->n ? cur->kids[k] : NULL;
     else
-      cur = yn_map_get(cur, seg[i]);
+      cur = rsi_yn_map_get(cur, seg[i]);
   }
   return n < 0 ? NULL : (yn *)cur;
 }
 
-yn *yn_copy(const yn *node)
+yn *rsi_yn_copy(const yn *node)
 {
   yn *c = yn_alloc(node->kind, node->file, node->line, node->path);
   if (!c) return NULL;
   c->quoted = node->quoted;
   if ((node->text && !(c->text = dup_str(node->text))) ||
       (node->origin && !(c->origin = dup_str(node->origin)))) {
-    yn_free(c);
+    rsi_yn_free(c);
     return NULL;
   }
   for (int i = 0; i < node->n; ++i) {
-    yn *kid = yn_copy(node->kids[i]);
+    yn *kid = rsi_yn_copy(node->kids[i]);
     if (!kid) {
-      yn_free(c);
+      rsi_yn_free(c);
       return NULL;
     }
-    if ((node->kind == YN_MAP ? yn_map_put(c, node->keys[i], kid) : yn_seq_push(c, kid)) != RS_OK) {
-      yn_free(c);
+    if ((node->kind == YN_MAP ? rsi_yn_map_put(c, node->keys[i], kid) : rsi_yn_seq_push(c, kid)) != RS_OK) {
+      rsi_yn_free(c);
       return NULL;
     }
   }
   return c;
 }
 
-rs_status yn_set_origin(yn *node, const char *origin)
+rs_status rsi_yn_set_origin(yn *node, const char *origin)
 {
   free(node->origin);
   node->origin = dup_str(origin);
   if (!node->origin) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
   for (int i = 0; i < node->n; ++i) {
-    rs_status st = yn_set_origin(node->kids[i], origin);
+    rs_status st = rsi_yn_set_origin(node->kids[i], origin);
     if (st != RS_OK) return st;
   }
   return RS_OK;
 }
 
-rs_status yn_set_paths(yn *node, const char *prefix)
+rs_status rsi_yn_set_paths(yn *node, const char *prefix)
 {
   char *p = dup_str(prefix);
   if (!p) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
@@ -248,19 +248,19 @@ rs_status yn_set_paths(yn *node, const char *prefix)
   char sub[512];
   for (int i = 0; i < node->n; ++i) {
     child_path(sub, sizeof sub, prefix, node->kind == YN_MAP ? node->keys[i] : NULL, i);
-    rs_status st = yn_set_paths(node->kids[i], sub);
+    rs_status st = rsi_yn_set_paths(node->kids[i], sub);
     if (st != RS_OK) return st;
   }
   return RS_OK;
 }
 
-int yn_is_empty(const yn *node)
+int rsi_yn_is_empty(const yn *node)
 {
   return node->kind == YN_SCALAR && !node->quoted &&
          (node->text[0] == '\0' || strcmp(node->text, "~") == 0 || strcmp(node->text, "null") == 0);
 }
 
-void yn_where(const yn *node, char *buf, size_t size)
+void rsi_yn_where(const yn *node, char *buf, size_t size)
 {
   if (node->origin && strcmp(node->origin, "default") != 0)
     snprintf(buf, size, "%s", node->origin);
@@ -274,13 +274,13 @@ static rs_status verror(const yn *node, const char *path, const char *fmt, va_li
 {
   char where[1024], msg[1536];
   vsnprintf(msg, sizeof msg, fmt, ap);
-  yn_where(node, where, sizeof where);
+  rsi_yn_where(node, where, sizeof where);
   if (node->origin && strcmp(node->origin, "default") != 0)
     return RS_ERROR(RS_ERR_INPUT, "%s: %s", where, msg);
   return RS_ERROR(RS_ERR_INPUT, "%s: %s: %s", where, path[0] ? path : "(top level)", msg);
 }
 
-rs_status yn_error(const yn *node, const char *fmt, ...)
+rs_status rsi_yn_error(const yn *node, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -289,7 +289,7 @@ rs_status yn_error(const yn *node, const char *fmt, ...)
   return st;
 }
 
-rs_status yn_error_key(const yn *map, const char *key, const char *fmt, ...)
+rs_status rsi_yn_error_key(const yn *map, const char *key, const char *fmt, ...)
 {
   char path[600];
   va_list ap;
@@ -369,7 +369,7 @@ static int emit_node(yaml_emitter_t *em, const yn *node, int in_flow)
   return 0;
 }
 
-rs_status yn_emit(const yn *root, char **text)
+rs_status rsi_yn_emit(const yn *root, char **text)
 {
   yaml_emitter_t em;
   yaml_event_t ev;

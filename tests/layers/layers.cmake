@@ -13,3 +13,13 @@ foreach(c lower_includes_higher internal_includes_higher include_cycle cli_inter
                    ${PROJECT_SOURCE_DIR}/scripts/check-layers.sh ${CMAKE_C_COMPILER})
   set_tests_properties(layers.refuses.${c} PROPERTIES LABELS unit TIMEOUT 300)
 endforeach()
+# The names the library defines and exports (scripts/check-symbols.sh): rs_* or rsi_*,
+# and a shared library exports rs_* only.
+add_test(NAME symbols.library
+         COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/check-symbols.sh
+                 $<TARGET_FILE:reelsim_internal> $<TARGET_FILE:reelsim>)
+set_tests_properties(symbols.library PROPERTIES LABELS unit TIMEOUT 300)
+add_test(NAME symbols.refuses
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/layers/symbols_negative.sh
+                 ${PROJECT_SOURCE_DIR}/scripts/check-symbols.sh ${CMAKE_C_COMPILER})
+set_tests_properties(symbols.refuses PROPERTIES LABELS unit TIMEOUT 300)

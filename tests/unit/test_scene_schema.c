@@ -41,7 +41,7 @@ static int walk_docs(const ys_value *v, const char *path)
     snprintf(sub, sizeof sub, "%s%s%s", path, path[0] ? "." : "", f->key);
     if (!documented(f->key)) printf("  not in docs/scenes.md: %s\n", sub);
     CHECK(documented(f->key));
-    CHECK(ys_schema_at(sub) == f->value);
+    CHECK(rsi_ys_schema_at(sub) == f->value);
     n += 1 + walk_docs(f->value, sub);
   }
   return n;
@@ -57,7 +57,7 @@ static void schema_documented(void)
   if (docs) {
     size_t len = fread(docs, 1, (1 << 20) - 1, f);
     docs[len] = '\0';
-    int keys = walk_docs(&ys_scene_schema, "");
+    int keys = walk_docs(&rsi_ys_scene_schema, "");
     printf("  %d keys\n", keys);
     CHECK(keys > 60);
   }
@@ -73,12 +73,12 @@ static int walk_defaults(const ys_value *v)
   if (v->type != YS_MAP) return 0;
   for (const ys_field *f = v->fields; f->key; ++f) {
     if (f->def && f->value->type != YS_MAP) {
-      yn *node = yn_new_scalar(f->def, "schema", 1, f->key);
+      yn *node = rsi_yn_new_scalar(f->def, "schema", 1, f->key);
       CHECK(node != NULL);
-      rs_status st = node ? ys_typecheck(node, f->value) : RS_ERR_MEMORY;
+      rs_status st = node ? rsi_ys_typecheck(node, f->value) : RS_ERR_MEMORY;
       if (st != RS_OK) printf("  default of %s: %s\n", f->key, rs_error_message());
       CHECK(st == RS_OK);
-      yn_free(node);
+      rsi_yn_free(node);
       ++n;
     }
     CHECK(!f->required || !f->def); /* a required key never needs its default */
@@ -96,7 +96,7 @@ static int walk_defaults(const ys_value *v)
 
 static void defaults_pass_checks(void)
 {
-  int n = walk_defaults(&ys_scene_schema);
+  int n = walk_defaults(&rsi_ys_scene_schema);
   printf("  %d defaults\n", n);
   CHECK(n >= 14);
 }

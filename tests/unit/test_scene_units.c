@@ -20,38 +20,38 @@ static const double lbf = 0.45359237 * 9.80665; /* N, exact by definition */
 static void convert_exact(void)
 {
   double v = 0.0;
-  CHECK(ys_unit_convert(600, "m/min", "m/s", &v));
+  CHECK(rsi_ys_unit_convert(600, "m/min", "m/s", &v));
   CHECK_CLOSE(v, 10.0, 1e-15);
-  CHECK(ys_unit_convert(2, "pli", "N/m", &v));
+  CHECK(rsi_ys_unit_convert(2, "pli", "N/m", &v));
   CHECK_CLOSE(v, 2 * lbf / 0.0254, 1e-14);
-  CHECK(ys_unit_convert(2, "lbf/in", "N/m", &v));
+  CHECK(rsi_ys_unit_convert(2, "lbf/in", "N/m", &v));
   CHECK_CLOSE(v, 2 * lbf / 0.0254, 1e-14);
-  CHECK(ys_unit_convert(6, "in", "m", &v));
+  CHECK(rsi_ys_unit_convert(6, "in", "m", &v));
   CHECK_CLOSE(v, 0.1524, 1e-15);
-  CHECK(ys_unit_convert(20, "um", "m", &v));
+  CHECK(rsi_ys_unit_convert(20, "um", "m", &v));
   CHECK_CLOSE(v, 20e-6, 1e-15);
-  CHECK(ys_unit_convert(0.4, "kN/m", "N/m", &v));
+  CHECK(rsi_ys_unit_convert(0.4, "kN/m", "N/m", &v));
   CHECK_CLOSE(v, 400.0, 1e-15);
-  CHECK(ys_unit_convert(212, "degF", "degC", &v));
+  CHECK(rsi_ys_unit_convert(212, "degF", "degC", &v));
   CHECK_CLOSE(v, 100.0, 1e-13);
-  CHECK(ys_unit_convert(2, "d", "h", &v));
+  CHECK(rsi_ys_unit_convert(2, "d", "h", &v));
   CHECK_CLOSE(v, 48.0, 1e-15);
-  CHECK(ys_unit_convert(3.5, "GPa", "Pa", &v));
+  CHECK(rsi_ys_unit_convert(3.5, "GPa", "Pa", &v));
   CHECK_CLOSE(v, 3.5e9, 1e-15);
-  CHECK(!ys_unit_convert(1, "kg", "m", &v));          /* another dimension */
-  CHECK(!ys_unit_convert(1, "notaunit", "m", &v));    /* not a unit */
+  CHECK(!rsi_ys_unit_convert(1, "kg", "m", &v));          /* another dimension */
+  CHECK(!rsi_ys_unit_convert(1, "notaunit", "m", &v));    /* not a unit */
 }
 
 static void split(void)
 {
   double v = 0.0;
   char unit[32];
-  CHECK(ys_split_quantity("20 um", &v, unit, sizeof unit) && v == 20.0 && !strcmp(unit, "um"));
-  CHECK(ys_split_quantity("600m/min ", &v, unit, sizeof unit) && v == 600.0 &&
+  CHECK(rsi_ys_split_quantity("20 um", &v, unit, sizeof unit) && v == 20.0 && !strcmp(unit, "um"));
+  CHECK(rsi_ys_split_quantity("600m/min ", &v, unit, sizeof unit) && v == 600.0 &&
         !strcmp(unit, "m/min"));
-  CHECK(ys_split_quantity("2e-3 in", &v, unit, sizeof unit) && v == 2e-3 && !strcmp(unit, "in"));
-  CHECK(!ys_split_quantity("350", &v, unit, sizeof unit));
-  CHECK(!ys_split_quantity("abc", &v, unit, sizeof unit));
+  CHECK(rsi_ys_split_quantity("2e-3 in", &v, unit, sizeof unit) && v == 2e-3 && !strcmp(unit, "in"));
+  CHECK(!rsi_ys_split_quantity("350", &v, unit, sizeof unit));
+  CHECK(!rsi_ys_split_quantity("abc", &v, unit, sizeof unit));
 }
 
 /* the schema's numbers, each with its entry in the table (and nothing in the table that
@@ -60,7 +60,7 @@ static int walk(const ys_value *v, const char *path, int *found)
 {
   int n = 0;
   if (v->type == YS_FLOAT) {
-    const ys_range *r = ys_range_of(path);
+    const ys_range *r = rsi_ys_range_of(path);
     if (!r) printf("  no unit/bounds entry: %s\n", path);
     CHECK(r != NULL);
     ++*found;
@@ -68,7 +68,7 @@ static int walk(const ys_value *v, const char *path, int *found)
   }
   if (v->type == YS_LIST) {
     if (v->entry->type == YS_FLOAT || (v->entry->type == YS_LIST && v->entry->entry->type == YS_FLOAT)) {
-      const ys_range *r = ys_range_of(path);
+      const ys_range *r = rsi_ys_range_of(path);
       if (!r) printf("  no unit/bounds entry: %s\n", path);
       CHECK(r != NULL);
       ++*found;
@@ -88,8 +88,8 @@ static int walk(const ys_value *v, const char *path, int *found)
 static void every_number_has_bounds(void)
 {
   int found = 0, n = 0;
-  walk(&ys_scene_schema, "", &found);
-  const ys_range *t = ys_ranges(&n);
+  walk(&rsi_ys_scene_schema, "", &found);
+  const ys_range *t = rsi_ys_ranges(&n);
   printf("%d numeric keys in the schema, %d entries in the table\n", found, n);
   CHECK(found == n);
   char buf[256];
@@ -98,7 +98,7 @@ static void every_number_has_bounds(void)
       snprintf(buf, sizeof buf, "storage[0].%s", t[i].path + 8);
     else
       snprintf(buf, sizeof buf, "%s", t[i].path);
-    CHECK(ys_schema_at(buf) != NULL);
+    CHECK(rsi_ys_schema_at(buf) != NULL);
     CHECK(t[i].lo < t[i].hi);
     /* the plant range lies inside the hard bounds: no plant value is refused */
     if (!isnan(t[i].plo)) {
@@ -114,8 +114,8 @@ static void every_number_has_bounds(void)
       size_t len = strcspn(p, " ");
       snprintf(alt, sizeof alt, "%.*s", (int)len, p);
       double v;
-      if (!ys_unit_convert(1.0, alt, unit, &v)) printf("  %s: %s does not convert to %s\n", t[i].path, alt, unit);
-      CHECK(ys_unit_convert(1.0, alt, unit, &v));
+      if (!rsi_ys_unit_convert(1.0, alt, unit, &v)) printf("  %s: %s does not convert to %s\n", t[i].path, alt, unit);
+      CHECK(rsi_ys_unit_convert(1.0, alt, unit, &v));
       p += len;
       while (*p == ' ') ++p;
     }
@@ -134,7 +134,7 @@ static void bounds_documented(void)
   fclose(f);
   docs[len] = '\0';
   int n = 0;
-  const ys_range *t = ys_ranges(&n);
+  const ys_range *t = rsi_ys_ranges(&n);
   for (int i = 0; i < n; ++i) {
     char pat[160];
     snprintf(pat, sizeof pat, "| `%s` |", t[i].path);
