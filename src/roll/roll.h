@@ -88,7 +88,10 @@ double rs_roll_outer_radius(const rs_roll *roll);          /* m */
 double rs_roll_layer_radius(const rs_roll *roll, int j);   /* outer radius of layer j (0-based) */
 /* Per layer j = 0..n-1 (layer j+1 in the notes), evaluated at its outer radius; Pa,
  * tension positive. The arrays stay owned by the roll and hold until the next
- * rs_roll_add_layers or rs_roll_restore (the engine may fill them afresh at each read). */
+ * rs_roll_add_layers or rs_roll_restore (the engine may fill them afresh at each read).
+ * FILLS CACHES: these two readers take const but write the roll's caches (the lazy deep
+ * part brought up to date, the hoop stresses from equilibrium), so two threads must not
+ * read one roll at once; a roll belongs to one thread, for reading as for winding. */
 const double *rs_roll_sigma_r(const rs_roll *roll);
 const double *rs_roll_sigma_theta(const rs_roll *roll);
 /* sigma_r of layer j alone (NaN outside 0..n-1): the engine keeps its deep part lazy
