@@ -1,4 +1,4 @@
-# Solver time against layers, log-log (docs/performance.md, "Performance at scale"):
+# Solver time against layers, log-log (docs/performance.md, "The film at scale"):
 #   bench/film_scale.sh BUILD before.dat (and after.dat, measured back to back), then
 #   gnuplot -e "before='before.dat'; after='after.dat'" docs/img/film_scale.gp
 set terminal pngcairo size 800,560 font ",11"
