@@ -2,7 +2,11 @@
  *
  * The physics (material, core, tension recipe, nip) and the numerics, and what the reel
  * itself records (stress history, nip profiles). No file format: a scene (reelsim/scene.h)
- * resolves a YAML file into one, and a program may equally fill one in itself. */
+ * resolves a YAML file into one, and a program may equally fill one in itself.
+ *
+ * A value struct on purpose, unlike the result: it is the input a program builds field by
+ * field (tests/validation/test_taper.c winds one with no YAML), and the nip, material and
+ * storage specs in it are handed on by address (rs_nip_contact_create_from_spec). */
 #ifndef REELSIM_PROBLEM_H
 #define REELSIM_PROBLEM_H
 
