@@ -1,4 +1,4 @@
-/* Private parts of the cylinder module (include/reelsim/cylinder.h). */
+/* Private parts of the cylinder module (cylinder/cylinder.h). */
 #ifndef RS_CYLINDER_INTERNAL_H
 #define RS_CYLINDER_INTERNAL_H
 

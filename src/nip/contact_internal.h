@@ -1,4 +1,4 @@
-/* Private parts of the nip contact solver (reelsim/nip_contact.h). */
+/* Private parts of the nip contact solver (nip/nip_contact.h). */
 #ifndef RS_NIP_CONTACT_INTERNAL_H
 #define RS_NIP_CONTACT_INTERNAL_H
 

@@ -5,7 +5,7 @@
  *                             q1_0..q1_{M-2}        [M-2, 2M-3)   roll traction, +x
  *                             q2_0..q2_{M-2}        [2M-3, 3M-4)  drum traction, +x
  *                             delta0, eps0, xi2, T0 [3M-4, 3M)
- * q1 = -tau+, q2 = +tau- are the friction tractions on the cylinders (reelsim/nip_contact.h).
+ * q1 = -tau+, q2 = +tau- are the friction tractions on the cylinders (nip/nip_contact.h).
  * Rows: indentation at node i [0, M); upper contact at midpoint e [M, 2M-1); lower
  * [2M-1, 3M-2); sheet equilibrium; winder torque. The system itself: contact_assemble.c. */
 #include "nip/contact_internal.h"

@@ -1,4 +1,4 @@
-/* Thin orthotropic sheet of the seed paper (eqs. (9)-(11)); see reelsim/sheet.h. */
+/* Thin orthotropic sheet of the seed paper (eqs. (9)-(11)); see sheet/sheet.h. */
 #include "sheet/sheet.h"
 #include "util/error.h"
 
