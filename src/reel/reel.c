@@ -8,6 +8,7 @@
 
 #include "reel/gauge.h"
 #include "reel/nip_policy.h"
+#include "reel/winder.h"
 #include "reel/reel_air.h"
 #include "reel/spin.h"
 #include "util/cancel.h"
@@ -308,7 +309,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
     params.air_radius = air.node;
   }
   if ((st = rs_roll_create(&params, &roll))) goto done;
-  if ((st = rs_nip_create(&pb->nip, &pb->material, &nip))) goto done;
+  if ((st = rs_winder_nip_create(pb, &nip))) goto done;
 
   if (nip) {
     rs_nip_policy_init(&pol, &pb->nip, per_step, N);
