@@ -244,6 +244,12 @@ const ys_value ys_scene_schema = MAP(scene_fields);
 
 int ys_is_shorthand(const char *p)
 {
+  long k;
+  char seg[4][YN_SEG_MAX];
+  /* a list entry's load: nip[1].load */
+  if (yn_path_split(p, seg, 4) == 3 && strcmp(seg[0], "nip") == 0 && yn_seg_index(seg[1], &k) &&
+      strcmp(seg[2], "load") == 0)
+    return 1;
   return strcmp(p, "material") == 0 || strcmp(p, "winding.tension") == 0 ||
          strcmp(p, "winding.speed") == 0 ||
          strcmp(p, "nip.load") == 0 || strcmp(p, "winder") == 0;
