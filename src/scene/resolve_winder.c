@@ -156,7 +156,13 @@ rs_status ys_resolve_nips(const yn *root, rs_scene *s)
   const int list = is_list(root);
   rs_status st = resolve_block(root, w, list);
   if (st != RS_OK) return st;
-  if (!list) return ys_resolve_nip(root, s, 0);
+  if (!list) {
+    const int pos = ys_enum(root, "nip.position");
+    if (pos == RS_NIP_AT_FRONT || pos == RS_NIP_AT_REAR)
+      return ys_fail(root, "nip.position", "front and rear drums belong to a two-drum winder "
+                     "(winder: two_drum, with nip: as a list)");
+    return ys_resolve_nip(root, s, 0);
+  }
   w->n_nips = yn_get(root, "nip")->n;
   for (int i = 0; i < w->n_nips; ++i)
     if ((st = resolve_entry(root, s, i)) != RS_OK) return st;

@@ -17,3 +17,6 @@ rs_cli_test(two_drum_run_uncapped 0 [[wound-on tension +1092\.1 \.\. 1548\.6 N/m
             run ${TDC} -o two-drum-uncapped.h5 --set material.nit_saturation=null)
 rs_cli_test(two_drum_falls_between 2 [[winder\.drum_distance=1\.3: winder: a roll of radius 0\.0762 m falls between drums]]
             check ${TDC} --set winder.drum_distance=1.3)
+# reelsim nip solves one nip: a list is refused, naming why
+rs_cli_test(two_drum_nip_refused 2 [[reelsim nip' solves one nip. this scene lists several]]
+            nip ${TDC} --radius 0.3)
