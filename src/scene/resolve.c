@@ -228,7 +228,7 @@ static rs_status resolve_drum(const yn *root, rs_drum *d)
  * recipes in the radius, so the condition is checked along the roll, as the reel will
  * meet it: the layer going on at roll radius R = r_c + j t has Ti(R + t) and P(R). A reel
  * of more than a million layers is checked at a million evenly spaced layers and the last. */
-rs_status ys_check_drum_capacity(const yn *root, const rs_scene *s)
+static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
 {
   const rs_problem *p = &s->problem;
   const rs_nip_spec *n = &p->nip;
@@ -265,7 +265,7 @@ rs_status ys_check_drum_capacity(const yn *root, const rs_scene *s)
 }
 
 /* by_winder: the load comes from the winder's statics (a drum of a two-drum winder) */
-rs_status ys_resolve_nip(const yn *root, rs_scene *s, int by_winder)
+static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
 {
   const int model_kind = ys_enum(root, "nip.model"), winder = ys_enum(root, "nip.winder"),
             update = ys_enum(root, "nip.update");
@@ -453,8 +453,10 @@ rs_status ys_resolve(const yn *root, rs_scene *s)
                                              &s->problem.tension),
                            &bad);
   if (fatal(tension)) return tension;
-  if ((st = part(ys_resolve_nips(root, s), &bad)) != RS_OK) return st;
-  if (tension == RS_OK && fatal(st = part(ys_check_nips_capacity(root, s), &bad))) return st;
+  /* the nip, or each nip of a list (resolve_winder.c, handed the one-nip steps) */
+  if ((st = part(ys_resolve_nips(root, s, resolve_nip), &bad)) != RS_OK) return st;
+  if (tension == RS_OK && fatal(st = part(ys_check_nips_capacity(root, s, check_drum_capacity), &bad)))
+    return st;
   if (tension == RS_OK && fatal(st = part(ys_resolve_speed(root, s), &bad))) return st;
   if (mat == RS_OK && fatal(st = part(ys_resolve_storage(root, s), &bad))) return st;
   if (fatal(st = part(resolve_output(root, s), &bad))) return st;

@@ -67,7 +67,7 @@ static rs_status drum_radius(const yn *root, const yn *view, int i, double *R)
 }
 
 /* One entry of the list into w->nips[i]. */
-static rs_status resolve_entry(const yn *root, rs_scene *s, int i)
+static rs_status resolve_entry(const yn *root, rs_scene *s, int i, ys_nip_step one)
 {
   rs_winder_spec *w = &s->problem.winder;
   const yn *entry = yn_get(root, "nip")->kids[i];
@@ -81,7 +81,7 @@ static rs_status resolve_entry(const yn *root, rs_scene *s, int i)
   else if (drum && w->type != RS_WINDER_TYPE_TWO_DRUM)
     st = ys_fail(&view, "nip.position", "front and rear drums belong to a two-drum winder "
                  "(winder: two_drum)");
-  if (st == RS_OK) st = ys_resolve_nip(&view, s, drum && w->type == RS_WINDER_TYPE_TWO_DRUM);
+  if (st == RS_OK) st = one(&view, s, drum && w->type == RS_WINDER_TYPE_TWO_DRUM);
   if (st == RS_OK) {
     w->nips[i] = s->problem.nip;
     w->position[i] = pos;
@@ -149,7 +149,7 @@ static rs_status total_load(rs_scene *s)
   return rs_recipe_prepare(rc, r0, r1);
 }
 
-rs_status ys_resolve_nips(const yn *root, rs_scene *s)
+rs_status ys_resolve_nips(const yn *root, rs_scene *s, ys_nip_step one)
 {
   rs_winder_spec *w = &s->problem.winder;
   memset(w, 0, sizeof *w);
@@ -161,18 +161,18 @@ rs_status ys_resolve_nips(const yn *root, rs_scene *s)
     if (pos == RS_NIP_AT_FRONT || pos == RS_NIP_AT_REAR)
       return ys_fail(root, "nip.position", "front and rear drums belong to a two-drum winder "
                      "(winder: two_drum, with nip: as a list)");
-    return ys_resolve_nip(root, s, 0);
+    return one(root, s, 0);
   }
   w->n_nips = yn_get(root, "nip")->n;
   for (int i = 0; i < w->n_nips; ++i)
-    if ((st = resolve_entry(root, s, i)) != RS_OK) return st;
+    if ((st = resolve_entry(root, s, i, one)) != RS_OK) return st;
   if (w->type == RS_WINDER_TYPE_TWO_DRUM && (st = check_two_drum(root, s)) != RS_OK) return st;
   return total_load(s);
 }
 
-rs_status ys_check_nips_capacity(const yn *root, rs_scene *s)
+rs_status ys_check_nips_capacity(const yn *root, rs_scene *s, ys_capacity_step one)
 {
-  if (!is_list(root)) return ys_check_drum_capacity(root, s);
+  if (!is_list(root)) return one(root, s);
   rs_winder_spec *w = &s->problem.winder;
   const rs_nip_spec keep = s->problem.nip;
   rs_status st = RS_OK;
@@ -183,7 +183,7 @@ rs_status ys_check_nips_capacity(const yn *root, rs_scene *s)
     yn view;
     if ((st = make_view(root, yn_get(root, "nip")->kids[i], &view)) != RS_OK) break;
     s->problem.nip = w->nips[i];
-    st = ys_check_drum_capacity(&view, s);
+    st = one(&view, s);
     free(view.kids);
   }
   s->problem.nip = keep;
