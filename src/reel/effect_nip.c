@@ -10,6 +10,7 @@
 
 #include "reel/effect.h"
 #include "reel/nip_policy.h"
+#include "reel/winder.h"
 #include "reelsim/nip.h"
 #include "reelsim/nip_contact.h"
 
@@ -37,7 +38,7 @@ static rs_status nip_setup(rs_reel_effect *e, rs_reel_state *s, rs_roll_params *
   nip_effect *n = calloc(1, sizeof *n);
   if (!n) return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the nip");
   e->content = n;
-  rs_status st = rs_nip_create(&pb->nip, &pb->material, &n->nip);
+  rs_status st = rs_winder_nip_create(pb, &n->nip);
   if (st) return st;
   rs_nip_policy_init(&n->pol, &pb->nip, s->per_step, s->N);
   if (pb->nip.update == RS_NIP_UPDATE_ADAPTIVE && (st = rs_roll_state_create(&n->snap))) return st;
