@@ -86,14 +86,14 @@ static void print_list(FILE *out, const rs_problem *p)
                   g(a, t0), g(b, t1));
 }
 
-int ys_print_nips(FILE *out, const rs_scene *s)
+int rsi_ys_print_nips(FILE *out, const rs_scene *s)
 {
   if (s->problem.winder.n_nips == 0) return 0;
   print_list(out, &s->problem);
   return 1;
 }
 
-void ys_print_nip_saturation(FILE *out, const rs_scene *s)
+void rsi_ys_print_nip_saturation(FILE *out, const rs_scene *s)
 {
   const rs_problem *p = &s->problem;
   num_t a;

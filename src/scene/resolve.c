@@ -454,8 +454,8 @@ rs_status rsi_ys_resolve(const yn *root, rs_scene *s)
                            &bad);
   if (fatal(tension)) return tension;
   /* the nip, or each nip of a list (resolve_winder.c, handed the one-nip steps) */
-  if ((st = part(ys_resolve_nips(root, s, resolve_nip), &bad)) != RS_OK) return st;
-  if (tension == RS_OK && fatal(st = part(ys_check_nips_capacity(root, s, check_drum_capacity), &bad)))
+  if ((st = part(rsi_ys_resolve_nips(root, s, resolve_nip), &bad)) != RS_OK) return st;
+  if (tension == RS_OK && fatal(st = part(rsi_ys_check_nips_capacity(root, s, check_drum_capacity), &bad)))
     return st;
   if (tension == RS_OK && fatal(st = part(rsi_ys_resolve_speed(root, s), &bad))) return st;
   if (mat == RS_OK && fatal(st = part(rsi_ys_resolve_storage(root, s), &bad))) return st;

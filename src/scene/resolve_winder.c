@@ -150,7 +150,7 @@ static rs_status total_load(rs_scene *s)
   return rs_recipe_prepare(rc, r0, r1);
 }
 
-rs_status ys_resolve_nips(const yn *root, rs_scene *s, ys_nip_step one)
+rs_status rsi_ys_resolve_nips(const yn *root, rs_scene *s, ys_nip_step one)
 {
   rs_winder_spec *w = &s->problem.winder;
   memset(w, 0, sizeof *w);
@@ -171,7 +171,7 @@ rs_status ys_resolve_nips(const yn *root, rs_scene *s, ys_nip_step one)
   return total_load(s);
 }
 
-rs_status ys_check_nips_capacity(const yn *root, rs_scene *s, ys_capacity_step one)
+rs_status rsi_ys_check_nips_capacity(const yn *root, rs_scene *s, ys_capacity_step one)
 {
   if (!is_list(root)) return one(root, s);
   rs_winder_spec *w = &s->problem.winder;

@@ -65,12 +65,12 @@ rs_status rsi_ys_resolve_storage(const yn *root, rs_scene *scene);
  * the list applies them to each entry. */
 typedef rs_status (*ys_nip_step)(const yn *root, rs_scene *scene, int by_winder);
 typedef rs_status (*ys_capacity_step)(const yn *root, const rs_scene *scene);
-rs_status ys_resolve_nips(const yn *root, rs_scene *scene, ys_nip_step one);
-rs_status ys_check_nips_capacity(const yn *root, rs_scene *scene, ys_capacity_step one);
+rs_status rsi_ys_resolve_nips(const yn *root, rs_scene *scene, ys_nip_step one);
+rs_status rsi_ys_check_nips_capacity(const yn *root, rs_scene *scene, ys_capacity_step one);
 /* effects_winder.c: the lines of `nip:` as a list (1 when it printed them, 0 for one nip)
  * and the nips' saturation, for reelsim check */
-int ys_print_nips(FILE *out, const rs_scene *scene);
-void ys_print_nip_saturation(FILE *out, const rs_scene *scene);
+int rsi_ys_print_nips(FILE *out, const rs_scene *scene);
+void rsi_ys_print_nip_saturation(FILE *out, const rs_scene *scene);
 /* resolve_speed.c: winding.speed and the centrifugal load */
 rs_status rsi_ys_resolve_speed(const yn *root, rs_scene *scene);
 
