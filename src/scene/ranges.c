@@ -149,7 +149,7 @@ static rs_status visit(yn *node, const char *path, int column, ys_number_fn fn, 
 static rs_status walk(yn *node, const ys_value *s, const char *path, ys_number_fn fn, void *ctx)
 {
   rs_status bad = RS_OK, st = RS_OK;
-  s = ys_schema_form(s, node);
+  s = rsi_ys_schema_form(s, node);
   if (s->type == YS_FLOAT) return visit(node, path, -1, fn, ctx);
   if (s->type == YS_LIST && node->kind == YN_SEQ) {
     int pairs = is_pair_list(s);

@@ -255,7 +255,7 @@ int rsi_ys_is_shorthand(const char *p)
          strcmp(p, "nip.load") == 0 || strcmp(p, "winder") == 0;
 }
 
-const ys_value *ys_schema_form(const ys_value *s, const yn *node)
+const ys_value *rsi_ys_schema_form(const ys_value *s, const yn *node)
 {
   return s && s->list_form && node && node->kind == YN_SEQ ? s->list_form : s;
 }

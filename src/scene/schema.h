@@ -67,7 +67,7 @@ int rsi_ys_is_shorthand(const char *scene_path);
 const ys_value *rsi_ys_schema_at(const char *scene_path);
 
 /* The schema a node is checked against: s, or s->list_form when the node is a list. */
-const ys_value *ys_schema_form(const ys_value *s, const yn *node);
+const ys_value *rsi_ys_schema_form(const ys_value *s, const yn *node);
 
 /* The keys of a mapping, ", "-separated, for messages. */
 void rsi_ys_schema_keys(const ys_value *mapping, char *buf, size_t size);
