@@ -71,7 +71,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->wstep);
   free(roll->L);
   free(roll->xnode);
-  roll_air_free(roll);
+  rsi_roll_air_free(roll);
   free(roll->block_share);
   free(roll->P_node);
   free(roll->P_mean);
@@ -167,7 +167,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->prof_next = -1;
   roll->ref_from = -1;
   roll->ref_deep_max = RS_REF_DEEP_MAX;
-  roll->lazy_allowed = roll_lazy_allowed(&roll->p);
+  roll->lazy_allowed = rsi_roll_lazy_allowed(&roll->p);
   if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
       !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
       !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
@@ -179,7 +179,7 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   }
 
   for (size_t j = 0; j <= cap; ++j) roll->xnode[j] = log(params->core_radius + j * params->caliper);
-  if ((st = roll_air_alloc(roll))) {
+  if ((st = rsi_roll_air_alloc(roll))) {
     rs_roll_destroy(&roll);
     return st;
   }
@@ -195,11 +195,11 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
   if (!roll->cvode) goto cvode_fail;
   if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) goto cvode_fail;
-  if (CVodeInit(roll->cvode, roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeWFtolerances(roll->cvode, roll_ewt) != CV_SUCCESS) goto cvode_fail;
+  if (CVodeInit(roll->cvode, rsi_roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
+  if (CVodeWFtolerances(roll->cvode, rsi_roll_ewt) != CV_SUCCESS) goto cvode_fail;
   if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
   /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
-  if (roll_corrector_attach(roll) != 0) goto cvode_fail;
+  if (rsi_roll_corrector_attach(roll) != 0) goto cvode_fail;
   /* one CVode call = one step here; the per-increment budget is counted by the engine */
   if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
   /* CVODE keeps its step (and its order) while the step it could take is within a band of
@@ -241,40 +241,40 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   roll->w_lazy = m == 1 && roll->shift;
   /* the deep part corrected for the drift (roll_profile.c): one layer and its load beneath */
   roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
-  if (m > 1) roll_lazy_flush(roll, 0);
+  if (m > 1) rsi_roll_lazy_flush(roll, 0);
 
   /* with entrained air, the new nodes at their real radii (roll_air.c) */
-  rs_status st = roll_air_nodes(roll, k_old, k);
+  rs_status st = rsi_roll_air_nodes(roll, k_old, k);
   if (st) return st;
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  st = roll_set_modulus_stress(roll, top);
-  if (st == RS_OK) st = roll_integrate(roll, top);
+  st = rsi_roll_set_modulus_stress(roll, top);
+  if (st == RS_OK) st = rsi_roll_integrate(roll, top);
   if (st) {
-    roll_start_release(roll, st);
+    rsi_roll_start_release(roll, st);
     return st;
   }
 
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
   if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
-    st = roll_commit_frozen(roll, m, T0, total);
-  } else if (m == 1) { /* roll_block_increment and roll_commit, fused where it can */
-    st = roll_add_one(roll, T0[0]);
+    st = rsi_roll_commit_frozen(roll, m, T0, total);
+  } else if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
+    st = rsi_roll_add_one(roll, T0[0]);
   } else {
-    roll_block_increment(roll, k_old, m, T0, roll->P_mean);
+    rsi_roll_block_increment(roll, k_old, m, T0, roll->P_mean);
     /* the corrector: each node's modulus at the mean pressure the m single-layer
      * increments would have seen there (the pressure before each, averaged over those
      * that reach the node), from the predictor's sub-increments; integrate again */
-    roll_gather_pressure(roll, top, roll->P_mean);
-    st = roll_set_modulus(roll, top);
-    if (st == RS_OK) st = roll_integrate(roll, top);
+    rsi_roll_gather_pressure(roll, top, roll->P_mean);
+    st = rsi_roll_set_modulus(roll, top);
+    if (st == RS_OK) st = rsi_roll_integrate(roll, top);
     if (st) {
-      roll_start_release(roll, st);
+      rsi_roll_start_release(roll, st);
       return st;
     }
-    roll_block_increment(roll, k_old, m, T0, NULL);
-    st = roll_commit(roll, m, T0);
+    rsi_roll_block_increment(roll, k_old, m, T0, NULL);
+    st = rsi_roll_commit(roll, m, T0);
   }
-  roll_start_release(roll, st);
+  rsi_roll_start_release(roll, st);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;
@@ -295,32 +295,32 @@ double rs_roll_outer_radius(const rs_roll *roll)
 /* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
 const double *rs_roll_sigma_r(const rs_roll *roll)
 {
-  return roll->lazy_top > 0 ? roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
+  return roll->lazy_top > 0 ? rsi_roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
 }
 double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
 {
-  return j >= 0 && j < roll->n ? roll_lazy_sigma(roll, j + 1) : NAN;
+  return j >= 0 && j < roll->n ? rsi_roll_lazy_sigma(roll, j + 1) : NAN;
 }
 const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
   rs_roll *r = (rs_roll *)roll; /* caches of the state: logically const */
   if (roll->hoop_stale) { /* the turns' equilibrium, from the radial stresses in full */
     if (roll->geom)
-      roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+      rsi_roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
                                     roll->node_r, roll->p.caliper, roll->n);
     else
-      roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+      rsi_roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
                                  roll->p.core_radius, roll->p.caliper, roll->n);
     r->hoop_stale = 0; /* until the next increment */
     return roll->sigma_theta;
   }
-  return roll->lazy_top > 0 && !roll->shift ? roll_lazy_view_theta(r) : roll->sigma_theta;
+  return roll->lazy_top > 0 && !roll->shift ? rsi_roll_lazy_view_theta(r) : roll->sigma_theta;
 }
-double rs_roll_core_pressure(const rs_roll *roll) { return -roll_lazy_sigma(roll, 0); }
+double rs_roll_core_pressure(const rs_roll *roll) { return -rsi_roll_lazy_sigma(roll, 0); }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {
   const int node = roll->n - roll->shift; /* the outermost loaded interface */
-  double P = node >= 0 && roll->n > 0 ? -roll_lazy_sigma(roll, node) : 0.0;
+  double P = node >= 0 && roll->n > 0 ? -rsi_roll_lazy_sigma(roll, node) : 0.0;
   const double E = rs_radial_modulus(&roll->p.radial, P);
   /* entrained air: the film at that interface in series (roll_air.c) */
   return roll->p.air_film && node >= 0 ? rs_air_series_modulus(E, roll->p.caliper, roll->p.air_film[node], P,

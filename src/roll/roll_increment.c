@@ -31,7 +31,7 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
  * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
  * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
-void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
+void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
                      roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
@@ -97,12 +97,12 @@ void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int t
   seg->s[0] = seg->s[1] * p1;
 }
 
-/* roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a
+/* rsi_roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a
  * bound of the e_j written (the segments' largest products times their scales) */
 static double roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
   roll_segments seg;
-  roll_decays_raw(L, e, lo, top, &seg);
+  rsi_roll_decays_raw(L, e, lo, top, &seg);
   double bound = seg.count == 0 ? seg.M[0] : 0.0;
   for (int g = seg.count - 1; g >= 0; --g) {
     roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
@@ -115,7 +115,7 @@ static double roll_decays(const double *restrict L, double *restrict e, int lo, 
  * from the reference's shape, or, the start corrected for the drift (start_C, roll_profile.c),
  * c e exp(C (p_L - p_L(lo))), to first order c (1 - C p_L(lo)) e + c C e p_L: returns the
  * first scale, *c2 the second */
-double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
+double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
 {
   const double C = roll->start_C;
   if (C == 0.0) {
@@ -153,7 +153,7 @@ static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
  * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
  * For m = 1 these are the single-layer formulas of Hakiel accretion, operation for
  * operation. */
-void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
 {
   const double *L = roll->L, *w = roll->w;
   /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
@@ -182,7 +182,7 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
   int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
   /* an increment computed node by node from the core adds to the stored values of nodes
    * that are lazy: their drift bound would not see it, so they are brought up to date */
-  if (lo == 0 && roll->lazy_top > 0) roll_lazy_flush(roll, 0);
+  if (lo == 0 && roll->lazy_top > 0) rsi_roll_lazy_flush(roll, 0);
   const double e_bound = roll_decays(L, dsr, lo, bottom);
   if (j0 == 0) { /* a reference: keep its shape (the nodes below the block, and its bottom
                   * node, e = 1 there: a later start there still reads the shape) */
@@ -198,22 +198,22 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
     roll->prof_top = -1;
     roll->prof_next = -1;
     if (roll->prof_on && !mean) {
-      roll_wstep_store(roll, bottom);
-      roll->prof_next = roll_profile_build(roll, 0, bottom);
+      rsi_roll_wstep_store(roll, bottom);
+      roll->prof_next = rsi_roll_profile_build(roll, 0, bottom);
       roll->ref_c_next = -S;
     }
   }
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
   roll->c2_deep = 0.0;
-  if (lo > 0 && lo == j0) roll->c_deep = roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
+  if (lo > 0 && lo == j0) roll->c_deep = rsi_roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
   if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
       roll->last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
      * nodes well below where the last partial integration started can take it lazily at
      * once (their drift is zero now: the modulus was just integrated), so the next
      * increment does not gather, evaluate and scan the whole roll again */
-    roll_lazy_freeze(roll, roll->last_start - 1);
+    rsi_roll_lazy_freeze(roll, roll->last_start - 1);
     if (roll->lazy_top > 0) {
       roll->deep_lo = lo = roll->lazy_top;
       roll->c_deep = -S;
@@ -295,7 +295,7 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
 /* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
  * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
  * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
-rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
+rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
 {
   const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
   const double t = roll->p.caliper, s = roll_node_radius(roll, top);
@@ -308,7 +308,7 @@ rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double tota
   /* First every node's increment (ds, and ds + r ds'), then the state: an increment that
    * fails leaves the roll exactly as it was, every finished layer intact. From the top
    * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
-   * (roll_block_increment). */
+   * (rsi_roll_block_increment). */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
   dsr[top] = 1.0;
@@ -349,14 +349,14 @@ rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double tota
 
 /* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
  * from their own share. */
-rs_status roll_commit(rs_roll *roll, int m, const double *T0)
+rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
 {
   const int k_old = roll->n, k = roll->n + m;
   const double t = roll->p.caliper;
   const double *restrict ds = roll->dsr, *restrict dh = roll->dsh;
   rs_status st = roll_check_increment(roll, ds, roll->shift ? ds : dh, k);
   if (st) return st;
-  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment):
+  /* below deep_lo the increment is c_deep times the reference's shape (rsi_roll_block_increment):
    * the lazy nodes take it in their common scale */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
@@ -382,7 +382,7 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   }
   roll->prof_next = -1;
   const int j1 = lo > 1 ? lo : 1;
-  roll_shape_add(roll, j0, lo, c, c2);
+  rsi_roll_shape_add(roll, j0, lo, c, c2);
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
   if (roll->shift) { /* the hoop stresses follow from the radial ones */
@@ -408,7 +408,7 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
  * that the loop vectorises; derived only when the hoop stresses are read (the reel reads
  * them at history stages and at the end: a pass over every layer at every increment was
  * 4.5 % of the 6054-layer reel). */
-void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
+void rsi_roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
                                 double rc, double t, int k)
 {
   const double inv_t = 1.0 / t;
@@ -418,10 +418,10 @@ void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr,
     sth[j - 1] = ((rc + j * t) * sr[j - 1] - (rc + (j - 1) * t) * sr[j - 2]) * inv_t;
 }
 
-/* roll_hoop_from_equilibrium with the nodes at the radii R[0..k] (entrained air: the turn
+/* rsi_roll_hoop_from_equilibrium with the nodes at the radii R[0..k] (entrained air: the turn
  * and the film beneath it carry the radial stresses on their faces; the film no hoop force,
  * so the web's is [R sigma_r] over the turn, its stress that over t) */
-void roll_hoop_from_equilibrium_at(double *restrict sth, const double *restrict sr, double core_sigma,
+void rsi_roll_hoop_from_equilibrium_at(double *restrict sth, const double *restrict sr, double core_sigma,
                                    const double *restrict R, double t, int k)
 {
   const double inv_t = 1.0 / t;

@@ -16,7 +16,7 @@ typedef struct roll_jet {
 
 static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
 {
-  double dg2 = 0.0, g2 = roll_g2_at(roll, x, &dg2);
+  double dg2 = 0.0, g2 = rsi_roll_g2_at(roll, x, &dg2);
   double dw = g2 - 1.0 - 2.0 * w - w * w;
   return (roll_jet){x, w, dw, dg2 - 2.0 * (1.0 + w) * dw, L};
 }
@@ -99,7 +99,7 @@ static int roll_wstep_keep(rs_roll *roll, const roll_quintic *q, int lo, int hi)
 
 /* w stored at the kept steps' nodes up to node hi (those above are about to be overwritten),
  * by the same operations as the fill: the steps are then dropped */
-void roll_wstep_store(rs_roll *roll, int hi)
+void rsi_roll_wstep_store(rs_roll *roll, int hi)
 {
   for (int i = 0; i < roll->wstep_n && roll->wstep[i].lo <= hi; ++i) {
     const roll_wstep *s = &roll->wstep[i];
@@ -196,7 +196,7 @@ static int roll_reuse_start(rs_roll *roll)
   if (roll->ref_age < roll_refresh_age(roll))
     return roll_reuse_search(roll, top, RS_ACCURACY_PER_RTOL * roll->p.rtol, second);
   if (!second || roll->ref_deep >= roll->ref_deep_max) return -1;
-  /* A new reference, from the core or from a node above it (roll_reference_rebase):
+  /* A new reference, from the core or from a node above it (rsi_roll_reference_rebase):
    * below that node the reference's (w, L) and shape take their first-order correction
    * for the drift for good and the drift restarts from 0 there, so what the correction
    * leaves, second order, stays: the node is found with the second-order bound at a
@@ -230,11 +230,11 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
   const double aC = fabs(roll->lazy_c), *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b;
   const double *restrict pl = roll->scan_L;
   int lo = -1;
-  if (F > 0 && !(roll_profile_bound(la[F - 1] + aC * lb[F - 1], pl[F - 1], Ls, second) <= tol)) {
+  if (F > 0 && !(rsi_roll_profile_bound(la[F - 1] + aC * lb[F - 1], pl[F - 1], Ls, second) <= tol)) {
     int hi = F - 1; /* E(lo) <= tol < E(hi), all lazy: bisection on the stored bounds */
     while (hi - lo > 1) {
       const int mid = lo + (hi - lo) / 2;
-      if (roll_profile_bound(la[mid] + aC * lb[mid], pl[mid], Ls, second) <= tol)
+      if (rsi_roll_profile_bound(la[mid] + aC * lb[mid], pl[mid], Ls, second) <= tol)
         lo = mid;
       else
         hi = mid;
@@ -265,7 +265,7 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
     }
     const double be = fmax(fmax(e4[0], e4[1]), fmax(e4[2], e4[3]));
     const double bl = fmax(fmax(l4[0], l4[1]), fmax(l4[2], l4[3]));
-    if (roll_profile_bound(be, bl, Ls, second) <= tol) { /* the whole block qualifies */
+    if (rsi_roll_profile_bound(be, bl, Ls, second) <= tol) { /* the whole block qualifies */
       me = be;
       ml = bl;
       lo = b1;
@@ -274,7 +274,7 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
     for (j = b0; j <= b1; ++j) { /* the first node past tol is in this block */
       me = eps[j] > me ? eps[j] : me;
       ml = L[j] > ml ? L[j] : ml;
-      if (!(roll_profile_bound(me, ml, Ls, second) <= tol)) break;
+      if (!(rsi_roll_profile_bound(me, ml, Ls, second) <= tol)) break;
       lo = j;
     }
     break;
@@ -320,7 +320,7 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
       cw[1] + 0.5 * (2.0 * cw[2] + 0.5 * (3.0 * cw[3] + 0.5 * (4.0 * cw[4] + 0.5 * 5.0 * cw[5])));
   const double dqL =
       cL[1] + 0.5 * (2.0 * cL[2] + 0.5 * (3.0 * cL[3] + 0.5 * (4.0 * cL[4] + 0.5 * 5.0 * cL[5])));
-  const double g2 = roll_g2_probe(roll, ja->x + 0.5 * h);
+  const double g2 = rsi_roll_g2_probe(roll, ja->x + 0.5 * h);
   const double dw = dqw / h - (g2 - 1.0 - 2.0 * qw - qw * qw), dL = dqL / h - qw;
   const double A = 2.0 * (h + jb->L - ja->L), eh = exp(-0.5 * A), D = eh * eh;
   /* h (1 - e^-A)/A and h (1 - e^-A/2)/A from the one exp(), by their Taylor sums where A
@@ -385,12 +385,12 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
 /* The start node's (w, L) back to the reference's once the increment corrected there is
  * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
  * A reference from a node above the core (roll_reuse_start) that was committed becomes
- * the reference: its profile continued from that node (roll_reference_extend). */
-void roll_start_release(rs_roll *roll, rs_status st)
+ * the reference: its profile continued from that node (rsi_roll_reference_extend). */
+void rsi_roll_start_release(rs_roll *roll, rs_status st)
 {
   if (roll->ref_from > 0 && st == RS_OK) {
-    roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
-    roll_reference_extend(roll);
+    rsi_roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
+    rsi_roll_reference_extend(roll);
   }
   roll->ref_from = -1;
   if (roll->start_C == 0.0) return;
@@ -404,7 +404,7 @@ void roll_start_release(rs_roll *roll, rs_status st)
  * keeping the reference's values below it.
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
  * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
-rs_status roll_integrate(rs_roll *roll, int k)
+rs_status rsi_roll_integrate(rs_roll *roll, int k)
 {
   if (k == 0) { /* the first layer's load on the core: nothing to integrate */
     roll->wstep_n = 0;
@@ -423,11 +423,11 @@ rs_status roll_integrate(rs_roll *roll, int k)
   /* the nodes the integration looks at (from first - 1: the Hermite slopes) leave the lazy
    * zone; a reference needs every node, and one from a node above the core (ref_from) has
    * every node leave it too, to freeze again below its start with the lazy scale from 0:
-   * only nodes that existed when that scale started can join the zone (roll_lazy_freeze) */
+   * only nodes that existed when that scale started can join the zone (rsi_roll_lazy_freeze) */
   const int need = from_core || roll->ref_from > 0 ? 0 : first - 1, F = roll->lazy_top;
   if (need < F) {
-    roll_lazy_flush(roll, need);
-    rs_status st = roll_prepare_nodes(roll, need, F);
+    rsi_roll_lazy_flush(roll, need);
+    rs_status st = rsi_roll_prepare_nodes(roll, need, F);
     if (st) return st;
   }
   const double x0 = xn[first];
@@ -436,14 +436,14 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->w[0] = roll->kc;
     roll->L[0] = 0.0;
   }
-  roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
-  if (roll->ref_from > 0) roll_reference_rebase(roll, first);
-  roll->start = first; /* before the start is corrected: roll_start_release reads it */
+  rsi_roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
+  if (roll->ref_from > 0) rsi_roll_reference_rebase(roll, first);
+  roll->start = first; /* before the start is corrected: rsi_roll_start_release reads it */
   if (start_C != 0.0) {
     roll->start_C = start_C;
     /* the reference's (w, L) at the start moved by the drift since (roll_profile.c): the
      * node holds them while the increment is built from this integration, and the
-     * reference's again after (roll_start_release) */
+     * reference's again after (rsi_roll_start_release) */
     roll->start_ref[0] = roll->w[first];
     roll->start_ref[1] = roll->L[first];
     roll->w[first] += roll->start_C * roll->prof_w[first];
@@ -459,9 +459,9 @@ rs_status roll_integrate(rs_roll *roll, int k)
   roll->x_anchor = x0;
   roll->r_anchor = exp(x0);
   /* ln g^2 at the nodes the steps may look at, in one pass, when they are few */
-  if (k - first <= roll->lg2_range_max) roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
+  if (k - first <= roll->lg2_range_max) rsi_roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
   roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
-  const double g2_start = roll_g2_at(roll, x0, NULL);
+  const double g2_start = rsi_roll_g2_at(roll, x0, NULL);
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
       CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
@@ -471,7 +471,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->ref_top = k;
     roll->ref_age = 0;
     roll->ref_deep = 0;
-    roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
+    roll->shape_top = -1; /* until its increment is built (rsi_roll_block_increment) */
     roll->prof_top = -1;  /* likewise its profile */
     roll->stats.full_integrations++;
   } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
@@ -479,10 +479,10 @@ rs_status roll_integrate(rs_roll *roll, int k)
     roll->prof_top = roll->prof_top < j0 ? roll->prof_top : j0; /* still the reference's */
     roll->ref_age++;
     roll->last_start = j0;
-    /* below the start the increment is c x the reference's shape (roll_block_increment):
+    /* below the start the increment is c x the reference's shape (rsi_roll_block_increment):
      * those nodes can wait (roll_lazy.c) */
     if (roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)
-      roll_lazy_freeze(roll, j0 - 1);
+      rsi_roll_lazy_freeze(roll, j0 - 1);
   }
 
   int next = first + 1; /* next node to fill */
@@ -511,7 +511,7 @@ rs_status roll_integrate(rs_roll *roll, int k)
       if (!correct) roll_quintic_make(&prev, &cur, &q);
       /* the last node inside the step: r_j = r_c + j t, so j = (e^x - r_c)/t up to rounding,
        * settled against the stored ln r_j (the jet at tret has just formed (e^x - r_c)/t) */
-      int last = (int)roll_layer_coord_at(roll, tret);
+      int last = (int)rsi_roll_layer_coord_at(roll, tret);
       if (last < next) last = next;
       if (last > k) last = k;
       while (last > next && xn[last] > tret) --last;

@@ -2,7 +2,7 @@
  *   roll.c            the roll: parameters, create/destroy, rs_roll_add_layers, queries
  *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
  *                     Jacobian, error weights, the modulus an increment sees
- *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
+ *   rsi_roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
  *                     interpolation inside each step; the reuse of the deep solution)
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
@@ -29,13 +29,13 @@ enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
 enum { RS_REF_DEEP_MAX = 4 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
- * instead of when a step first looks (roll_lg2_range: on the 6054-layer reel, ~300 nodes
+ * instead of when a step first looks (rsi_roll_lg2_range: on the 6054-layer reel, ~300 nodes
  * and 40 steps an increment, 1.9 % fewer instructions and none of the right-hand side's
  * waiting on log(); on a 20,000-layer film break-even in instructions at 512 - 1024
  * nodes, +1.1 % at 2048; docs/performance.md) */
 enum { RS_LG2_RANGE_MAX = 1024 };
 
-/* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
+/* One CVODE step's quintic of w in s = (x - a) inv_h (rsi_roll_integrate.c), for its nodes
  * [lo, hi]: w there is evaluated when read */
 typedef struct roll_wstep {
   double a, inv_h, c[6];
@@ -81,7 +81,7 @@ struct rs_roll {
   /* With one layer wound and its load beneath it only a start node reads w: the last
    * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
    * an integration evaluates the nodes at and below its start before it overwrites the
-   * rest (roll_integrate.c) */
+   * rest (rsi_roll_integrate.c) */
   roll_wstep *wstep;
   int wstep_n, wstep_cap;
   int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
@@ -109,16 +109,16 @@ struct rs_roll {
   int ref_age;          /* integrations since the reference */
   int start;            /* node the last integration started from (0: the core) */
   int last_start;       /* the last start above the core (where a reference's increment
-                           may be kept lazy from: roll_block_increment) */
+                           may be kept lazy from: rsi_roll_block_increment) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
    * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
    * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is
    *   ds_j = c e_j,  ds_j + r ds_j' = c e_j (1 + w_j),   c = ds_{j0} / e_{j0}    (j < j0),
-   * two multiplications a node (roll_block_increment, roll_commit). */
+   * two multiplications a node (rsi_roll_block_increment, rsi_roll_commit). */
   double *shape_e, *shape_h;
   int shape_top;
   /* a bound on |shape_e| (and |shape_h| with Hakiel's placement) over the shape's nodes:
-   * when |c_deep| times it is finite, so is the increment below deep_lo (roll_commit) */
+   * when |c_deep| times it is finite, so is the increment below deep_lo (rsi_roll_commit) */
   double shape_max;
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h), plus, with the
    * deep part corrected, c2_deep shape_e prof_L */
@@ -137,13 +137,13 @@ struct rs_roll {
                             committed, with ref_c_next its deep scale */
   double ref_c_next;
   int ref_from;          /* > 0: this increment's integration is a new reference from that
-                            node up, the nodes below rebased (roll_reference_rebase) */
+                            node up, the nodes below rebased (rsi_roll_reference_rebase) */
   int ref_deep;          /* references from a node above the core since the last from it */
   int ref_deep_max;      /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
   long deep_references;  /* references from a node above the core so far */
   int ref_from_last;     /* the node the last of them started from */
   double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
-  double start_ref[2];   /* the reference's (w, L) at that start (roll_start_release) */
+  double start_ref[2];   /* the reference's (w, L) at that start (rsi_roll_start_release) */
   double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
   double *prof_w, *prof_L; /* [cap + 1] */
   int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
@@ -209,44 +209,44 @@ static inline double roll_log_ratio_small(double z)
 }
 
 /* roll_lazy.c */
-void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
-void roll_lazy_flush(rs_roll *roll, int from);
-void roll_lazy_freeze(rs_roll *roll, int to);
-double roll_lazy_sigma(const rs_roll *roll, int j);
-const double *roll_lazy_view_r(rs_roll *roll);
-const double *roll_lazy_view_theta(rs_roll *roll);
-int roll_lazy_allowed(const rs_roll_params *p);
+void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
+void rsi_roll_lazy_flush(rs_roll *roll, int from);
+void rsi_roll_lazy_freeze(rs_roll *roll, int to);
+double rsi_roll_lazy_sigma(const rs_roll *roll, int j);
+const double *rsi_roll_lazy_view_r(rs_roll *roll);
+const double *rsi_roll_lazy_view_theta(rs_roll *roll);
+int rsi_roll_lazy_allowed(const rs_roll_params *p);
 
 /* roll_ode.c */
-double roll_g2_at(rs_roll *roll, double x, double *dg2);
-double roll_g2_probe(rs_roll *roll, double x);
-void roll_lg2_range(rs_roll *roll, int lo, int hi);
-double roll_layer_coord_at(rs_roll *roll, double x);
-int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
-int roll_jac(double x, const double y[2], double J[2][2], void *user);
-int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
-void roll_gather_pressure(rs_roll *roll, int k, const double *add);
-rs_status roll_set_modulus(rs_roll *roll, int k);
-rs_status roll_set_modulus_stress(rs_roll *roll, int k);
-rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
+double rsi_roll_g2_at(rs_roll *roll, double x, double *dg2);
+double rsi_roll_g2_probe(rs_roll *roll, double x);
+void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi);
+double rsi_roll_layer_coord_at(rs_roll *roll, double x);
+int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
+int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user);
+int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user);
+void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add);
+rs_status rsi_roll_set_modulus(rs_roll *roll, int k);
+rs_status rsi_roll_set_modulus_stress(rs_roll *roll, int k);
+rs_status rsi_roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_profile.c */
-int roll_profile_build(rs_roll *roll, int from, int top);
-double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
+int rsi_roll_profile_build(rs_roll *roll, int from, int top);
+double rsi_roll_profile_bound(double eps_max, double L_max, double Ls, int second);
 
 /* roll_air.c */
-void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
-rs_status roll_air_alloc(rs_roll *roll);
-void roll_air_free(rs_roll *roll);
-rs_status roll_air_nodes(rs_roll *roll, int k_old, int k);
-double roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
+void rsi_roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
+rs_status rsi_roll_air_alloc(rs_roll *roll);
+void rsi_roll_air_free(rs_roll *roll);
+rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k);
+double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 
-/* roll_integrate.c */
-rs_status roll_integrate(rs_roll *roll, int k);
-void roll_wstep_store(rs_roll *roll, int hi);
-void roll_start_release(rs_roll *roll, rs_status st);
-void roll_reference_extend(rs_roll *roll);
-void roll_reference_rebase(rs_roll *roll, int from);
+/* rsi_roll_integrate.c */
+rs_status rsi_roll_integrate(rs_roll *roll, int k);
+void rsi_roll_wstep_store(rs_roll *roll, int hi);
+void rsi_roll_start_release(rs_roll *roll, rs_status st);
+void rsi_roll_reference_extend(rs_roll *roll);
+void rsi_roll_reference_rebase(rs_roll *roll, int from);
 
 /* roll_increment.c */
 typedef struct roll_segments {
@@ -255,17 +255,17 @@ typedef struct roll_segments {
   double s[4];          /* its scale: the product of the segments above it */
   double M[4];          /* its largest unscaled product */
 } roll_segments;
-void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
-void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
+void rsi_roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
+void rsi_roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
-void roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_r, double core_sigma,
+void rsi_roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_r, double core_sigma,
                                    const double *radius, double t, int k);
-double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
-void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
-rs_status roll_commit(rs_roll *roll, int m, const double *T0);
-rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
+void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
+rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
+rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
 
 /* roll_layer.c */
-rs_status roll_add_one(rs_roll *roll, double T0);
+rs_status rsi_roll_add_one(rs_roll *roll, double T0);
 
 #endif
