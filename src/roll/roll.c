@@ -42,7 +42,7 @@
  * An increment need not be integrated from the core: below the newest layers the modulus
  * barely changes, so it keeps the deep part of the last integration from the core and
  * integrates from a start node up, the error this adds held to RS_ACCURACY_PER_RTOL x rtol x
- * T0/s (roll_reuse_start; numerics.reuse; docs/roll-model.md). */
+ * T0/s (rsi_roll_reuse_start; numerics.reuse; docs/roll-model.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

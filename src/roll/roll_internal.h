@@ -2,8 +2,9 @@
  *   roll.c            the roll: parameters, create/destroy, rs_roll_add_layers, queries
  *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
  *                     Jacobian, error weights, the modulus an increment sees
- *   rsi_roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
- *                     interpolation inside each step; the reuse of the deep solution)
+ *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
+ *                     interpolation inside each step, the integration's error corrected)
+ *   roll_reuse.c      the reference solution: where an integration may start, its books
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
@@ -25,7 +26,7 @@
 #include "util/sundials_compat.h"
 
 enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
-/* references from a node above the core between two from the core (roll_reuse_start) */
+/* references from a node above the core between two from the core (rsi_roll_reuse_start) */
 enum { RS_REF_DEEP_MAX = 4 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
@@ -35,7 +36,7 @@ enum { RS_REF_DEEP_MAX = 4 };
  * nodes, +1.1 % at 2048; docs/performance.md) */
 enum { RS_LG2_RANGE_MAX = 1024 };
 
-/* One CVODE step's quintic of w in s = (x - a) inv_h (rsi_roll_integrate.c), for its nodes
+/* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
  * [lo, hi]: w there is evaluated when read */
 typedef struct roll_wstep {
   double a, inv_h, c[6];
@@ -81,7 +82,7 @@ struct rs_roll {
   /* With one layer wound and its load beneath it only a start node reads w: the last
    * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
    * an integration evaluates the nodes at and below its start before it overwrites the
-   * rest (rsi_roll_integrate.c) */
+   * rest (roll_integrate.c) */
   roll_wstep *wstep;
   int wstep_n, wstep_cap;
   int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
@@ -100,7 +101,7 @@ struct rs_roll {
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
   int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
-  /* Reuse of the deep solution (roll_reuse_start): the last integration from the core is
+  /* Reuse of the deep solution (rsi_roll_reuse_start): the last integration from the core is
    * the reference; below the node an integration starts from, (w, L) stay the reference's */
   double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
   double *scan_eps;     /* [cap + 1] |E_r / Er_ref - 1| at the nodes the search looks at */
@@ -241,9 +242,15 @@ void rsi_roll_air_free(rs_roll *roll);
 rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k);
 double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 
-/* rsi_roll_integrate.c */
+/* roll_integrate.c */
 rs_status rsi_roll_integrate(rs_roll *roll, int k);
 void rsi_roll_wstep_store(rs_roll *roll, int hi);
+
+/* roll_reuse.c */
+int rsi_roll_reuse_start(rs_roll *roll);
+void rsi_roll_reference_core(rs_roll *roll);
+void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
+void rsi_roll_reference_end(rs_roll *roll, int k, int first);
 void rsi_roll_start_release(rs_roll *roll, rs_status st);
 void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);

@@ -4,7 +4,7 @@
  * every increment: their stresses are
  *     sigma_r(r_j) = stored_j + C e_j,    (Hakiel placement: sigma_theta_j = stored + C h_j)
  * with C the sum of the increments' c since the nodes were frozen. The start-node search
- * (roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
+ * (rsi_roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
  * the pressure added since freezing, -dC e_j, it is at most
  *     eps_j ~ a_j + |C| b_j,   b_j = |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
  * (C only grows in magnitude: every increment compresses; ln E_r is concave in P for the

@@ -195,7 +195,7 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
 }
 
-/* A new reference from node `from` up (roll_reuse_start), before it is integrated: below
+/* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
  * the node the reference's values take their first-order correction for the drift since
  * the last reference, C = ref_c, for good,
  *     (w, L)_j += C (p_w, p_L)_j,   e_j *= exp(C (p_L,j - p_L,from)),   E_ref,j = E_r,j,
@@ -250,7 +250,7 @@ void rsi_roll_reference_extend(rs_roll *roll)
   roll->ref_c = roll->c_deep;
 }
 
-/* The start-node search's error bound for a start s0 (roll_reuse_start), in units of T0/s,
+/* The start-node search's error bound for a start s0 (rsi_roll_reuse_start), in units of T0/s,
  * from the largest drift eps_max = |E_r/E_ref - 1| of the nodes at and below s0 and their
  * largest L: at first order eps_max exp(L_max - Ls); with the deep part corrected, the
  * second order's eps_max^2 / 4 exp(L_max - Ls), but only where the drift is small enough

@@ -1,5 +1,5 @@
 /* The fused one-layer increment (src/roll/roll_layer.c) and w kept as each step's quintic
- * (roll->w_lazy, rsi_roll_integrate.c) are the two-step path (rsi_roll_block_increment then
+ * (roll->w_lazy, roll_integrate.c) are the two-step path (rsi_roll_block_increment then
  * rsi_roll_commit, w stored node by node) operation for operation: a roll wound through
  * rs_roll_add_layers and a twin wound by the same steps spelled out with the fused path
  * and the kept quintics switched off must hold the same stresses bit for bit.

@@ -1,4 +1,4 @@
-/* The correction of the integration's global error (src/roll/rsi_roll_integrate.c,
+/* The correction of the integration's global error (src/roll/roll_integrate.c,
  * roll_correction_step; docs/roll-model.md, "Correcting the integration's error"), against
  * independent references:
  *   altmann_exact     constant E_r: every stress against Altmann's closed form summed over
