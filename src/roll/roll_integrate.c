@@ -352,6 +352,24 @@ static void roll_count(rs_roll *roll, long steps)
   if (roll->NLS) roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS);
 }
 
+/* The start node's (w, L) back to the reference's once the increment corrected there is
+ * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
+ * A reference from a node above the core (rsi_roll_reuse_start) that was committed becomes
+ * the reference: its profile continued from that node (rsi_roll_reference_extend). */
+void rsi_roll_start_release(rs_roll *roll, rs_status st)
+{
+  if (roll->ref_from > 0 && st == RS_OK) {
+    rsi_roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
+    rsi_roll_reference_extend(roll);
+  }
+  roll->ref_from = -1;
+  if (roll->start_C == 0.0) return;
+  roll->w[roll->start] = roll->start_ref[0];
+  roll->L[roll->start] = roll->start_ref[1];
+  roll->start_C = 0.0;
+}
+
+
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
  * rsi_roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
  * keeping the reference's values below it (roll_reuse.c keeps the reference's books).

@@ -245,13 +245,13 @@ double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 /* roll_integrate.c */
 rs_status rsi_roll_integrate(rs_roll *roll, int k);
 void rsi_roll_wstep_store(rs_roll *roll, int hi);
+void rsi_roll_start_release(rs_roll *roll, rs_status st);
 
 /* roll_reuse.c */
 int rsi_roll_reuse_start(rs_roll *roll);
 void rsi_roll_reference_core(rs_roll *roll);
 void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
 void rsi_roll_reference_end(rs_roll *roll, int k, int first);
-void rsi_roll_start_release(rs_roll *roll, rs_status st);
 void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);
 

@@ -167,24 +167,6 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
   return roll_reuse_found(roll, lo, second);
 }
 
-/* The start node's (w, L) back to the reference's once the increment corrected there is
- * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
- * A reference from a node above the core (rsi_roll_reuse_start) that was committed becomes
- * the reference: its profile continued from that node (rsi_roll_reference_extend). */
-void rsi_roll_start_release(rs_roll *roll, rs_status st)
-{
-  if (roll->ref_from > 0 && st == RS_OK) {
-    rsi_roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
-    rsi_roll_reference_extend(roll);
-  }
-  roll->ref_from = -1;
-  if (roll->start_C == 0.0) return;
-  roll->w[roll->start] = roll->start_ref[0];
-  roll->L[roll->start] = roll->start_ref[1];
-  roll->start_C = 0.0;
-}
-
-
 /* The first layer's load on the core (an integration of no length): a reference of the
  * core node alone, no shape, no profile yet */
 void rsi_roll_reference_core(rs_roll *roll)
