@@ -88,6 +88,12 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->view_r);
   free(roll->view_theta);
   free(roll->lazy_b);
+  free(roll->scratch.u);
+  free(roll->scratch.d);
+  free(roll->scratch.q);
+  free(roll->scratch.c);
+  free(roll->scratch.a);
+  free(roll->scratch.b);
   free(roll);
   *rollp = NULL;
 }
@@ -120,6 +126,61 @@ static rs_status roll_check_params(const rs_roll_params *p)
   return RS_OK;
 }
 
+/* The roll's arrays for params->max_layers layers (nodes 0..cap), zeroed; 0 when one could
+ * not be allocated */
+static int roll_alloc_arrays(rs_roll *roll, size_t cap)
+{
+  double **node_arrays[] = {
+      &roll->Er,      &roll->lg2,     &roll->w,       &roll->L,       &roll->xnode,
+      &roll->block_share, &roll->P_node, &roll->P_mean, &roll->dsr,  &roll->dsh,
+      &roll->Er_ref,  &roll->scan_eps, &roll->scan_L, &roll->shape_e, &roll->shape_h,
+      &roll->prof_w,  &roll->prof_L,  &roll->lazy_a,  &roll->lazy_b,  &roll->scratch.u,
+      &roll->scratch.d, &roll->scratch.q, &roll->scratch.c, &roll->scratch.a, &roll->scratch.b};
+  int ok = 1;
+  for (size_t i = 0; i < sizeof node_arrays / sizeof *node_arrays; ++i)
+    ok &= (*node_arrays[i] = calloc(cap + 1, sizeof(double))) != NULL;
+  double **layer_arrays[] = {&roll->sigma_r, &roll->sigma_theta, &roll->view_r, &roll->view_theta};
+  for (size_t i = 0; i < sizeof layer_arrays / sizeof *layer_arrays; ++i)
+    ok &= (*layer_arrays[i] = calloc(cap, sizeof(double))) != NULL;
+  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
+  return ok && roll->lg2_epoch;
+}
+
+/* CVODE for the roll: BDF on the 2-vector (w, L) with its fused and specialised
+ * operations (vector2.c), the engine's right-hand side and error weights, the exact
+ * corrector (roll_corrector.c); 0 on success */
+static int roll_cvode_create(rs_roll *roll)
+{
+  const rs_roll_params *params = &roll->p;
+  if (rs_sundials_context_create(&roll->sunctx) != 0) return -1;
+  roll->y = N_VNew_Serial(2, roll->sunctx);
+  if (!roll->y) return -1;
+  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
+  if (N_VEnableFusedOps_Serial(roll->y, SUNTRUE) != 0) return -1;
+  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
+  if (rs_roll_vector2_specialise(roll->y) != 0) return -1;
+  N_VConst(0.0, roll->y);
+  roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
+  if (!roll->cvode) return -1;
+  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) return -1;
+  if (CVodeInit(roll->cvode, rsi_roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS)
+    return -1;
+  if (CVodeWFtolerances(roll->cvode, rsi_roll_ewt) != CV_SUCCESS) return -1;
+  if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) return -1;
+  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
+  if (rsi_roll_corrector_attach(roll) != 0) return -1;
+  /* one CVode call = one step here; the per-increment budget is counted by the engine */
+  if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) return -1;
+  /* CVODE keeps its step (and its order) while the step it could take is within a band of
+   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
+   * test. Near the surface, where every step must be ~10 % shorter than the last, one step
+   * in five failed. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
+   * on the way up from a restart in the smooth interior, where a partial integration starts
+   * (docs/performance.md has the measurements). */
+  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.8, 1.05) != CV_SUCCESS) return -1;
+  return 0;
+}
+
 rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
 {
   *out = NULL;
@@ -136,31 +197,6 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->lg2_hi = -1; /* no range yet */
   roll->kc = (isinf(params->core_stiffness) ? 0.0 : params->E_theta / params->core_stiffness) +
              params->nu_rtheta - 1.0;
-  size_t cap = (size_t)params->max_layers;
-  roll->sigma_r = calloc(cap, sizeof(double));
-  roll->sigma_theta = calloc(cap, sizeof(double));
-  roll->Er = calloc(cap + 1, sizeof(double));
-  roll->lg2 = calloc(cap + 1, sizeof(double));
-  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
-  roll->w = calloc(cap + 1, sizeof(double));
-  roll->L = calloc(cap + 1, sizeof(double));
-  roll->xnode = calloc(cap + 1, sizeof(double));
-  roll->block_share = calloc(cap + 1, sizeof(double));
-  roll->P_node = calloc(cap + 1, sizeof(double));
-  roll->P_mean = calloc(cap + 1, sizeof(double));
-  roll->dsr = calloc(cap + 1, sizeof(double));
-  roll->dsh = calloc(cap + 1, sizeof(double));
-  roll->Er_ref = calloc(cap + 1, sizeof(double));
-  roll->scan_eps = calloc(cap + 1, sizeof(double));
-  roll->scan_L = calloc(cap + 1, sizeof(double));
-  roll->shape_e = calloc(cap + 1, sizeof(double));
-  roll->shape_h = calloc(cap + 1, sizeof(double));
-  roll->prof_w = calloc(cap + 1, sizeof(double));
-  roll->prof_L = calloc(cap + 1, sizeof(double));
-  roll->lazy_a = calloc(cap + 1, sizeof(double));
-  roll->lazy_b = calloc(cap + 1, sizeof(double));
-  roll->view_r = calloc(cap, sizeof(double));
-  roll->view_theta = calloc(cap, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
   roll->prof_top = -1;
@@ -168,56 +204,24 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->ref_from = -1;
   roll->ref_deep_max = RS_REF_DEEP_MAX;
   roll->lazy_allowed = rsi_roll_lazy_allowed(&roll->p);
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
-      !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
-      !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
-      !roll->scan_L || !roll->shape_e || !roll->shape_h || !roll->prof_w || !roll->prof_L ||
-      !roll->lazy_a || !roll->lazy_b ||
-      !roll->view_r || !roll->view_theta) {
+  const size_t cap = (size_t)params->max_layers;
+  if (!roll_alloc_arrays(roll, cap)) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
-
   for (size_t j = 0; j <= cap; ++j) roll->xnode[j] = log(params->core_radius + j * params->caliper);
   if ((st = rsi_roll_air_alloc(roll))) {
     rs_roll_destroy(&roll);
     return st;
   }
-
-  if (rs_sundials_context_create(&roll->sunctx) != 0) goto cvode_fail;
-  roll->y = N_VNew_Serial(2, roll->sunctx);
-  if (!roll->y) goto cvode_fail;
-  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
-  if (N_VEnableFusedOps_Serial(roll->y, SUNTRUE) != 0) goto cvode_fail;
-  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
-  if (rs_roll_vector2_specialise(roll->y) != 0) goto cvode_fail;
-  N_VConst(0.0, roll->y);
-  roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
-  if (!roll->cvode) goto cvode_fail;
-  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) goto cvode_fail;
-  if (CVodeInit(roll->cvode, rsi_roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeWFtolerances(roll->cvode, rsi_roll_ewt) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
-  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
-  if (rsi_roll_corrector_attach(roll) != 0) goto cvode_fail;
-  /* one CVode call = one step here; the per-increment budget is counted by the engine */
-  if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
-  /* CVODE keeps its step (and its order) while the step it could take is within a band of
-   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
-   * test. Near the surface, where every step must be ~10 % shorter than the last, that
-   * made one step in five fail (~20 a roll crossing). [0.8, 1.05]: it shrinks a step before
-   * it fails (1.85 -> 1.47 right-hand sides a step, 8 % fewer instructions), and moves up
-   * to order 5 on the way up from a restart in the smooth interior, where a partial
-   * integration starts (and 5 % fewer steps from the core). docs/performance.md, fifth round. */
-  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.8, 1.05) != CV_SUCCESS) goto cvode_fail;
+  if (roll_cvode_create(roll) != 0) {
+    st = RS_ERROR(RS_ERR_INTERNAL, "cannot set up CVODE for the roll: %s",
+                  roll->cvode_msg[0] ? roll->cvode_msg : "allocation failed");
+    rs_roll_destroy(&roll);
+    return st;
+  }
   *out = roll;
   return RS_OK;
-
-cvode_fail:
-  st = RS_ERROR(RS_ERR_INTERNAL, "cannot set up CVODE for the roll: %s",
-                roll->cvode_msg[0] ? roll->cvode_msg : "allocation failed");
-  rs_roll_destroy(&roll);
-  return st;
 }
 
 rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)

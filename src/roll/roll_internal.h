@@ -167,6 +167,13 @@ struct rs_roll {
   int geom_j;            /* the interval the layer coordinate was last found in */
   double kc0;            /* the core condition of the film-free roll */
   double *node_r, *inv_pitch, *pitch_sq; /* [cap + 1]; NULL without air */
+  /* Scratch [cap + 1] each, owned by no component: a function may use it for values that
+   * do not survive the call (the drift profile's coefficients, roll_profile.c; the moduli
+   * a little above the pressures of nodes that join the lazy zone, roll_lazy.c). No other
+   * array of the roll is ever used as scratch. */
+  struct {
+    double *u, *d, *q, *c, *a, *b;
+  } scratch;
 };
 
 /* node j's radius (m): r_c + j t, or with entrained air its real radius */

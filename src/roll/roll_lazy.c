@@ -81,8 +81,7 @@ static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P
 enum { RS_FREEZE_BLOCK = 256 };
 
 /* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
- * current, and the reference's shape covers them. Uses dsr and dsh as scratch (free
- * between an integration's start and its increment). */
+ * current, and the reference's shape covers them. */
 void rsi_roll_lazy_freeze(rs_roll *roll, int to)
 {
   const int F = roll->lazy_top;
@@ -95,7 +94,7 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
   if (to <= F) return;
   const double C = roll->lazy_c, aC = fabs(C);
   const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
-  double *restrict Pp = roll->dsr, *restrict Ep = roll->dsh;
+  double *restrict Pp = roll->scratch.c, *restrict Ep = roll->scratch.q;
   double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
   const double *restrict P = roll->P_node, *restrict L = roll->L;
   double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;

@@ -132,16 +132,15 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
   const double *restrict E = roll->Er_ref, *restrict P = roll->P_node, Eth = roll->p.E_theta;
-  /* scratch, free once a reference's increment is committed, above the lazy nodes: u
-   * (block_share) and d (scan_eps); the moduli a little above P, then the coefficients
-   * (P_mean, dsh, lazy_a, lazy_b) */
-  double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
-  double *Q = roll->dsh, *Cf = roll->P_mean; /* the arrays Pp and Ep were: not restrict */
-  double *restrict A = roll->lazy_a, *restrict B = roll->lazy_b;
+  /* the roll's scratch: u and d; the moduli a little above P, then in the same arrays the
+   * coefficients Q and Cf (so not restrict), A and B */
+  double *restrict u = roll->scratch.u, *restrict d = roll->scratch.d;
+  double *Q = roll->scratch.q, *Cf = roll->scratch.c;
+  double *restrict A = roll->scratch.a, *restrict B = roll->scratch.b;
   const int lo = from > 0 ? from - 1 : 0; /* the first layer's slopes read its neighbour */
   for (int b0 = lo; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
-    double *Pp = roll->P_mean, *Ep = roll->dsh;
+    double *Pp = Cf, *Ep = Q;
     /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
     for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
     rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
