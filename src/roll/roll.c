@@ -25,8 +25,8 @@
  * E_r is frozen at the pressures before the increment (Hakiel). The pressures live at the
  * nodes r_0 = r_c (core) and r_j = s_j (outer radius of layer j); between nodes ln g^2 is a
  * C^1 cubic Hermite (centred slopes). A continuous, once-differentiable g keeps BDF at high
- * order instead of shrinking its steps at every layer boundary (measured: 30% fewer steps
- * than linear interpolation), g^2 stays positive, and a constant E_r gives a constant g.
+ * order instead of shrinking its steps at every layer boundary (fewer steps than linear
+ * interpolation: docs/performance.md), g^2 stays positive, and a constant E_r gives a constant g.
  *
  * A lumped increment of m layers (numerics.layers_per_step) is the sum of its m single-layer
  * increments, all read off one integration: y comes from the core, so layer i's load can be
@@ -282,6 +282,14 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;
+#ifdef RS_ROLL_CHECKS
+  /* the state's invariants (roll_check.c); those over the nodes at every increment of a
+   * roll up to 2048 layers, then every 256th: O(n) each */
+  const char *why = rsi_roll_check_invariants(roll, roll->n <= 2048 || roll->n % 256 == 0);
+  if (why)
+    return RS_ERROR(RS_ERR_INTERNAL, "the roll's state broke an invariant at layer %d: %s",
+                    roll->n, why);
+#endif
   return RS_OK;
 }
 

@@ -406,8 +406,7 @@ rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
  * that, for g ~ 60, is of the size of the hoop stress itself deep in the roll. Layers
  * 1..k (arrays 0..k-1); node 0 is the core. Each layer on its own (no running sum), so
  * that the loop vectorises; derived only when the hoop stresses are read (the reel reads
- * them at history stages and at the end: a pass over every layer at every increment was
- * 4.5 % of the 6054-layer reel). */
+ * them at history stages and at the end), not at every increment. */
 void rsi_roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
                                 double rc, double t, int k)
 {

@@ -30,10 +30,9 @@ enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
 enum { RS_REF_DEEP_MAX = 4 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
- * instead of when a step first looks (rsi_roll_lg2_range: on the 6054-layer reel, ~300 nodes
- * and 40 steps an increment, 1.9 % fewer instructions and none of the right-hand side's
- * waiting on log(); on a 20,000-layer film break-even in instructions at 512 - 1024
- * nodes, +1.1 % at 2048; docs/performance.md) */
+ * instead of when a step first looks (rsi_roll_lg2_range: the right-hand side then never
+ * waits on log(); beyond ~1024 nodes the pass forms more than the steps look at:
+ * docs/performance.md) */
 enum { RS_LG2_RANGE_MAX = 1024 };
 
 /* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
@@ -278,6 +277,9 @@ double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
 rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+/* roll_check.c */
+const char *rsi_roll_check_invariants(const rs_roll *roll, int full);
 
 /* roll_layer.c */
 rs_status rsi_roll_add_one(rs_roll *roll, double T0);

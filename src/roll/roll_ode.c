@@ -272,9 +272,8 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
 
 /* The moduli of the nodes 0..k are the integration's from now: a new epoch (ln g^2 and the
  * interpolation's caches are formed again: over a long integration only where CVODE's
- * steps look, a few nodes per step, ~1/4 of the nodes of a long roll, since a log at every
- * node at every increment was 7 % of the engine's time; over a short one in a vectorised
- * pass, rsi_roll_lg2_range) */
+ * steps look, a few nodes per step, rather than a log at every node at every increment;
+ * over a short one in a vectorised pass, rsi_roll_lg2_range) */
 static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
 {
   if (st) return st;

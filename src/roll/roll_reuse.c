@@ -11,14 +11,12 @@
 
 /* Integrations from the core between two references. Accuracy does not need a refresh
  * (rsi_roll_reuse_start bounds the error whatever the reference's age); cost does: the start
- * node sinks as the modulus drifts, and an integration from the core costs ~150 steps and
- * passes over the whole roll against ~30 steps over the nodes above the start. With the
- * first-order search a reference serves 32 increments (16, 32 or 64 give the same steps
- * within 0.5 %: docs/performance.md). With the deep part corrected for the drift the start
- * sinks with the drift's square, so a reference serves longer, the longer the roll (its
- * cost grows with it): n/400 increments, 32 to 512 (the 100,633-layer film, alternating:
- * n/100 5.2 s, n/200 4.9 s, n/400 4.8 s, n/800 5.0 s, n/1600 6.2 s; never 14.8 s; the
- * 6054-layer reel: the same time from 32 to 128, docs/performance.md). */
+ * node sinks as the modulus drifts, and an integration from the core crosses the whole
+ * roll where a partial one crosses the nodes above the start. With the first-order search
+ * a reference serves 32 increments. With the deep part corrected for the drift the start
+ * sinks with the drift's square, so a reference serves longer, the longer the roll (an
+ * integration from the core costs more): n/400 increments, 32 to 512 (the choice measured
+ * in docs/performance.md). */
 static int roll_refresh_age(const rs_roll *roll)
 {
   if (!roll->prof_on || roll->prof_top < 1) return 32; /* the first-order search */
@@ -168,9 +166,12 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
 }
 
 /* The first layer's load on the core (an integration of no length): a reference of the
- * core node alone, no shape, no profile yet */
+ * core node alone (too short to start from: rsi_roll_reuse_start), no shape, no profile
+ * yet */
 void rsi_roll_reference_core(rs_roll *roll)
 {
+  roll->Er_ref[0] = roll->Er[0];
+  roll->ref_top = 0;
   roll->start = 0;
   roll->start_C = 0.0;
   roll->prof_top = -1;

@@ -2,9 +2,8 @@
  *
  * Why: the roll engine's state has two components, so each of CVODE's vector operations
  * does two flops, and the serial implementation's generality (special cases of the
- * coefficients, loops, length checks) costs far more than the flops: callgrind measured
- * N_VLinearSum_Serial alone at ~130 instructions a call and a quarter of the engine's
- * instructions (docs/performance.md). SUNDIALS lets a program supply its own vector
+ * coefficients, loops, length checks) costs far more than the flops (docs/performance.md).
+ * SUNDIALS lets a program supply its own vector
  * operations through the N_Vector ops table; these compute the same quantities as the
  * serial ones (a x + b y is evaluated as written, so where the serial code factors
  * c (x + y) the last bit may differ). Everything else stays SUNDIALS' own.

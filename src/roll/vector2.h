@@ -26,8 +26,7 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
  * (a setup every 20 steps, after a large change of gamma or a failure) and resets its
  * convergence-rate estimate at each, which its convergence test needs. Without a
  * matrix-based linear solver CVODE resets the estimate at every step, and the corrector
- * takes two iterations where one does (measured: 2.1 right-hand sides a step against
- * 1.6). 0, or -1 if CVODE refuses. */
+ * takes two iterations where one does. 0, or -1 if CVODE refuses. */
 int rs_roll_newton2_attach(SUNNonlinearSolver S);
 /* Declares the right-hand side to be f(t, w, L) = (a(t) + p w + q w^2, b(t) + w): the
  * solver then solves each corrector equation exactly (a quadratic in w, one right-hand
