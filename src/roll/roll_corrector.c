@@ -95,7 +95,7 @@ int rsi_roll_corrector_selftest(int sabotage_it, double *error)
   NV_DATA_S(y)[0] = 0.0;
   NV_DATA_S(y)[1] = 0.0;
   cv = CVodeCreate(CV_BDF, ctx);
-  nls = cv ? rs_roll_newton2_create(ctx, y, cv, rsi_roll_jac, NULL) : NULL;
+  nls = cv ? rs_roll_newton2_create(ctx, y, cv, -2.0, -1.0) : NULL;
   if (!nls || CVodeInit(cv, st_rhs, 0.0, y) != CV_SUCCESS ||
       CVodeSStolerances(cv, ST_RTOL, 1e-2 * ST_RTOL) != CV_SUCCESS)
     goto done;
@@ -106,7 +106,6 @@ int rsi_roll_corrector_selftest(int sabotage_it, double *error)
     nls->ops->solve = sab_solve;
   }
   if (rs_roll_newton2_attach(nls) != 0) goto done;
-  rs_roll_newton2_set_quadratic(nls, -2.0, -1.0);
   sunrealtype t = 0.0;
   if (CVodeSetMaxNumSteps(cv, 5000) == CV_SUCCESS && CVode(cv, ST_X1, y, &t, CV_NORMAL) == CV_SUCCESS) {
     const double c = atanh(1.0 / ST_G), u = ST_G * tanh(ST_G * ST_X1 + c);
@@ -161,9 +160,8 @@ int rsi_roll_corrector_attach(rs_roll *roll)
   if (rsi_roll_corrector_exact_trusted()) {
     /* the corrector equations solved exactly (vector2.c): rsi_roll_rhs is
      * (g^2(x) - 1 - 2w - w^2, w), quadratic in w with g^2 independent of the state */
-    roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, rsi_roll_jac, roll);
+    roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, -2.0, -1.0);
     if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) return -1;
-    rs_roll_newton2_set_quadratic(roll->NLS, -2.0, -1.0);
     return 0;
   }
   /* CVODE's own Newton solver (made by CVodeInit) with a dense linear solver */

@@ -6,7 +6,6 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
-#include "roll/vector2.h"
 
 /* The state (w, L) at x with its first two x-derivatives, from the equations:
  *   w' = g^2 - 1 - 2w - w^2,   w'' = (g^2)' - 2 (1 + w) w',   L' = w,   L'' = w'. */
@@ -341,15 +340,14 @@ static rs_status roll_cvode_steps(rs_roll *roll, int first, int k, roll_jet prev
 }
 
 /* the solver's counters after an integration of `steps` steps (CVODE's restart at every
- * CVodeReInit; the exact corrector's Jacobians count across increments, the fallback
- * counts its own: roll_corrector.c) */
+ * CVodeReInit; the exact corrector forms no Jacobian, the fallback counts its own:
+ * roll_corrector.c) */
 static void roll_count(rs_roll *roll, long steps)
 {
   long nfe = 0;
   CVodeGetNumRhsEvals(roll->cvode, &nfe);
   roll->stats.cvode_steps += steps;
   roll->stats.rhs_evals += nfe;
-  if (roll->NLS) roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS);
 }
 
 /* The start node's (w, L) back to the reference's once the increment corrected there is
