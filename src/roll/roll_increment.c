@@ -137,29 +137,13 @@ static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
   return m;
 }
 
-/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
- * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
- * for Hakiel, the outer radius of the layer beneath it by default), and its sub-increment
- * is exactly
- *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
- * because y, integrated from the core, does not depend on where the load is applied.
- * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
- * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
- * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
- * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
- * at or above it: that layer is part of the loaded body). With mean != NULL also the mean, over the
- * sub-increments that reach a node, of the pressure the block has added there before each:
- *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
- * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
- * For m = 1 these are the single-layer formulas of Hakiel accretion, operation for
- * operation. */
-void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+/* The block's own nodes bottom..bottom + m - 1 (rsi_roll_block_increment): dsr, dsh and,
+ * with mean, the mean pressure seen; returns S (the sum at the block's bottom), *V the
+ * mean's sum there */
+static double roll_block_nodes(rs_roll *roll, int bottom, int m, const double *T0, double *mean,
+                               double *Vout)
 {
   const double *L = roll->L, *w = roll->w;
-  /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
-   * of the layer beneath it (then that layer's hoop stress takes the load too, and the new
-   * outermost layer's outer face stays traction free) */
-  const int shift = roll->shift, bottom = k_old + 1 - shift;
   double S = 0.0, V = 0.0; /* V_b = sum_{i >= b} (m - 1 - i) T_i/s_i exp(L_b - L(s_i)) */
   for (int b = m - 1; b >= 0; --b) {
     const int j = bottom + b;
@@ -173,36 +157,89 @@ void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0,
       mean[j] = V / (m - b);
     }
   }
+  *Vout = V;
+  return S;
+}
+
+/* A reference's increment (an integration from the core): its shape kept, e = dsr below the
+ * block and 1 at its bottom node (a later start there still reads the shape), with its
+ * bound (the decays' own, e_bound, where only shape_e counts); its profile built for the
+ * drift to come (roll_profile.c), in use once the increment, -S e below the block, is
+ * committed */
+static void roll_reference_shape(rs_roll *roll, int bottom, double S, double e_bound, int block)
+{
+  const double *w = roll->w;
+  memcpy(roll->shape_e, roll->dsr, (size_t)bottom * sizeof(double));
+  roll->shape_e[bottom] = 1.0;
+  if (!roll->shift)
+    for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+  roll->shape_top = bottom;
+  roll->shape_max = roll->shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
+  roll->prof_top = -1;
+  roll->prof_next = -1;
+  if (roll->prof_on && !block) {
+    rsi_roll_wstep_store(roll, bottom);
+    roll->prof_next = rsi_roll_profile_build(roll, 0, bottom);
+    roll->ref_c_next = -S;
+  }
+}
+
+/* The shape above a start lo follows this integration (e = dsr there), in the reference's
+ * scale, so that a later increment may start higher and still read its deep part as
+ * c x shape; not where that scale would overflow (then later starts stay below shape_top) */
+static void roll_shape_follow(rs_roll *roll, int lo, int bottom, double e_bound)
+{
+  const double *w = roll->w, *dsr = roll->dsr;
+  const double scale = roll->shape_e[lo] / dsr[lo];
+  if (!(scale < 1e200)) {
+    roll->shape_top = lo; /* above it the shape is stale */
+    return;
+  }
+  for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
+  roll->shape_e[bottom] = scale;
+  if (!roll->shift)
+    for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+  roll->shape_top = bottom;
+  roll->shape_max = roll->shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
+                                : roll_shape_bound(roll, lo, bottom, roll->shape_max);
+}
+
+/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
+ * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
+ * for Hakiel, the outer radius of the layer beneath it by default: then that layer's hoop
+ * stress takes the load too, and the new outermost layer's outer face stays traction
+ * free), and its sub-increment is exactly
+ *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
+ * because y, integrated from the core, does not depend on where the load is applied.
+ * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
+ * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
+ * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
+ * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
+ * at or above it: that layer is part of the loaded body). With mean != NULL also the mean,
+ * over the sub-increments that reach a node, of the pressure the block has added there
+ * before each:
+ *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
+ * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
+ * Below the block ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to the
+ * integration's start node lo, and below it c_deep times the reference's shape (deep_lo,
+ * c_deep, c2_deep; rsi_roll_commit). For m = 1 these are the single-layer formulas of
+ * Hakiel accretion, operation for operation. */
+void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+{
+  const double *w = roll->w;
+  const int shift = roll->shift, bottom = k_old + 1 - shift;
+  double V;
+  const double S = roll_block_nodes(roll, bottom, m, T0, mean, &V);
   if (shift) /* the outermost layer: no load above it */
     roll->dsr[k_old + m] = 0.0;
-  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
-   * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   const int j0 = roll->start;
   int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
   /* an increment computed node by node from the core adds to the stored values of nodes
    * that are lazy: their drift bound would not see it, so they are brought up to date */
   if (lo == 0 && roll->lazy_top > 0) rsi_roll_lazy_flush(roll, 0);
-  const double e_bound = roll_decays(L, dsr, lo, bottom);
-  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block, and its bottom
-                  * node, e = 1 there: a later start there still reads the shape) */
-    memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
-    roll->shape_e[bottom] = 1.0;
-    if (!shift)
-      for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-    roll->shape_top = bottom;
-    /* the decays' own bound where only shape_e counts (a pass over the roll saved) */
-    roll->shape_max = shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
-    /* the reference's first-order response to the drift to come (roll_profile.c); its own
-     * increment adds -S e below the block */
-    roll->prof_top = -1;
-    roll->prof_next = -1;
-    if (roll->prof_on && !mean) {
-      rsi_roll_wstep_store(roll, bottom);
-      roll->prof_next = rsi_roll_profile_build(roll, 0, bottom);
-      roll->ref_c_next = -S;
-    }
-  }
+  const double e_bound = roll_decays(roll->L, dsr, lo, bottom);
+  if (j0 == 0) roll_reference_shape(roll, bottom, S, e_bound, mean != NULL);
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
   roll->c2_deep = 0.0;
@@ -219,23 +256,7 @@ void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0,
       roll->c_deep = -S;
     }
   }
-  if (lo > 0 && dsr[lo] > 1e-280) {
-    /* the shape above the start follows this integration, in the reference's scale (so that
-     * a later increment may start higher and still read its deep part as c x shape); not
-     * where that scale would overflow (then later starts stay below shape_top) */
-    const double scale = roll->shape_e[lo] / dsr[lo];
-    if (scale < 1e200) {
-      for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
-      roll->shape_e[bottom] = scale;
-      if (!shift)
-        for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-      roll->shape_top = bottom;
-      roll->shape_max = shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
-                              : roll_shape_bound(roll, lo, bottom, roll->shape_max);
-    } else {
-      roll->shape_top = lo; /* above it the shape is stale */
-    }
-  }
+  if (lo > 0 && dsr[lo] > 1e-280) roll_shape_follow(roll, lo, bottom, e_bound);
   if (mean) {
     for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
     const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
