@@ -50,6 +50,41 @@ typedef struct roll_g2_cubic {
   double y0, m0, c2, c3, g0;
 } roll_g2_cubic;
 
+/* The roll's state, by component: what each holds, the file that keeps it, and its
+ * invariants, which hold between increments (after rs_roll_create, and after every
+ * rs_roll_add_layers that returned RS_OK; rs_roll_restore keeps them) and are checked by
+ * rsi_roll_check_invariants (roll_check.c) after every increment in builds with
+ * RS_ROLL_CHECKS and in test_roll_check:
+ *  - the roll (roll.c, roll_state.c): p, kc, shift, n, core_sigma, sigma_r, sigma_theta,
+ *    hoop_stale. 0 <= n <= p.max_layers; shift is 1 exactly for RS_LOAD_BENEATH; the
+ *    stored stresses and core_sigma are finite.
+ *  - the nodes' modulus and g^2 between them (roll_ode.c): Er, lg2 and its epochs, g2c,
+ *    gx.., x_anchor, P_node. Er over the nodes an integration looks at is current.
+ *  - the integration (roll_integrate.c): w, L, wstep, xnode, the CVODE objects.
+ *    wstep_n <= wstep_cap.
+ *  - the increment (roll_increment.c, fused for one layer in roll_layer.c): block_share,
+ *    P_mean, dsr, dsh, deep_lo, c_deep, c2_deep: values of the last increment only.
+ *  - the reference solution (roll_reuse.c; rebased by roll_profile.c): Er_ref, scan_eps,
+ *    scan_L, ref_top, ref_age, start, last_start, ref_from, ref_deep.., start_C,
+ *    start_ref. -1 <= ref_top <= n and Er_ref > 0 over nodes 0..ref_top; 0 <= start <= n;
+ *    between increments ref_from = -1 and start_C = 0 (rsi_roll_start_release).
+ *  - the reference's shape (roll_increment.c, roll_layer.c; rebased by roll_profile.c):
+ *    shape_e, shape_h, shape_top, shape_max. -1 <= shape_top <= max_layers; over its nodes
+ *    0 <= shape_e <= shape_max (and |shape_h| <= shape_max with Hakiel's placement).
+ *  - the drift profile (roll_profile.c; put in use by the commit): prof_*, ref_c,
+ *    ref_c_next. A profile (prof_top >= 0) lies within the reference's nodes (prof_top <=
+ *    ref_top), |prof_L| <= prof_max, finite, over its nodes; between increments no
+ *    reference's profile waits (prof_next = -1).
+ *  - the lazy zone (roll_lazy.c; its scales moved by the commit): lazy_*, view_*. An empty
+ *    zone (lazy_top = 0) has lazy_c = lazy_c2 = 0; a zone lies within the nodes that existed
+ *    when its scale started (lazy_top <= lazy_limit <= n), is allowed (lazy_allowed) and
+ *    covered by the shape (lazy_top - 1 <= shape_top); over it lazy_a, lazy_b and scan_L
+ *    are prefix maxima (never decreasing up the roll).
+ *  - entrained air (roll_air.c): geom, geom_j, kc0, node_r, inv_pitch, pitch_sq.
+ *  - scratch (below): no value survives a call.
+ * The commit of an increment (rsi_roll_commit, rsi_roll_add_one) moves the lazy zone's
+ * scales, the reference's drift scale ref_c and the profile's and shape's tops, as the
+ * increment it adds asks. */
 struct rs_roll {
   rs_roll_params p;
   double kc;            /* core condition r y'/y at r_c */
