@@ -368,6 +368,26 @@ rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double 
   return RS_OK;
 }
 
+/* The deep part of an increment committed: below node lo (> 0) it is c x shape + c2 x shape
+ * x prof_L (rsi_roll_block_increment), which the lazy nodes take in their common scales
+ * and the nodes from the lazy frontier (or 1) to lo explicitly; the core takes c x shape_e
+ * there (prof_L is 0 at the core), or ds0 for an increment computed node by node (lo = 0).
+ * Returns the lowest node with its own stored value (1, or the lazy frontier). Shared by
+ * rsi_roll_commit and rsi_roll_add_one: one formula. */
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0)
+{
+  int j0 = 1;
+  if (lo > 0 && roll->lazy_top > 0) {
+    roll->lazy_c += c;
+    roll->lazy_c2 += c2;
+    j0 = roll->lazy_top;
+  } else {
+    roll->core_sigma += lo > 0 ? c * roll->shape_e[0] : ds0;
+  }
+  rsi_roll_shape_add(roll, j0, lo, c, c2);
+  return j0;
+}
+
 /* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
  * from their own share. */
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
@@ -381,16 +401,9 @@ rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
    * the lazy nodes take it in their common scale */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
-  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
+  const double *restrict sh = roll->shape_h;
   double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
-  int j0 = 1;
-  if (lo > 0 && roll->lazy_top > 0) {
-    roll->lazy_c += c;
-    roll->lazy_c2 += c2;
-    j0 = roll->lazy_top;
-  } else {
-    roll->core_sigma += lo > 0 ? c * se[0] : ds[0]; /* prof_L is 0 at the core */
-  }
+  const int j0 = rsi_roll_commit_deep(roll, lo, c, c2, ds[0]);
   /* the pressure the reference-valued nodes carry since the reference, -ref_c e (first
    * order): a reference's own increment is -S e below its block (its profile in use from
    * now); an increment that was not c x shape below its start ends the profile's use */
@@ -403,7 +416,6 @@ rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
   }
   roll->prof_next = -1;
   const int j1 = lo > 1 ? lo : 1;
-  rsi_roll_shape_add(roll, j0, lo, c, c2);
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
   if (roll->shift) { /* the hoop stresses follow from the radial ones */

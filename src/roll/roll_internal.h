@@ -311,6 +311,7 @@ void rsi_roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_
 double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0);
 rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
 
 /* roll_check.c */

@@ -64,15 +64,7 @@ rs_status rsi_roll_add_one(rs_roll *roll, double T0)
   roll->ref_c += c;
   /* below the start: c times the shape, plus c2 times the shape's correction (the lazy
    * nodes in their common scales) */
-  int j0 = 1;
-  if (roll->lazy_top > 0) {
-    roll->lazy_c += c;
-    roll->lazy_c2 += c2;
-    j0 = roll->lazy_top;
-  } else {
-    roll->core_sigma += c * se[0]; /* prof_L is 0 at the core */
-  }
-  rsi_roll_shape_add(roll, j0, lo, c, c2);
+  rsi_roll_commit_deep(roll, lo, c, c2, 0.0);
   /* the shape above the start follows this integration, in the reference's scale, unless
    * that scale would overflow (rsi_roll_block_increment) */
   const double scale = e_lo > 1e-280 ? se[lo] / e_lo : 0.0;
