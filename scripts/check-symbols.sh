@@ -8,8 +8,7 @@
 #   scripts/check-symbols.sh LIBRARY...     (.a or .o: the first rule; .so: both)
 set -uo pipefail
 [ $# -gt 0 ] || { echo "usage: check-symbols.sh LIBRARY..." >&2; exit 2; }
-# src/roll's functions are being renamed roll_* -> rsi_roll_* (issue 30); drop this then.
-allow='^(rs_|rsi_|roll_)'
+allow='^(rs_|rsi_)'
 fail=0
 for lib in "$@"; do
   case "$lib" in

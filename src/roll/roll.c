@@ -25,8 +25,8 @@
  * E_r is frozen at the pressures before the increment (Hakiel). The pressures live at the
  * nodes r_0 = r_c (core) and r_j = s_j (outer radius of layer j); between nodes ln g^2 is a
  * C^1 cubic Hermite (centred slopes). A continuous, once-differentiable g keeps BDF at high
- * order instead of shrinking its steps at every layer boundary (measured: 30% fewer steps
- * than linear interpolation), g^2 stays positive, and a constant E_r gives a constant g.
+ * order instead of shrinking its steps at every layer boundary (fewer steps than linear
+ * interpolation: docs/performance.md), g^2 stays positive, and a constant E_r gives a constant g.
  *
  * A lumped increment of m layers (numerics.layers_per_step) is the sum of its m single-layer
  * increments, all read off one integration: y comes from the core, so layer i's load can be
@@ -42,7 +42,7 @@
  * An increment need not be integrated from the core: below the newest layers the modulus
  * barely changes, so it keeps the deep part of the last integration from the core and
  * integrates from a start node up, the error this adds held to RS_ACCURACY_PER_RTOL x rtol x
- * T0/s (roll_reuse_start; numerics.reuse; docs/roll-model.md). */
+ * T0/s (rsi_roll_reuse_start; numerics.reuse; docs/roll-model.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,7 +72,7 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->wstep);
   free(roll->L);
   free(roll->xnode);
-  roll_air_free(roll);
+  rsi_roll_air_free(roll);
   free(roll->block_share);
   free(roll->P_node);
   free(roll->P_mean);
@@ -89,6 +89,12 @@ void rs_roll_destroy(rs_roll **rollp)
   free(roll->view_r);
   free(roll->view_theta);
   free(roll->lazy_b);
+  free(roll->scratch.u);
+  free(roll->scratch.d);
+  free(roll->scratch.q);
+  free(roll->scratch.c);
+  free(roll->scratch.a);
+  free(roll->scratch.b);
   free(roll);
   *rollp = NULL;
 }
@@ -121,6 +127,61 @@ static rs_status roll_check_params(const rs_roll_params *p)
   return RS_OK;
 }
 
+/* The roll's arrays for params->max_layers layers (nodes 0..cap), zeroed; 0 when one could
+ * not be allocated */
+static int roll_alloc_arrays(rs_roll *roll, size_t cap)
+{
+  double **node_arrays[] = {
+      &roll->Er,      &roll->lg2,     &roll->w,       &roll->L,       &roll->xnode,
+      &roll->block_share, &roll->P_node, &roll->P_mean, &roll->dsr,  &roll->dsh,
+      &roll->Er_ref,  &roll->scan_eps, &roll->scan_L, &roll->shape_e, &roll->shape_h,
+      &roll->prof_w,  &roll->prof_L,  &roll->lazy_a,  &roll->lazy_b,  &roll->scratch.u,
+      &roll->scratch.d, &roll->scratch.q, &roll->scratch.c, &roll->scratch.a, &roll->scratch.b};
+  int ok = 1;
+  for (size_t i = 0; i < sizeof node_arrays / sizeof *node_arrays; ++i)
+    ok &= (*node_arrays[i] = calloc(cap + 1, sizeof(double))) != NULL;
+  double **layer_arrays[] = {&roll->sigma_r, &roll->sigma_theta, &roll->view_r, &roll->view_theta};
+  for (size_t i = 0; i < sizeof layer_arrays / sizeof *layer_arrays; ++i)
+    ok &= (*layer_arrays[i] = calloc(cap, sizeof(double))) != NULL;
+  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
+  return ok && roll->lg2_epoch;
+}
+
+/* CVODE for the roll: BDF on the 2-vector (w, L) with its fused and specialised
+ * operations (vector2.c), the engine's right-hand side and error weights, the exact
+ * corrector (roll_corrector.c); 0 on success */
+static int roll_cvode_create(rs_roll *roll)
+{
+  const rs_roll_params *params = &roll->p;
+  if (rs_sundials_context_create(&roll->sunctx) != 0) return -1;
+  roll->y = N_VNew_Serial(2, roll->sunctx);
+  if (!roll->y) return -1;
+  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
+  if (N_VEnableFusedOps_Serial(roll->y, SUNTRUE) != 0) return -1;
+  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
+  if (rs_roll_vector2_specialise(roll->y) != 0) return -1;
+  N_VConst(0.0, roll->y);
+  roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
+  if (!roll->cvode) return -1;
+  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) return -1;
+  if (CVodeInit(roll->cvode, rsi_roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS)
+    return -1;
+  if (CVodeWFtolerances(roll->cvode, rsi_roll_ewt) != CV_SUCCESS) return -1;
+  if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) return -1;
+  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
+  if (rsi_roll_corrector_attach(roll) != 0) return -1;
+  /* one CVode call = one step here; the per-increment budget is counted by the engine */
+  if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) return -1;
+  /* CVODE keeps its step (and its order) while the step it could take is within a band of
+   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
+   * test. Near the surface, where every step must be ~10 % shorter than the last, one step
+   * in five failed. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
+   * on the way up from a restart in the smooth interior, where a partial integration starts
+   * (docs/performance.md has the measurements). */
+  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.8, 1.05) != CV_SUCCESS) return -1;
+  return 0;
+}
+
 rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
 {
   *out = NULL;
@@ -137,88 +198,31 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   roll->lg2_hi = -1; /* no range yet */
   roll->kc = (isinf(params->core_stiffness) ? 0.0 : params->E_theta / params->core_stiffness) +
              params->nu_rtheta - 1.0;
-  size_t cap = (size_t)params->max_layers;
-  roll->sigma_r = calloc(cap, sizeof(double));
-  roll->sigma_theta = calloc(cap, sizeof(double));
-  roll->Er = calloc(cap + 1, sizeof(double));
-  roll->lg2 = calloc(cap + 1, sizeof(double));
-  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
-  roll->w = calloc(cap + 1, sizeof(double));
-  roll->L = calloc(cap + 1, sizeof(double));
-  roll->xnode = calloc(cap + 1, sizeof(double));
-  roll->block_share = calloc(cap + 1, sizeof(double));
-  roll->P_node = calloc(cap + 1, sizeof(double));
-  roll->P_mean = calloc(cap + 1, sizeof(double));
-  roll->dsr = calloc(cap + 1, sizeof(double));
-  roll->dsh = calloc(cap + 1, sizeof(double));
-  roll->Er_ref = calloc(cap + 1, sizeof(double));
-  roll->scan_eps = calloc(cap + 1, sizeof(double));
-  roll->scan_L = calloc(cap + 1, sizeof(double));
-  roll->shape_e = calloc(cap + 1, sizeof(double));
-  roll->shape_h = calloc(cap + 1, sizeof(double));
-  roll->prof_w = calloc(cap + 1, sizeof(double));
-  roll->prof_L = calloc(cap + 1, sizeof(double));
-  roll->lazy_a = calloc(cap + 1, sizeof(double));
-  roll->lazy_b = calloc(cap + 1, sizeof(double));
-  roll->view_r = calloc(cap, sizeof(double));
-  roll->view_theta = calloc(cap, sizeof(double));
   roll->shape_top = -1;
   roll->ref_top = -1;
   roll->prof_top = -1;
   roll->prof_next = -1;
   roll->ref_from = -1;
   roll->ref_deep_max = RS_REF_DEEP_MAX;
-  roll->lazy_allowed = roll_lazy_allowed(&roll->p);
-  if (!roll->sigma_r || !roll->sigma_theta || !roll->Er || !roll->lg2 || !roll->lg2_epoch ||
-      !roll->w || !roll->L || !roll->xnode || !roll->block_share || !roll->P_node ||
-      !roll->P_mean || !roll->dsr || !roll->dsh || !roll->Er_ref || !roll->scan_eps ||
-      !roll->scan_L || !roll->shape_e || !roll->shape_h || !roll->prof_w || !roll->prof_L ||
-      !roll->lazy_a || !roll->lazy_b ||
-      !roll->view_r || !roll->view_theta) {
+  roll->lazy_allowed = rsi_roll_lazy_allowed(&roll->p);
+  const size_t cap = (size_t)params->max_layers;
+  if (!roll_alloc_arrays(roll, cap)) {
     rs_roll_destroy(&roll);
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", params->max_layers);
   }
-
   for (size_t j = 0; j <= cap; ++j) roll->xnode[j] = log(params->core_radius + j * params->caliper);
-  if ((st = roll_air_alloc(roll))) {
+  if ((st = rsi_roll_air_alloc(roll))) {
     rs_roll_destroy(&roll);
     return st;
   }
-
-  if (rs_sundials_context_create(&roll->sunctx) != 0) goto cvode_fail;
-  roll->y = N_VNew_Serial(2, roll->sunctx);
-  if (!roll->y) goto cvode_fail;
-  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
-  if (N_VEnableFusedOps_Serial(roll->y, SUNTRUE) != 0) goto cvode_fail;
-  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
-  if (rs_roll_vector2_specialise(roll->y) != 0) goto cvode_fail;
-  N_VConst(0.0, roll->y);
-  roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
-  if (!roll->cvode) goto cvode_fail;
-  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) goto cvode_fail;
-  if (CVodeInit(roll->cvode, roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeWFtolerances(roll->cvode, roll_ewt) != CV_SUCCESS) goto cvode_fail;
-  if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) goto cvode_fail;
-  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
-  if (roll_corrector_attach(roll) != 0) goto cvode_fail;
-  /* one CVode call = one step here; the per-increment budget is counted by the engine */
-  if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) goto cvode_fail;
-  /* CVODE keeps its step (and its order) while the step it could take is within a band of
-   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
-   * test. Near the surface, where every step must be ~10 % shorter than the last, that
-   * made one step in five fail (~20 a roll crossing). [0.8, 1.05]: it shrinks a step before
-   * it fails (1.85 -> 1.47 right-hand sides a step, 8 % fewer instructions), and moves up
-   * to order 5 on the way up from a restart in the smooth interior, where a partial
-   * integration starts (and 5 % fewer steps from the core). docs/performance.md, fifth round. */
-  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.8, 1.05) != CV_SUCCESS) goto cvode_fail;
+  if (roll_cvode_create(roll) != 0) {
+    st = RS_ERROR(RS_ERR_INTERNAL, "cannot set up CVODE for the roll: %s",
+                  roll->cvode_msg[0] ? roll->cvode_msg : "allocation failed");
+    rs_roll_destroy(&roll);
+    return st;
+  }
   *out = roll;
   return RS_OK;
-
-cvode_fail:
-  st = RS_ERROR(RS_ERR_INTERNAL, "cannot set up CVODE for the roll: %s",
-                roll->cvode_msg[0] ? roll->cvode_msg : "allocation failed");
-  rs_roll_destroy(&roll);
-  return st;
 }
 
 rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
@@ -242,43 +246,51 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   roll->w_lazy = m == 1 && roll->shift;
   /* the deep part corrected for the drift (roll_profile.c): one layer and its load beneath */
   roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
-  if (m > 1) roll_lazy_flush(roll, 0);
+  if (m > 1) rsi_roll_lazy_flush(roll, 0);
 
   /* with entrained air, the new nodes at their real radii (roll_air.c) */
-  rs_status st = roll_air_nodes(roll, k_old, k);
+  rs_status st = rsi_roll_air_nodes(roll, k_old, k);
   if (st) return st;
   /* the predictor: the modulus frozen at the pressures before the increment (Hakiel) */
-  st = roll_set_modulus_stress(roll, top);
-  if (st == RS_OK) st = roll_integrate(roll, top);
+  st = rsi_roll_set_modulus_stress(roll, top);
+  if (st == RS_OK) st = rsi_roll_integrate(roll, top);
   if (st) {
-    roll_start_release(roll, st);
+    rsi_roll_start_release(roll, st);
     return st;
   }
 
   /* for one layer the two schemes are the same increment: one code path, bit for bit */
   if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
-    st = roll_commit_frozen(roll, m, T0, total);
-  } else if (m == 1) { /* roll_block_increment and roll_commit, fused where it can */
-    st = roll_add_one(roll, T0[0]);
+    st = rsi_roll_commit_frozen(roll, m, T0, total);
+  } else if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
+    st = rsi_roll_add_one(roll, T0[0]);
   } else {
-    roll_block_increment(roll, k_old, m, T0, roll->P_mean);
+    rsi_roll_block_increment(roll, k_old, m, T0, roll->P_mean);
     /* the corrector: each node's modulus at the mean pressure the m single-layer
      * increments would have seen there (the pressure before each, averaged over those
      * that reach the node), from the predictor's sub-increments; integrate again */
-    roll_gather_pressure(roll, top, roll->P_mean);
-    st = roll_set_modulus(roll, top);
-    if (st == RS_OK) st = roll_integrate(roll, top);
+    rsi_roll_gather_pressure(roll, top, roll->P_mean);
+    st = rsi_roll_set_modulus(roll, top);
+    if (st == RS_OK) st = rsi_roll_integrate(roll, top);
     if (st) {
-      roll_start_release(roll, st);
+      rsi_roll_start_release(roll, st);
       return st;
     }
-    roll_block_increment(roll, k_old, m, T0, NULL);
-    st = roll_commit(roll, m, T0);
+    rsi_roll_block_increment(roll, k_old, m, T0, NULL);
+    st = rsi_roll_commit(roll, m, T0);
   }
-  roll_start_release(roll, st);
+  rsi_roll_start_release(roll, st);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;
+#ifdef RS_ROLL_CHECKS
+  /* the state's invariants (roll_check.c); those over the nodes at every increment of a
+   * roll up to 2048 layers, then every 256th: O(n) each */
+  const char *why = rsi_roll_check_invariants(roll, roll->n <= 2048 || roll->n % 256 == 0);
+  if (why)
+    return RS_ERROR(RS_ERR_INTERNAL, "the roll's state broke an invariant at layer %d: %s",
+                    roll->n, why);
+#endif
   return RS_OK;
 }
 
@@ -296,32 +308,32 @@ double rs_roll_outer_radius(const rs_roll *roll)
 /* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
 const double *rs_roll_sigma_r(const rs_roll *roll)
 {
-  return roll->lazy_top > 0 ? roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
+  return roll->lazy_top > 0 ? rsi_roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
 }
 double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
 {
-  return j >= 0 && j < roll->n ? roll_lazy_sigma(roll, j + 1) : NAN;
+  return j >= 0 && j < roll->n ? rsi_roll_lazy_sigma(roll, j + 1) : NAN;
 }
 const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
   rs_roll *r = (rs_roll *)roll; /* caches of the state: logically const */
   if (roll->hoop_stale) { /* the turns' equilibrium, from the radial stresses in full */
     if (roll->geom)
-      roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+      rsi_roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
                                     roll->node_r, roll->p.caliper, roll->n);
     else
-      roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), roll_lazy_sigma(roll, 0),
+      rsi_roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
                                  roll->p.core_radius, roll->p.caliper, roll->n);
     r->hoop_stale = 0; /* until the next increment */
     return roll->sigma_theta;
   }
-  return roll->lazy_top > 0 && !roll->shift ? roll_lazy_view_theta(r) : roll->sigma_theta;
+  return roll->lazy_top > 0 && !roll->shift ? rsi_roll_lazy_view_theta(r) : roll->sigma_theta;
 }
-double rs_roll_core_pressure(const rs_roll *roll) { return -roll_lazy_sigma(roll, 0); }
+double rs_roll_core_pressure(const rs_roll *roll) { return -rsi_roll_lazy_sigma(roll, 0); }
 double rs_roll_surface_modulus(const rs_roll *roll)
 {
   const int node = roll->n - roll->shift; /* the outermost loaded interface */
-  double P = node >= 0 && roll->n > 0 ? -roll_lazy_sigma(roll, node) : 0.0;
+  double P = node >= 0 && roll->n > 0 ? -rsi_roll_lazy_sigma(roll, node) : 0.0;
   const double E = rs_radial_modulus(&roll->p.radial, P);
   /* entrained air: the film at that interface in series (roll_air.c) */
   return roll->p.air_film && node >= 0 ? rs_air_series_modulus(E, roll->p.caliper, roll->p.air_film[node], P,

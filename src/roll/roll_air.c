@@ -18,7 +18,7 @@
  * series modulus above, i.e. E_r' as the engine reads it is E (p / t)^2. The decay over one
  * layer, g Delta(ln r) = g p / r, then does not depend on p (g p = sqrt(E_theta t (t / E_r + c))):
  * the pitch enters through the radius only. */
-void roll_air_series(const rs_roll *roll, const double *restrict P, double *restrict E, int lo, int hi)
+void rsi_roll_air_series(const rs_roll *roll, const double *restrict P, double *restrict E, int lo, int hi)
 {
   const double *restrict h = roll->p.air_film;
   const double pa = roll->p.air_pressure, t = roll->p.caliper;
@@ -36,7 +36,7 @@ void roll_air_series(const rs_roll *roll, const double *restrict P, double *rest
 /* The arrays of the real radii, when the roll has films and the load beneath each layer
  * (Hakiel's placement keeps r_c + j t: its hoop stresses are point values of the
  * homogenised stack, not the web's) */
-rs_status roll_air_alloc(rs_roll *roll)
+rs_status rsi_roll_air_alloc(rs_roll *roll)
 {
   const rs_roll_params *p = &roll->p;
   roll->kc0 = roll->kc;
@@ -55,7 +55,7 @@ rs_status roll_air_alloc(rs_roll *roll)
   return RS_OK;
 }
 
-void roll_air_free(rs_roll *roll)
+void rsi_roll_air_free(rs_roll *roll)
 {
   free(roll->node_r);
   free(roll->inv_pitch);
@@ -67,7 +67,7 @@ void roll_air_free(rs_roll *roll)
  * with a film beneath it. The core condition r y'/y = kc at r_c comes from the hoop strain
  * u / r_c of the first turn: homogenised over its pitch p_0, E_theta and nu_rtheta both
  * scale by t / p_0, so kc + 1 = (E_theta / E_c + nu) t / p_0. */
-rs_status roll_air_nodes(rs_roll *roll, int k_old, int k)
+rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k)
 {
   if (!roll->node_r) return RS_OK;
   const double t = roll->p.caliper;
@@ -91,7 +91,7 @@ rs_status roll_air_nodes(rs_roll *roll, int k_old, int k)
 
 /* The layer coordinate of radius r: j + (r - r_j) / p_j in the interval [r_j, r_{j+1}] that
  * holds r, found from the last one (CVODE's calls cluster); 1/p_j in *inv_pitch */
-double roll_air_coord(rs_roll *roll, double r, double *inv_pitch)
+double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch)
 {
   const double *R = roll->node_r;
   const int last = roll->nodes_in_use - 1;

@@ -7,7 +7,7 @@
  * forms it itself after the solve (in cvNls: `if (!cv_acnrmcur) cv_acnrm = N_VWrmsNorm(...)`,
  * a flag only CVodeSetNonlinearSolver clears and only the convergence test sets). That is
  * CVODE's private behaviour (6.4 to 7.5 alike), not its documented interface, so it is
- * checked once per process, before the first roll is made (roll_corrector_selftest): the
+ * checked once per process, before the first roll is made (rsi_roll_corrector_selftest): the
  * engine's equation with a constant g, whose solution is closed form,
  *     w' = g^2 - 1 - 2w - w^2,  L' = w,   u = 1 + w = g tanh(g x + c),  c = atanh(u0/g),
  *     L = ln(cosh(g x + c)/cosh c) - x,
@@ -46,7 +46,7 @@ static int st_rhs(sunrealtype x, N_Vector yv, N_Vector fv, void *user)
   return 0;
 }
 
-/* The test hook's sabotage (roll_corrector_selftest(1)): the solver's solve wrapped so that
+/* The test hook's sabotage (rsi_roll_corrector_selftest(1)): the solver's solve wrapped so that
  * after its first solve it calls CVODE's convergence test once with a zero update. CVODE
  * then records a correction norm of 0 as formed by the test and never forms it again:
  * the failure the self-test is there to catch. Per thread (a test runs it alone). */
@@ -81,7 +81,7 @@ static int sab_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vector 
   return flag;
 }
 
-int roll_corrector_selftest(int sabotage_it, double *error)
+int rsi_roll_corrector_selftest(int sabotage_it, double *error)
 {
   double err = INFINITY;
   SUNContext ctx = NULL;
@@ -95,7 +95,7 @@ int roll_corrector_selftest(int sabotage_it, double *error)
   NV_DATA_S(y)[0] = 0.0;
   NV_DATA_S(y)[1] = 0.0;
   cv = CVodeCreate(CV_BDF, ctx);
-  nls = cv ? rs_roll_newton2_create(ctx, y, cv, roll_jac, NULL) : NULL;
+  nls = cv ? rs_roll_newton2_create(ctx, y, cv, -2.0, -1.0) : NULL;
   if (!nls || CVodeInit(cv, st_rhs, 0.0, y) != CV_SUCCESS ||
       CVodeSStolerances(cv, ST_RTOL, 1e-2 * ST_RTOL) != CV_SUCCESS)
     goto done;
@@ -106,7 +106,6 @@ int roll_corrector_selftest(int sabotage_it, double *error)
     nls->ops->solve = sab_solve;
   }
   if (rs_roll_newton2_attach(nls) != 0) goto done;
-  rs_roll_newton2_set_quadratic(nls, -2.0, -1.0);
   sunrealtype t = 0.0;
   if (CVodeSetMaxNumSteps(cv, 5000) == CV_SUCCESS && CVode(cv, ST_X1, y, &t, CV_NORMAL) == CV_SUCCESS) {
     const double c = atanh(1.0 / ST_G), u = ST_G * tanh(ST_G * ST_X1 + c);
@@ -129,17 +128,17 @@ static pthread_once_t selftest_once = PTHREAD_ONCE_INIT;
 static int selftest_passed;
 static atomic_int newton_forced;
 
-static void selftest_run(void) { selftest_passed = roll_corrector_selftest(0, NULL); }
+static void selftest_run(void) { selftest_passed = rsi_roll_corrector_selftest(0, NULL); }
 
-int roll_corrector_exact_trusted(void)
+int rsi_roll_corrector_exact_trusted(void)
 {
   pthread_once(&selftest_once, selftest_run);
   return selftest_passed && !atomic_load(&newton_forced);
 }
 
-void roll_corrector_force_newton(int on) { atomic_store(&newton_forced, on != 0); }
+void rsi_roll_corrector_force_newton(int on) { atomic_store(&newton_forced, on != 0); }
 
-/* CVODE's Jacobian function for the dense fallback: roll_jac's 2 x 2 in a SUNMatrix */
+/* CVODE's Jacobian function for the dense fallback: rsi_roll_jac's 2 x 2 in a SUNMatrix */
 static int jac_dense(sunrealtype x, N_Vector y, N_Vector fy, SUNMatrix J, void *user, N_Vector t1,
                      N_Vector t2, N_Vector t3)
 {
@@ -150,20 +149,19 @@ static int jac_dense(sunrealtype x, N_Vector y, N_Vector fy, SUNMatrix J, void *
   double Jl[2][2];
   rs_roll *roll = user;
   ++roll->stats.jac_evals;
-  if (roll_jac(x, NV_DATA_S(y), Jl, user) != 0) return 1;
+  if (rsi_roll_jac(x, NV_DATA_S(y), Jl, user) != 0) return 1;
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) SM_ELEMENT_D(J, i, j) = Jl[i][j];
   return 0;
 }
 
-int roll_corrector_attach(rs_roll *roll)
+int rsi_roll_corrector_attach(rs_roll *roll)
 {
-  if (roll_corrector_exact_trusted()) {
-    /* the corrector equations solved exactly (vector2.c): roll_rhs is
+  if (rsi_roll_corrector_exact_trusted()) {
+    /* the corrector equations solved exactly (vector2.c): rsi_roll_rhs is
      * (g^2(x) - 1 - 2w - w^2, w), quadratic in w with g^2 independent of the state */
-    roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, roll_jac, roll);
+    roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, -2.0, -1.0);
     if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) return -1;
-    rs_roll_newton2_set_quadratic(roll->NLS, -2.0, -1.0);
     return 0;
   }
   /* CVODE's own Newton solver (made by CVodeInit) with a dense linear solver */

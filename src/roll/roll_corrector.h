@@ -9,18 +9,18 @@ struct rs_roll;
  * trusts it, else CVODE's own Newton iteration with a dense linear solver
  * (roll->fallback_LS, roll->fallback_A; roll->NLS stays NULL). 0, or -1 if CVODE refuses
  * or memory runs out (the caller destroys the roll). */
-int roll_corrector_attach(struct rs_roll *roll);
+int rsi_roll_corrector_attach(struct rs_roll *roll);
 /* Whether the exact corrector may be used: its self-test, run once per process on first
  * call (thread-safe), passed, and no test forced the fallback */
-int roll_corrector_exact_trusted(void);
+int rsi_roll_corrector_exact_trusted(void);
 /* The self-test itself (every call runs it): 1 if the exact corrector meets the closed
  * form of its test equation to 1e-3 (relative; *error, if error is not NULL: the larger
  * of the two components' relative errors, infinite if CVODE failed). sabotage != 0 (tests
  * only) breaks what it checks (CVODE's correction norm left stale at 0): it must then
  * return 0. */
-int roll_corrector_selftest(int sabotage, double *error);
+int rsi_roll_corrector_selftest(int sabotage, double *error);
 /* Test hook: on != 0 makes rolls created from now on use the fallback, as if the
  * self-test had failed; 0 undoes it */
-void roll_corrector_force_newton(int on);
+void rsi_roll_corrector_force_newton(int on);
 
 #endif

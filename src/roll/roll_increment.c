@@ -32,7 +32,7 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
  * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
  * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
-void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
+void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
                      roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
@@ -98,12 +98,12 @@ void roll_decays_raw(const double *restrict L, double *restrict e, int lo, int t
   seg->s[0] = seg->s[1] * p1;
 }
 
-/* roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a
+/* rsi_roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a
  * bound of the e_j written (the segments' largest products times their scales) */
 static double roll_decays(const double *restrict L, double *restrict e, int lo, int top)
 {
   roll_segments seg;
-  roll_decays_raw(L, e, lo, top, &seg);
+  rsi_roll_decays_raw(L, e, lo, top, &seg);
   double bound = seg.count == 0 ? seg.M[0] : 0.0;
   for (int g = seg.count - 1; g >= 0; --g) {
     roll_scale_clear(e, seg.b[g], seg.b[g + 1], seg.s[g]);
@@ -116,7 +116,7 @@ static double roll_decays(const double *restrict L, double *restrict e, int lo, 
  * from the reference's shape, or, the start corrected for the drift (start_C, roll_profile.c),
  * c e exp(C (p_L - p_L(lo))), to first order c (1 - C p_L(lo)) e + c C e p_L: returns the
  * first scale, *c2 the second */
-double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
+double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
 {
   const double C = roll->start_C;
   if (C == 0.0) {
@@ -138,29 +138,13 @@ static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
   return m;
 }
 
-/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
- * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
- * for Hakiel, the outer radius of the layer beneath it by default), and its sub-increment
- * is exactly
- *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
- * because y, integrated from the core, does not depend on where the load is applied.
- * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
- * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
- * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
- * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
- * at or above it: that layer is part of the loaded body). With mean != NULL also the mean, over the
- * sub-increments that reach a node, of the pressure the block has added there before each:
- *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
- * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
- * For m = 1 these are the single-layer formulas of Hakiel accretion, operation for
- * operation. */
-void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+/* The block's own nodes bottom..bottom + m - 1 (rsi_roll_block_increment): dsr, dsh and,
+ * with mean, the mean pressure seen; returns S (the sum at the block's bottom), *V the
+ * mean's sum there */
+static double roll_block_nodes(rs_roll *roll, int bottom, int m, const double *T0, double *mean,
+                               double *Vout)
 {
   const double *L = roll->L, *w = roll->w;
-  /* block layer b loads node bottom + b: its own outer radius (Hakiel), or the outer radius
-   * of the layer beneath it (then that layer's hoop stress takes the load too, and the new
-   * outermost layer's outer face stays traction free) */
-  const int shift = roll->shift, bottom = k_old + 1 - shift;
   double S = 0.0, V = 0.0; /* V_b = sum_{i >= b} (m - 1 - i) T_i/s_i exp(L_b - L(s_i)) */
   for (int b = m - 1; b >= 0; --b) {
     const int j = bottom + b;
@@ -174,69 +158,106 @@ void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, dou
       mean[j] = V / (m - b);
     }
   }
+  *Vout = V;
+  return S;
+}
+
+/* A reference's increment (an integration from the core): its shape kept, e = dsr below the
+ * block and 1 at its bottom node (a later start there still reads the shape), with its
+ * bound (the decays' own, e_bound, where only shape_e counts); its profile built for the
+ * drift to come (roll_profile.c), in use once the increment, -S e below the block, is
+ * committed */
+static void roll_reference_shape(rs_roll *roll, int bottom, double S, double e_bound, int block)
+{
+  const double *w = roll->w;
+  memcpy(roll->shape_e, roll->dsr, (size_t)bottom * sizeof(double));
+  roll->shape_e[bottom] = 1.0;
+  if (!roll->shift)
+    for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+  roll->shape_top = bottom;
+  roll->shape_max = roll->shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
+  roll->prof_top = -1;
+  roll->prof_next = -1;
+  if (roll->prof_on && !block) {
+    rsi_roll_wstep_store(roll, bottom);
+    roll->prof_next = rsi_roll_profile_build(roll, 0, bottom);
+    roll->ref_c_next = -S;
+  }
+}
+
+/* The shape above a start lo follows this integration (e = dsr there), in the reference's
+ * scale, so that a later increment may start higher and still read its deep part as
+ * c x shape; not where that scale would overflow (then later starts stay below shape_top) */
+static void roll_shape_follow(rs_roll *roll, int lo, int bottom, double e_bound)
+{
+  const double *w = roll->w, *dsr = roll->dsr;
+  const double scale = roll->shape_e[lo] / dsr[lo];
+  if (!(scale < 1e200)) {
+    roll->shape_top = lo; /* above it the shape is stale */
+    return;
+  }
+  for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
+  roll->shape_e[bottom] = scale;
+  if (!roll->shift)
+    for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
+  roll->shape_top = bottom;
+  roll->shape_max = roll->shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
+                                : roll_shape_bound(roll, lo, bottom, roll->shape_max);
+}
+
+/* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
+ * Block layer i loads node q_i = k_old + 1 + i - shift (radius s_i: its own outer radius
+ * for Hakiel, the outer radius of the layer beneath it by default: then that layer's hoop
+ * stress takes the load too, and the new outermost layer's outer face stays traction
+ * free), and its sub-increment is exactly
+ *     ds_i(r_j) = -(T_i / s_i) exp(L_j - L(s_i)),     j <= q_i,
+ * because y, integrated from the core, does not depend on where the load is applied.
+ * Summed from the top of the block down, S_b = T_b/s_b + exp(L_b - L_{b+1}) S_{b+1}: every
+ * exponent is a decay over one layer or from a node to the bottom of the block, so nothing
+ * overflows. Fills dsr = sum of ds_i at each node, dsh = sum over the layers strictly above
+ * it of ds_i (1 + w) (= ds_i + r ds_i'; with the load beneath a layer, the sub-increments
+ * at or above it: that layer is part of the loaded body). With mean != NULL also the mean,
+ * over the sub-increments that reach a node, of the pressure the block has added there
+ * before each:
+ *     mean_j = (1/n_j) sum_i sum_{i' < i} -ds_i'(r_j)
+ * (n_j = m below the block, m - b at block node b, which exists from sub-increment b on).
+ * Below the block ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to the
+ * integration's start node lo, and below it c_deep times the reference's shape (deep_lo,
+ * c_deep, c2_deep; rsi_roll_commit). For m = 1 these are the single-layer formulas of
+ * Hakiel accretion, operation for operation. */
+void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean)
+{
+  const double *w = roll->w;
+  const int shift = roll->shift, bottom = k_old + 1 - shift;
+  double V;
+  const double S = roll_block_nodes(roll, bottom, m, T0, mean, &V);
   if (shift) /* the outermost layer: no load above it */
     roll->dsr[k_old + m] = 0.0;
-  /* below the block: ds_j = -S e_j, e_j = y(r_j)/y(s_b), from the one-layer decays down to
-   * the start node lo of the integration, and below it from the reference's shape */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   const int j0 = roll->start;
   int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
   /* an increment computed node by node from the core adds to the stored values of nodes
    * that are lazy: their drift bound would not see it, so they are brought up to date */
-  if (lo == 0 && roll->lazy_top > 0) roll_lazy_flush(roll, 0);
-  const double e_bound = roll_decays(L, dsr, lo, bottom);
-  if (j0 == 0) { /* a reference: keep its shape (the nodes below the block, and its bottom
-                  * node, e = 1 there: a later start there still reads the shape) */
-    memcpy(roll->shape_e, dsr, (size_t)bottom * sizeof(double));
-    roll->shape_e[bottom] = 1.0;
-    if (!shift)
-      for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-    roll->shape_top = bottom;
-    /* the decays' own bound where only shape_e counts (a pass over the roll saved) */
-    roll->shape_max = shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
-    /* the reference's first-order response to the drift to come (roll_profile.c); its own
-     * increment adds -S e below the block */
-    roll->prof_top = -1;
-    roll->prof_next = -1;
-    if (roll->prof_on && !mean) {
-      roll_wstep_store(roll, bottom);
-      roll->prof_next = roll_profile_build(roll, 0, bottom);
-      roll->ref_c_next = -S;
-    }
-  }
+  if (lo == 0 && roll->lazy_top > 0) rsi_roll_lazy_flush(roll, 0);
+  const double e_bound = roll_decays(roll->L, dsr, lo, bottom);
+  if (j0 == 0) roll_reference_shape(roll, bottom, S, e_bound, mean != NULL);
   roll->deep_lo = lo;
   roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
   roll->c2_deep = 0.0;
-  if (lo > 0 && lo == j0) roll->c_deep = roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
+  if (lo > 0 && lo == j0) roll->c_deep = rsi_roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
   if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
       roll->last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
      * nodes well below where the last partial integration started can take it lazily at
      * once (their drift is zero now: the modulus was just integrated), so the next
      * increment does not gather, evaluate and scan the whole roll again */
-    roll_lazy_freeze(roll, roll->last_start - 1);
+    rsi_roll_lazy_freeze(roll, roll->last_start - 1);
     if (roll->lazy_top > 0) {
       roll->deep_lo = lo = roll->lazy_top;
       roll->c_deep = -S;
     }
   }
-  if (lo > 0 && dsr[lo] > 1e-280) {
-    /* the shape above the start follows this integration, in the reference's scale (so that
-     * a later increment may start higher and still read its deep part as c x shape); not
-     * where that scale would overflow (then later starts stay below shape_top) */
-    const double scale = roll->shape_e[lo] / dsr[lo];
-    if (scale < 1e200) {
-      for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
-      roll->shape_e[bottom] = scale;
-      if (!shift)
-        for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-      roll->shape_top = bottom;
-      roll->shape_max = shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
-                              : roll_shape_bound(roll, lo, bottom, roll->shape_max);
-    } else {
-      roll->shape_top = lo; /* above it the shape is stale */
-    }
-  }
+  if (lo > 0 && dsr[lo] > 1e-280) roll_shape_follow(roll, lo, bottom, e_bound);
   if (mean) {
     for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
     const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
@@ -296,7 +317,7 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
 /* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
  * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
  * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
-rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
+rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
 {
   const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
   const double t = roll->p.caliper, s = roll_node_radius(roll, top);
@@ -309,7 +330,7 @@ rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double tota
   /* First every node's increment (ds, and ds + r ds'), then the state: an increment that
    * fails leaves the roll exactly as it was, every finished layer intact. From the top
    * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
-   * (roll_block_increment). */
+   * (rsi_roll_block_increment). */
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
   roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
   dsr[top] = 1.0;
@@ -348,29 +369,42 @@ rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double tota
   return RS_OK;
 }
 
-/* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
- * from their own share. */
-rs_status roll_commit(rs_roll *roll, int m, const double *T0)
+/* The deep part of an increment committed: below node lo (> 0) it is c x shape + c2 x shape
+ * x prof_L (rsi_roll_block_increment), which the lazy nodes take in their common scales
+ * and the nodes from the lazy frontier (or 1) to lo explicitly; the core takes c x shape_e
+ * there (prof_L is 0 at the core), or ds0 for an increment computed node by node (lo = 0).
+ * Returns the lowest node with its own stored value (1, or the lazy frontier). Shared by
+ * rsi_roll_commit and rsi_roll_add_one: one formula. */
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0)
 {
-  const int k_old = roll->n, k = roll->n + m;
-  const double t = roll->p.caliper;
-  const double *restrict ds = roll->dsr, *restrict dh = roll->dsh;
-  rs_status st = roll_check_increment(roll, ds, roll->shift ? ds : dh, k);
-  if (st) return st;
-  /* below deep_lo the increment is c_deep times the reference's shape (roll_block_increment):
-   * the lazy nodes take it in their common scale */
-  const int lo = roll->deep_lo;
-  const double c = roll->c_deep, c2 = roll->c2_deep;
-  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
-  double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
   int j0 = 1;
   if (lo > 0 && roll->lazy_top > 0) {
     roll->lazy_c += c;
     roll->lazy_c2 += c2;
     j0 = roll->lazy_top;
   } else {
-    roll->core_sigma += lo > 0 ? c * se[0] : ds[0]; /* prof_L is 0 at the core */
+    roll->core_sigma += lo > 0 ? c * roll->shape_e[0] : ds0;
   }
+  rsi_roll_shape_add(roll, j0, lo, c, c2);
+  return j0;
+}
+
+/* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
+ * from their own share. */
+rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
+{
+  const int k_old = roll->n, k = roll->n + m;
+  const double t = roll->p.caliper;
+  const double *restrict ds = roll->dsr, *restrict dh = roll->dsh;
+  rs_status st = roll_check_increment(roll, ds, roll->shift ? ds : dh, k);
+  if (st) return st;
+  /* below deep_lo the increment is c_deep times the reference's shape (rsi_roll_block_increment):
+   * the lazy nodes take it in their common scale */
+  const int lo = roll->deep_lo;
+  const double c = roll->c_deep, c2 = roll->c2_deep;
+  const double *restrict sh = roll->shape_h;
+  double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
+  const int j0 = rsi_roll_commit_deep(roll, lo, c, c2, ds[0]);
   /* the pressure the reference-valued nodes carry since the reference, -ref_c e (first
    * order): a reference's own increment is -S e below its block (its profile in use from
    * now); an increment that was not c x shape below its start ends the profile's use */
@@ -383,7 +417,6 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
   }
   roll->prof_next = -1;
   const int j1 = lo > 1 ? lo : 1;
-  roll_shape_add(roll, j0, lo, c, c2);
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];
   if (roll->shift) { /* the hoop stresses follow from the radial ones */
@@ -407,9 +440,8 @@ rs_status roll_commit(rs_roll *roll, int m, const double *T0)
  * that, for g ~ 60, is of the size of the hoop stress itself deep in the roll. Layers
  * 1..k (arrays 0..k-1); node 0 is the core. Each layer on its own (no running sum), so
  * that the loop vectorises; derived only when the hoop stresses are read (the reel reads
- * them at history stages and at the end: a pass over every layer at every increment was
- * 4.5 % of the 6054-layer reel). */
-void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
+ * them at history stages and at the end), not at every increment. */
+void rsi_roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr, double core_sigma,
                                 double rc, double t, int k)
 {
   const double inv_t = 1.0 / t;
@@ -419,10 +451,10 @@ void roll_hoop_from_equilibrium(double *restrict sth, const double *restrict sr,
     sth[j - 1] = ((rc + j * t) * sr[j - 1] - (rc + (j - 1) * t) * sr[j - 2]) * inv_t;
 }
 
-/* roll_hoop_from_equilibrium with the nodes at the radii R[0..k] (entrained air: the turn
+/* rsi_roll_hoop_from_equilibrium with the nodes at the radii R[0..k] (entrained air: the turn
  * and the film beneath it carry the radial stresses on their faces; the film no hoop force,
  * so the web's is [R sigma_r] over the turn, its stress that over t) */
-void roll_hoop_from_equilibrium_at(double *restrict sth, const double *restrict sr, double core_sigma,
+void rsi_roll_hoop_from_equilibrium_at(double *restrict sth, const double *restrict sr, double core_sigma,
                                    const double *restrict R, double t, int k)
 {
   const double inv_t = 1.0 / t;

@@ -6,7 +6,6 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
-#include "roll/vector2.h"
 #include "util/error.h"
 
 /* The state (w, L) at x with its first two x-derivatives, from the equations:
@@ -17,7 +16,7 @@ typedef struct roll_jet {
 
 static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
 {
-  double dg2 = 0.0, g2 = roll_g2_at(roll, x, &dg2);
+  double dg2 = 0.0, g2 = rsi_roll_g2_at(roll, x, &dg2);
   double dw = g2 - 1.0 - 2.0 * w - w * w;
   return (roll_jet){x, w, dw, dg2 - 2.0 * (1.0 + w) * dw, L};
 }
@@ -100,7 +99,7 @@ static int roll_wstep_keep(rs_roll *roll, const roll_quintic *q, int lo, int hi)
 
 /* w stored at the kept steps' nodes up to node hi (those above are about to be overwritten),
  * by the same operations as the fill: the steps are then dropped */
-void roll_wstep_store(rs_roll *roll, int hi)
+void rsi_roll_wstep_store(rs_roll *roll, int hi)
 {
   for (int i = 0; i < roll->wstep_n && roll->wstep[i].lo <= hi; ++i) {
     const roll_wstep *s = &roll->wstep[i];
@@ -123,164 +122,6 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
   if (!(d2 > 0.0)) return cap;
   const double h = 0.5 * sqrt(2.0 * tol / d2); /* half: a margin for the error estimate */
   return h < cap ? h : cap;
-}
-
-/* Integrations from the core between two references. Accuracy does not need a refresh
- * (roll_reuse_start bounds the error whatever the reference's age); cost does: the start
- * node sinks as the modulus drifts, and an integration from the core costs ~150 steps and
- * passes over the whole roll against ~30 steps over the nodes above the start. With the
- * first-order search a reference serves 32 increments (16, 32 or 64 give the same steps
- * within 0.5 %: docs/performance.md). With the deep part corrected for the drift the start
- * sinks with the drift's square, so a reference serves longer, the longer the roll (its
- * cost grows with it): n/400 increments, 32 to 512 (the 100,633-layer film, alternating:
- * n/100 5.2 s, n/200 4.9 s, n/400 4.8 s, n/800 5.0 s, n/1600 6.2 s; never 14.8 s; the
- * 6054-layer reel: the same time from 32 to 128, docs/performance.md). */
-static int roll_refresh_age(const rs_roll *roll)
-{
-  if (!roll->prof_on || roll->prof_top < 1) return 32; /* the first-order search */
-  const int a = roll->n / 400;
-  return a < 32 ? 32 : a > 512 ? 512 : a;
-}
-
-/* the start-node search's block of nodes (roll_reuse_start) */
-enum { RS_SCAN_BLOCK = 64 };
-
-/* roll_reuse_start's answer: the start lo, or -1 (node 0 alone saves nothing: a new
- * reference); a start found with the second-order bound is corrected for the drift, with a
- * shape to read below it, or it is none */
-static int roll_reuse_found(rs_roll *roll, int lo, int second)
-{
-  if (lo < 1) return -1;
-  if (second) {
-    if (!(roll->shape_e[lo] > 1e-280)) return -1;
-    roll->start_C = roll->ref_c;
-  }
-  return lo;
-}
-
-/* The node to start the integration of an increment onto k from, keeping the reference's
- * (w, L) below it, or -1: from the core, as a new reference.
- *
- * Node j's reference (w, L) solves the Riccati equation with E_ref instead of E_r. The
- * equation relaxes to w = g - 1 at rate 2g, so a relative change eps of g^2 = E_theta/E_r
- * moves w by ~ (w + 1) eps / 2: the increment below a start node s0 is off by a relative
- * ~ (eps / 2) (L(s0) - L_j), and above it by ~ eps / 4 (the start value's error, relaxing).
- * The increment itself is (T0/s) exp(L_j - L_s) there. So the error in units of T0/s is
- * at most ~ E(s0) = max_{j <= s0} eps_j x exp(max_{j <= s0} L_j - L_s) x (at most e^-1 / 2
- * from the factor u e^-u of the nodes below): the start node is the highest with E(s0) <=
- * tol = RS_ACCURACY_PER_RTOL x rtol, the accuracy the corrected integrations deliver. E
- * grows with s0 (both maxima do), so it is found by bisection. L_s is the top of the last
- * increment (L[n - shift]), one increment below the new one: the bound is on the safe side.
- *
- * The error has one sign (pressures only grow, so E_r drifts one way) and adds up to ~1.3
- * tol over a reel: with the integrations corrected it is most of what is left (newsprint-
- * rider at rtol 1e-3: core pressure 2.9e-5 from a tight run, 6.8e-6 with every increment
- * from the core; docs/roll-model.md). */
-static int roll_reuse_search(rs_roll *roll, int top, double tol, int second);
-
-static int roll_reuse_start(rs_roll *roll)
-{
-  const int n = roll->n;
-  roll->start_C = 0.0;
-  roll->ref_from = -1;
-  if (roll->p.reuse == RS_REUSE_OFF || roll->ref_top < 1 || n < 1) return -1;
-  /* below the top of the last integration, so the new one (one node higher) has length */
-  int top = roll->ref_top < n - roll->shift ? roll->ref_top : n - roll->shift;
-  /* the deep part corrected for the drift (roll_profile.c): a start among the nodes that
-   * still hold the reference's (w, L) and read the reference's shape, the error bound of
-   * second order */
-  const int second = roll->prof_on && roll->prof_top >= 1;
-  if (second) {
-    top = top < roll->prof_top ? top : roll->prof_top;
-    top = top < roll->shape_top ? top : roll->shape_top;
-  }
-  if (roll->ref_age < roll_refresh_age(roll))
-    return roll_reuse_search(roll, top, RS_ACCURACY_PER_RTOL * roll->p.rtol, second);
-  if (!second || roll->ref_deep >= roll->ref_deep_max) return -1;
-  /* A new reference, from the core or from a node above it (roll_reference_rebase):
-   * below that node the reference's (w, L) and shape take their first-order correction
-   * for the drift for good and the drift restarts from 0 there, so what the correction
-   * leaves, second order, stays: the node is found with the second-order bound at a
-   * hundredth of the tolerance, and after RS_REF_DEEP_MAX (4) such references one is
-   * from the core, so that the remainders left add up to at most 4 % of it (measured:
-   * at a quarter of the tolerance the 1500-layer newsprint roll's core pressure error
-   * grew from 4.0e-6 to 1.5e-5 at rtol 1e-5, at a hundredth 4.4e-6; test_roll_profile).
-   * And no higher than the last such reference's node: every such reference starts from
-   * values the last one from the core left (rebased), not from those of a chain of
-   * restarts, each of which adds CVODE's start-up error at its node (measured on
-   * Altmann's roll, a constant modulus whose starts are at the top: the hoop stress's
-   * error 4.4e-5 -> 1.5e-4 of T0/t with a chain of five) */
-  if (roll->ref_deep > 0) top = top < roll->ref_from_last ? top : roll->ref_from_last;
-  const int from = roll_reuse_search(roll, top, 0.01 * RS_ACCURACY_PER_RTOL * roll->p.rtol, 1);
-  roll->start_C = 0.0; /* the start is rebased, not corrected for this increment only */
-  if (from < 1 || !(roll->shape_e[from] > 1e-280)) return -1;
-  roll->ref_from = from;
-  return from;
-}
-
-/* roll_reuse_start's search: the highest start at or below top whose error bound (first
- * order, or second with second != 0) is within tol, or -1 */
-static int roll_reuse_search(rs_roll *roll, int top, double tol, int second)
-{
-  const int n = roll->n;
-  const double *restrict Er = roll->Er, *restrict Eref = roll->Er_ref, *restrict L = roll->L;
-  const double Ls = L[n - roll->shift];
-  /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and scan_L
-   * holds the prefix maxima of L (L there is fixed until the next reference) */
-  const int F = roll->lazy_top < top + 1 ? roll->lazy_top : top + 1;
-  const double aC = fabs(roll->lazy_c), *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b;
-  const double *restrict pl = roll->scan_L;
-  int lo = -1;
-  if (F > 0 && !(roll_profile_bound(la[F - 1] + aC * lb[F - 1], pl[F - 1], Ls, second) <= tol)) {
-    int hi = F - 1; /* E(lo) <= tol < E(hi), all lazy: bisection on the stored bounds */
-    while (hi - lo > 1) {
-      const int mid = lo + (hi - lo) / 2;
-      if (roll_profile_bound(la[mid] + aC * lb[mid], pl[mid], Ls, second) <= tol)
-        lo = mid;
-      else
-        hi = mid;
-    }
-    return roll_reuse_found(roll, lo, second);
-  }
-  /* from F up, a block at a time: the block's drifts (a vectorised pass), then their running
-   * maxima, E only at each block's end, and node by node inside the block where it first
-   * exceeds tol: the answer of a bisection over the prefix maxima (E grows with s0), without
-   * a chain of dependent max operations through every node. The start is usually a block or
-   * two above F: the drifts of the nodes above it are not formed */
-  double *restrict eps = roll->scan_eps;
-  double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
-  lo = F - 1;
-  for (int b0 = F; b0 <= top; b0 += RS_SCAN_BLOCK) {
-    const int b1 = b0 + RS_SCAN_BLOCK - 1 < top ? b0 + RS_SCAN_BLOCK - 1 : top;
-    for (int j = b0; j <= b1; ++j) eps[j] = fabs(Er[j] - Eref[j]) / Eref[j];
-    double e4[4] = {me, me, me, me}, l4[4] = {ml, ml, ml, ml};
-    int j = b0;
-    for (; j + 3 <= b1; j += 4)
-      for (int q = 0; q < 4; ++q) {
-        e4[q] = eps[j + q] > e4[q] ? eps[j + q] : e4[q];
-        l4[q] = L[j + q] > l4[q] ? L[j + q] : l4[q];
-      }
-    for (; j <= b1; ++j) {
-      e4[0] = eps[j] > e4[0] ? eps[j] : e4[0];
-      l4[0] = L[j] > l4[0] ? L[j] : l4[0];
-    }
-    const double be = fmax(fmax(e4[0], e4[1]), fmax(e4[2], e4[3]));
-    const double bl = fmax(fmax(l4[0], l4[1]), fmax(l4[2], l4[3]));
-    if (roll_profile_bound(be, bl, Ls, second) <= tol) { /* the whole block qualifies */
-      me = be;
-      ml = bl;
-      lo = b1;
-      continue;
-    }
-    for (j = b0; j <= b1; ++j) { /* the first node past tol is in this block */
-      me = eps[j] > me ? eps[j] : me;
-      ml = L[j] > ml ? L[j] : ml;
-      if (!(roll_profile_bound(me, ml, Ls, second) <= tol)) break;
-      lo = j;
-    }
-    break;
-  }
-  return roll_reuse_found(roll, lo, second);
 }
 
 /* Correcting the integration's global error (docs/roll-model.md, "Correcting the
@@ -321,7 +162,7 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
       cw[1] + 0.5 * (2.0 * cw[2] + 0.5 * (3.0 * cw[3] + 0.5 * (4.0 * cw[4] + 0.5 * 5.0 * cw[5])));
   const double dqL =
       cL[1] + 0.5 * (2.0 * cL[2] + 0.5 * (3.0 * cL[3] + 0.5 * (4.0 * cL[4] + 0.5 * 5.0 * cL[5])));
-  const double g2 = roll_g2_probe(roll, ja->x + 0.5 * h);
+  const double g2 = rsi_roll_g2_probe(roll, ja->x + 0.5 * h);
   const double dw = dqw / h - (g2 - 1.0 - 2.0 * qw - qw * qw), dL = dqL / h - qw;
   const double A = 2.0 * (h + jb->L - ja->L), eh = exp(-0.5 * A), D = eh * eh;
   /* h (1 - e^-A)/A and h (1 - e^-A/2)/A from the one exp(), by their Taylor sums where A
@@ -383,116 +224,98 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
   c->w = ew;
 }
 
-/* The start node's (w, L) back to the reference's once the increment corrected there is
- * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
- * A reference from a node above the core (roll_reuse_start) that was committed becomes
- * the reference: its profile continued from that node (roll_reference_extend). */
-void roll_start_release(rs_roll *roll, rs_status st)
+/* The integration's start at node `first` (0: the core): the nodes it looks at (from
+ * first - 1: the Hermite slopes) leave the lazy zone, w at and below it is stored from
+ * the last integration's steps, a rebased reference's nodes below it are rebased, and the
+ * start's (w, L) corrected by start_C x the profile (roll_profile.c; the node holds them
+ * while the increment is built, the reference's again after: rsi_roll_start_release). A
+ * reference needs every node, and one from a node above the core (ref_from) has every
+ * node leave the lazy zone too, to freeze again below its start with the lazy scale from
+ * 0: only nodes that existed when that scale started can join the zone. */
+static rs_status roll_integration_start(rs_roll *roll, int first, int from_core, double start_C)
 {
-  if (roll->ref_from > 0 && st == RS_OK) {
-    roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
-    roll_reference_extend(roll);
-  }
-  roll->ref_from = -1;
-  if (roll->start_C == 0.0) return;
-  roll->w[roll->start] = roll->start_ref[0];
-  roll->L[roll->start] = roll->start_ref[1];
-  roll->start_C = 0.0;
-}
-
-/* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
- * roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
- * keeping the reference's values below it.
- * One CVODE step at a time; the nodes inside each step are interpolated between its ends
- * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
-rs_status roll_integrate(rs_roll *roll, int k)
-{
-  if (k == 0) { /* the first layer's load on the core: nothing to integrate */
-    roll->wstep_n = 0;
-    roll->w[0] = roll->kc;
-    roll->L[0] = 0.0;
-    roll->start = 0;
-    roll->start_C = 0.0;
-    roll->prof_top = -1;
-    roll->stats.full_integrations++;
-    return RS_OK;
-  }
-  const double *xn = roll->xnode, xs = xn[k];
-  const int j0 = roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
-  const double start_C = roll->start_C; /* applied below, once nothing can fail before it */
-  roll->start_C = 0.0;
-  /* the nodes the integration looks at (from first - 1: the Hermite slopes) leave the lazy
-   * zone; a reference needs every node, and one from a node above the core (ref_from) has
-   * every node leave it too, to freeze again below its start with the lazy scale from 0:
-   * only nodes that existed when that scale started can join the zone (roll_lazy_freeze) */
   const int need = from_core || roll->ref_from > 0 ? 0 : first - 1, F = roll->lazy_top;
   if (need < F) {
-    roll_lazy_flush(roll, need);
-    rs_status st = roll_prepare_nodes(roll, need, F);
+    rsi_roll_lazy_flush(roll, need);
+    rs_status st = rsi_roll_prepare_nodes(roll, need, F);
     if (st) return st;
   }
-  const double x0 = xn[first];
-  sunrealtype *y = N_VGetArrayPointer(roll->y);
   if (from_core) {
     roll->w[0] = roll->kc;
     roll->L[0] = 0.0;
   }
-  roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
-  if (roll->ref_from > 0) roll_reference_rebase(roll, first);
-  roll->start = first; /* before the start is corrected: roll_start_release reads it */
+  rsi_roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
+  if (roll->ref_from > 0) rsi_roll_reference_rebase(roll, first);
+  roll->start = first; /* before the start is corrected: rsi_roll_start_release reads it */
   if (start_C != 0.0) {
     roll->start_C = start_C;
-    /* the reference's (w, L) at the start moved by the drift since (roll_profile.c): the
-     * node holds them while the increment is built from this integration, and the
-     * reference's again after (roll_start_release) */
     roll->start_ref[0] = roll->w[first];
     roll->start_ref[1] = roll->L[first];
     roll->w[first] += roll->start_C * roll->prof_w[first];
     roll->L[first] += roll->start_C * roll->prof_L[first];
   }
-  /* from the core (0, kc); else the reference's values, whose L carries the reference's
-   * origin: every L difference the increment is built from stays consistent */
+  return RS_OK;
+}
+
+/* CVODE restarted at x0 = ln r_first towards xs = ln r_k from the start's (w, L) (from the
+ * core (kc, 0); else the reference's values, whose L carries the reference's origin: every
+ * L difference the increment is built from stays consistent), r = e^x anchored afresh at
+ * the start (its radii do not depend on where the last integration ended), ln g^2 formed
+ * in one pass when the nodes are few; *j0 the jet at the start */
+static rs_status roll_cvode_restart(rs_roll *roll, int first, int k, roll_jet *j0)
+{
+  const double x0 = roll->xnode[first], xs = roll->xnode[k];
+  sunrealtype *y = N_VGetArrayPointer(roll->y);
   y[0] = roll->w[first];
   y[1] = roll->L[first];
   roll->cvode_msg[0] = '\0';
-  /* every integration anchors r = e^x afresh at its start: its radii do not depend on
-   * where the last integration ended */
   roll->x_anchor = x0;
   roll->r_anchor = exp(x0);
-  /* ln g^2 at the nodes the steps may look at, in one pass, when they are few */
-  if (k - first <= roll->lg2_range_max) roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
-  roll_jet prev = roll_jet_at(roll, x0, y[0], y[1]);
-  const double g2_start = roll_g2_at(roll, x0, NULL);
+  if (k - first <= roll->lg2_range_max) rsi_roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
+  *j0 = roll_jet_at(roll, x0, y[0], y[1]);
+  const double g2_start = rsi_roll_g2_at(roll, x0, NULL);
   if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
       CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      CVodeSetInitStep(roll->cvode, roll_first_step(roll, &prev, g2_start)) != CV_SUCCESS)
+      CVodeSetInitStep(roll->cvode, roll_first_step(roll, j0, g2_start)) != CV_SUCCESS)
     return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
-  if (from_core) { /* a new reference: nodes 0..k, with the modulus it is integrated with */
-    memcpy(roll->Er_ref, roll->Er, (size_t)(k + 1) * sizeof(double));
-    roll->ref_top = k;
-    roll->ref_age = 0;
-    roll->ref_deep = 0;
-    roll->shape_top = -1; /* until its increment is built (roll_block_increment) */
-    roll->prof_top = -1;  /* likewise its profile */
-    roll->stats.full_integrations++;
-  } else { /* the nodes above j0 are overwritten: they are no longer the reference's */
-    roll->ref_top = j0;
-    roll->prof_top = roll->prof_top < j0 ? roll->prof_top : j0; /* still the reference's */
-    roll->ref_age++;
-    roll->last_start = j0;
-    /* below the start the increment is c x the reference's shape (roll_block_increment):
-     * those nodes can wait (roll_lazy.c) */
-    if (roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)
-      roll_lazy_freeze(roll, j0 - 1);
-  }
+  return RS_OK;
+}
 
-  int next = first + 1; /* next node to fill */
+/* The nodes next..last inside the step that ended at tret = cur->x, from its quintic q:
+ * r_j = r_c + j t, so the last node inside is j = (e^x - r_c)/t up to rounding, settled
+ * against the stored ln r_j (the jet at tret has just formed (e^x - r_c)/t). w is kept as
+ * the step's quintic where only a start node will read it (rsi_roll_wstep_store); node k,
+ * the step's end, takes its end values, exact. Returns the next node to fill. */
+static int roll_step_nodes(rs_roll *roll, const roll_quintic *q, const roll_jet *cur,
+                           const roll_correction *corr, int next, int k)
+{
+  const double *xn = roll->xnode, tret = cur->x;
+  int last = (int)rsi_roll_layer_coord_at(roll, tret);
+  if (last < next) last = next;
+  if (last > k) last = k;
+  while (last > next && xn[last] > tret) --last;
+  while (last < k && xn[last + 1] <= tret) ++last;
+  const int keep = roll->w_lazy && roll_wstep_keep(roll, q, next, last < k ? last : k - 1);
+  roll_quintic_fill(q, xn + next, keep ? NULL : roll->w + next, roll->L + next, last - next + 1);
+  if (last == k) {
+    roll->w[k] = cur->w - corr->w;
+    roll->L[k] = cur->L - corr->L;
+  }
+  return last + 1;
+}
+
+/* CVODE's steps from node first to node k, one at a time, each step's nodes filled from its
+ * quintic, corrected for the integration's error (roll_correction_step) when asked: every
+ * step, since the error it leaves reaches the nodes above it. *steps counts them. */
+static rs_status roll_cvode_steps(rs_roll *roll, int first, int k, roll_jet prev, long *steps)
+{
+  const double xs = roll->xnode[k];
+  const sunrealtype *y = N_VGetArrayPointer(roll->y);
   const int correct = roll->p.correction == RS_CORRECTION_ON;
   roll_correction corr = {0.0, 0.0};
-  long steps = 0;
-  sunrealtype tret = x0;
-  while (next <= k) {
-    if (++steps > roll->p.max_steps)
+  sunrealtype tret = prev.x;
+  for (int next = first + 1; next <= k;) {
+    if (++*steps > roll->p.max_steps)
       return RS_ERROR(RS_ERR_SOLVER,
                       "CVODE needed more than %ld steps to cross the roll (reached r = %.6g m of "
                       "%.6g m); raise numerics.max_steps or loosen numerics.rtol",
@@ -504,42 +327,78 @@ rs_status roll_integrate(rs_roll *roll, int k)
                       roll->cvode_msg[0] ? roll->cvode_msg : CVodeGetReturnFlagName(flag));
     const roll_jet cur = roll_jet_at(roll, tret, y[0], y[1]);
     roll_quintic q;
-    if (correct) { /* every step: the error it leaves reaches the nodes above it */
+    if (correct) {
       roll_quintic_make(&prev, &cur, &q);
       roll_correction_step(roll, &corr, &prev, &cur, &q);
     }
-    if (xn[next] <= tret) {
+    if (roll->xnode[next] <= tret) {
       if (!correct) roll_quintic_make(&prev, &cur, &q);
-      /* the last node inside the step: r_j = r_c + j t, so j = (e^x - r_c)/t up to rounding,
-       * settled against the stored ln r_j (the jet at tret has just formed (e^x - r_c)/t) */
-      int last = (int)roll_layer_coord_at(roll, tret);
-      if (last < next) last = next;
-      if (last > k) last = k;
-      while (last > next && xn[last] > tret) --last;
-      while (last < k && xn[last + 1] <= tret) ++last;
-      /* w kept as the step's quintic where only a start node will read it (node k: exact) */
-      const int keep = roll->w_lazy && roll_wstep_keep(roll, &q, next, last < k ? last : k - 1);
-      roll_quintic_fill(&q, xn + next, keep ? NULL : roll->w + next, roll->L + next,
-                        last - next + 1);
-      next = last + 1;
-      if (next > k) { /* the outer node is the step's end: exact, not interpolated */
-        roll->w[k] = cur.w - corr.w;
-        roll->L[k] = cur.L - corr.L;
-      }
+      next = roll_step_nodes(roll, &q, &cur, &corr, next, k);
     }
     prev = cur;
   }
-  if (!from_core) {
-    /* (w, L) above the start now come from this modulus: it is what later increments'
-     * drift is measured against there, and they may start as high as this one's top */
-    memcpy(roll->Er_ref + first + 1, roll->Er + first + 1, (size_t)(k - first) * sizeof(double));
-    roll->ref_top = k;
-  }
+  return RS_OK;
+}
+
+/* the solver's counters after an integration of `steps` steps (CVODE's restart at every
+ * CVodeReInit; the exact corrector forms no Jacobian, the fallback counts its own:
+ * roll_corrector.c) */
+static void roll_count(rs_roll *roll, long steps)
+{
   long nfe = 0;
-  CVodeGetNumRhsEvals(roll->cvode, &nfe); /* counters restart at every CVodeReInit */
+  CVodeGetNumRhsEvals(roll->cvode, &nfe);
   roll->stats.cvode_steps += steps;
   roll->stats.rhs_evals += nfe;
-  if (roll->NLS) /* (the fallback counts its own: roll_corrector.c) */
-    roll->stats.jac_evals = rs_roll_newton2_jacobians(roll->NLS); /* counts across increments */
+}
+
+/* The start node's (w, L) back to the reference's once the increment corrected there is
+ * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
+ * A reference from a node above the core (rsi_roll_reuse_start) that was committed becomes
+ * the reference: its profile continued from that node (rsi_roll_reference_extend). */
+void rsi_roll_start_release(rs_roll *roll, rs_status st)
+{
+  if (roll->ref_from > 0 && st == RS_OK) {
+    rsi_roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
+    rsi_roll_reference_extend(roll);
+  }
+  roll->ref_from = -1;
+  if (roll->start_C == 0.0) return;
+  roll->w[roll->start] = roll->start_ref[0];
+  roll->L[roll->start] = roll->start_ref[1];
+  roll->start_C = 0.0;
+}
+
+
+/* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
+ * rsi_roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
+ * keeping the reference's values below it (roll_reuse.c keeps the reference's books).
+ * One CVODE step at a time; the nodes inside each step are interpolated between its ends
+ * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
+rs_status rsi_roll_integrate(rs_roll *roll, int k)
+{
+  if (k == 0) { /* the first layer's load on the core: nothing to integrate */
+    roll->wstep_n = 0;
+    roll->w[0] = roll->kc;
+    roll->L[0] = 0.0;
+    rsi_roll_reference_core(roll);
+    return RS_OK;
+  }
+  const int j0 = rsi_roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
+  const double start_C = roll->start_C; /* applied once nothing can fail before it */
+  roll->start_C = 0.0;
+  rs_status st = roll_integration_start(roll, first, from_core, start_C);
+  roll_jet j_start;
+  if (st == RS_OK) st = roll_cvode_restart(roll, first, k, &j_start);
+  if (st) return st;
+  rsi_roll_reference_begin(roll, k, j0);
+  /* below the start the increment is c x the reference's shape (rsi_roll_block_increment):
+   * those nodes can wait (roll_lazy.c) */
+  if (!from_core && roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)
+    rsi_roll_lazy_freeze(roll, j0 - 1);
+  long steps = 0;
+  st = roll_cvode_steps(roll, first, k, j_start, &steps);
+  if (st) return st;
+  rsi_roll_reference_end(roll, k, first);
+  roll_count(roll, steps);
   return RS_OK;
 }

@@ -3,7 +3,8 @@
  *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
  *                     Jacobian, error weights, the modulus an increment sees
  *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
- *                     interpolation inside each step; the reuse of the deep solution)
+ *                     interpolation inside each step, the integration's error corrected)
+ *   roll_reuse.c      the reference solution: where an integration may start, its books
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
@@ -25,14 +26,13 @@
 #include "util/sundials_compat.h"
 
 enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
-/* references from a node above the core between two from the core (roll_reuse_start) */
+/* references from a node above the core between two from the core (rsi_roll_reuse_start) */
 enum { RS_REF_DEEP_MAX = 4 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
- * instead of when a step first looks (roll_lg2_range: on the 6054-layer reel, ~300 nodes
- * and 40 steps an increment, 1.9 % fewer instructions and none of the right-hand side's
- * waiting on log(); on a 20,000-layer film break-even in instructions at 512 - 1024
- * nodes, +1.1 % at 2048; docs/performance.md) */
+ * instead of when a step first looks (rsi_roll_lg2_range: the right-hand side then never
+ * waits on log(); beyond ~1024 nodes the pass forms more than the steps look at:
+ * docs/performance.md) */
 enum { RS_LG2_RANGE_MAX = 1024 };
 
 /* One CVODE step's quintic of w in s = (x - a) inv_h (roll_integrate.c), for its nodes
@@ -50,6 +50,41 @@ typedef struct roll_g2_cubic {
   double y0, m0, c2, c3, g0;
 } roll_g2_cubic;
 
+/* The roll's state, by component: what each holds, the file that keeps it, and its
+ * invariants, which hold between increments (after rs_roll_create, and after every
+ * rs_roll_add_layers that returned RS_OK; rs_roll_restore keeps them) and are checked by
+ * rsi_roll_check_invariants (roll_check.c) after every increment in builds with
+ * RS_ROLL_CHECKS and in test_roll_check:
+ *  - the roll (roll.c, roll_state.c): p, kc, shift, n, core_sigma, sigma_r, sigma_theta,
+ *    hoop_stale. 0 <= n <= p.max_layers; shift is 1 exactly for RS_LOAD_BENEATH; the
+ *    stored stresses and core_sigma are finite.
+ *  - the nodes' modulus and g^2 between them (roll_ode.c): Er, lg2 and its epochs, g2c,
+ *    gx.., x_anchor, P_node. Er over the nodes an integration looks at is current.
+ *  - the integration (roll_integrate.c): w, L, wstep, xnode, the CVODE objects.
+ *    wstep_n <= wstep_cap.
+ *  - the increment (roll_increment.c, fused for one layer in roll_layer.c): block_share,
+ *    P_mean, dsr, dsh, deep_lo, c_deep, c2_deep: values of the last increment only.
+ *  - the reference solution (roll_reuse.c; rebased by roll_profile.c): Er_ref, scan_eps,
+ *    scan_L, ref_top, ref_age, start, last_start, ref_from, ref_deep.., start_C,
+ *    start_ref. -1 <= ref_top <= n and Er_ref > 0 over nodes 0..ref_top; 0 <= start <= n;
+ *    between increments ref_from = -1 and start_C = 0 (rsi_roll_start_release).
+ *  - the reference's shape (roll_increment.c, roll_layer.c; rebased by roll_profile.c):
+ *    shape_e, shape_h, shape_top, shape_max. -1 <= shape_top <= max_layers; over its nodes
+ *    0 <= shape_e <= shape_max (and |shape_h| <= shape_max with Hakiel's placement).
+ *  - the drift profile (roll_profile.c; put in use by the commit): prof_*, ref_c,
+ *    ref_c_next. A profile (prof_top >= 0) lies within the reference's nodes (prof_top <=
+ *    ref_top), |prof_L| <= prof_max, finite, over its nodes; between increments no
+ *    reference's profile waits (prof_next = -1).
+ *  - the lazy zone (roll_lazy.c; its scales moved by the commit): lazy_*, view_*. An empty
+ *    zone (lazy_top = 0) has lazy_c = lazy_c2 = 0; a zone lies within the nodes that existed
+ *    when its scale started (lazy_top <= lazy_limit <= n), is allowed (lazy_allowed) and
+ *    covered by the shape (lazy_top - 1 <= shape_top); over it lazy_a, lazy_b and scan_L
+ *    are prefix maxima (never decreasing up the roll).
+ *  - entrained air (roll_air.c): geom, geom_j, kc0, node_r, inv_pitch, pitch_sq.
+ *  - scratch (below): no value survives a call.
+ * The commit of an increment (rsi_roll_commit, rsi_roll_add_one) moves the lazy zone's
+ * scales, the reference's drift scale ref_c and the profile's and shape's tops, as the
+ * increment it adds asks. */
 struct rs_roll {
   rs_roll_params p;
   double kc;            /* core condition r y'/y at r_c */
@@ -100,7 +135,7 @@ struct rs_roll {
   char cvode_msg[RS_CVODE_MSG_LEN];
   rs_roll_stats stats;
   int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
-  /* Reuse of the deep solution (roll_reuse_start): the last integration from the core is
+  /* Reuse of the deep solution (rsi_roll_reuse_start): the last integration from the core is
    * the reference; below the node an integration starts from, (w, L) stay the reference's */
   double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
   double *scan_eps;     /* [cap + 1] |E_r / Er_ref - 1| at the nodes the search looks at */
@@ -109,16 +144,16 @@ struct rs_roll {
   int ref_age;          /* integrations since the reference */
   int start;            /* node the last integration started from (0: the core) */
   int last_start;       /* the last start above the core (where a reference's increment
-                           may be kept lazy from: roll_block_increment) */
+                           may be kept lazy from: rsi_roll_block_increment) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
    * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
    * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is
    *   ds_j = c e_j,  ds_j + r ds_j' = c e_j (1 + w_j),   c = ds_{j0} / e_{j0}    (j < j0),
-   * two multiplications a node (roll_block_increment, roll_commit). */
+   * two multiplications a node (rsi_roll_block_increment, rsi_roll_commit). */
   double *shape_e, *shape_h;
   int shape_top;
   /* a bound on |shape_e| (and |shape_h| with Hakiel's placement) over the shape's nodes:
-   * when |c_deep| times it is finite, so is the increment below deep_lo (roll_commit) */
+   * when |c_deep| times it is finite, so is the increment below deep_lo (rsi_roll_commit) */
   double shape_max;
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h), plus, with the
    * deep part corrected, c2_deep shape_e prof_L */
@@ -137,13 +172,13 @@ struct rs_roll {
                             committed, with ref_c_next its deep scale */
   double ref_c_next;
   int ref_from;          /* > 0: this increment's integration is a new reference from that
-                            node up, the nodes below rebased (roll_reference_rebase) */
+                            node up, the nodes below rebased (rsi_roll_reference_rebase) */
   int ref_deep;          /* references from a node above the core since the last from it */
   int ref_deep_max;      /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
   long deep_references;  /* references from a node above the core so far */
   int ref_from_last;     /* the node the last of them started from */
   double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
-  double start_ref[2];   /* the reference's (w, L) at that start (roll_start_release) */
+  double start_ref[2];   /* the reference's (w, L) at that start (rsi_roll_start_release) */
   double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
   double *prof_w, *prof_L; /* [cap + 1] */
   int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
@@ -166,6 +201,13 @@ struct rs_roll {
   int geom_j;            /* the interval the layer coordinate was last found in */
   double kc0;            /* the core condition of the film-free roll */
   double *node_r, *inv_pitch, *pitch_sq; /* [cap + 1]; NULL without air */
+  /* Scratch [cap + 1] each, owned by no component: a function may use it for values that
+   * do not survive the call (the drift profile's coefficients, roll_profile.c; the moduli
+   * a little above the pressures of nodes that join the lazy zone, roll_lazy.c). No other
+   * array of the roll is ever used as scratch. */
+  struct {
+    double *u, *d, *q, *c, *a, *b;
+  } scratch;
 };
 
 /* node j's radius (m): r_c + j t, or with entrained air its real radius */
@@ -209,44 +251,50 @@ static inline double roll_log_ratio_small(double z)
 }
 
 /* roll_lazy.c */
-void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
-void roll_lazy_flush(rs_roll *roll, int from);
-void roll_lazy_freeze(rs_roll *roll, int to);
-double roll_lazy_sigma(const rs_roll *roll, int j);
-const double *roll_lazy_view_r(rs_roll *roll);
-const double *roll_lazy_view_theta(rs_roll *roll);
-int roll_lazy_allowed(const rs_roll_params *p);
+void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
+void rsi_roll_lazy_flush(rs_roll *roll, int from);
+void rsi_roll_lazy_freeze(rs_roll *roll, int to);
+double rsi_roll_lazy_sigma(const rs_roll *roll, int j);
+const double *rsi_roll_lazy_view_r(rs_roll *roll);
+const double *rsi_roll_lazy_view_theta(rs_roll *roll);
+int rsi_roll_lazy_allowed(const rs_roll_params *p);
 
 /* roll_ode.c */
-double roll_g2_at(rs_roll *roll, double x, double *dg2);
-double roll_g2_probe(rs_roll *roll, double x);
-void roll_lg2_range(rs_roll *roll, int lo, int hi);
-double roll_layer_coord_at(rs_roll *roll, double x);
-int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
-int roll_jac(double x, const double y[2], double J[2][2], void *user);
-int roll_ewt(N_Vector yv, N_Vector ewt, void *user);
-void roll_gather_pressure(rs_roll *roll, int k, const double *add);
-rs_status roll_set_modulus(rs_roll *roll, int k);
-rs_status roll_set_modulus_stress(rs_roll *roll, int k);
-rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi);
+double rsi_roll_g2_at(rs_roll *roll, double x, double *dg2);
+double rsi_roll_g2_probe(rs_roll *roll, double x);
+void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi);
+double rsi_roll_layer_coord_at(rs_roll *roll, double x);
+int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
+int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user);
+int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user);
+void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add);
+rs_status rsi_roll_set_modulus(rs_roll *roll, int k);
+rs_status rsi_roll_set_modulus_stress(rs_roll *roll, int k);
+rs_status rsi_roll_prepare_nodes(rs_roll *roll, int lo, int hi);
 
 /* roll_profile.c */
-int roll_profile_build(rs_roll *roll, int from, int top);
-double roll_profile_bound(double eps_max, double L_max, double Ls, int second);
+int rsi_roll_profile_build(rs_roll *roll, int from, int top);
+double rsi_roll_profile_bound(double eps_max, double L_max, double Ls, int second);
 
 /* roll_air.c */
-void roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
-rs_status roll_air_alloc(rs_roll *roll);
-void roll_air_free(rs_roll *roll);
-rs_status roll_air_nodes(rs_roll *roll, int k_old, int k);
-double roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
+void rsi_roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
+rs_status rsi_roll_air_alloc(rs_roll *roll);
+void rsi_roll_air_free(rs_roll *roll);
+rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k);
+double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 
 /* roll_integrate.c */
-rs_status roll_integrate(rs_roll *roll, int k);
-void roll_wstep_store(rs_roll *roll, int hi);
-void roll_start_release(rs_roll *roll, rs_status st);
-void roll_reference_extend(rs_roll *roll);
-void roll_reference_rebase(rs_roll *roll, int from);
+rs_status rsi_roll_integrate(rs_roll *roll, int k);
+void rsi_roll_wstep_store(rs_roll *roll, int hi);
+void rsi_roll_start_release(rs_roll *roll, rs_status st);
+
+/* roll_reuse.c */
+int rsi_roll_reuse_start(rs_roll *roll);
+void rsi_roll_reference_core(rs_roll *roll);
+void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
+void rsi_roll_reference_end(rs_roll *roll, int k, int first);
+void rsi_roll_reference_extend(rs_roll *roll);
+void rsi_roll_reference_rebase(rs_roll *roll, int from);
 
 /* roll_increment.c */
 typedef struct roll_segments {
@@ -255,17 +303,21 @@ typedef struct roll_segments {
   double s[4];          /* its scale: the product of the segments above it */
   double M[4];          /* its largest unscaled product */
 } roll_segments;
-void roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
-void roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
+void rsi_roll_decays_raw(const double *L, double *e, int lo, int top, roll_segments *seg);
+void rsi_roll_hoop_from_equilibrium(double *sigma_theta, const double *sigma_r, double core_sigma,
                                 double rc, double t, int k);
-void roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_r, double core_sigma,
+void rsi_roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_r, double core_sigma,
                                    const double *radius, double t, int k);
-double roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
-void roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
-rs_status roll_commit(rs_roll *roll, int m, const double *T0);
-rs_status roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
+void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
+rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0);
+rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+/* roll_check.c */
+const char *rsi_roll_check_invariants(const rs_roll *roll, int full);
 
 /* roll_layer.c */
-rs_status roll_add_one(rs_roll *roll, double T0);
+rs_status rsi_roll_add_one(rs_roll *roll, double T0);
 
 #endif

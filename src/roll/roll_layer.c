@@ -1,6 +1,6 @@
 /* One layer's increment, built and committed in one pass over the nodes above a reused
  * start (the common case of a long roll: every increment but the references', load
- * beneath the layer). The same operations as roll_block_increment followed by roll_commit,
+ * beneath the layer). The same operations as rsi_roll_block_increment followed by rsi_roll_commit,
  * node for node, so the same numbers bit for bit; what they did in five passes over the
  * nodes (the decays' scaling, the shape's update, ds = -S e, the finiteness check, the
  * commit) is one here. An increment is checked before anything is written: the largest
@@ -32,31 +32,31 @@ static void roll_layer_segment(const double *restrict e, double *restrict sr, do
 
 /* The increment of one layer of tension T0 (N/m) wound onto the roll, from the integration
  * just done, committed (rs_roll_add_layers' step for m = 1). */
-rs_status roll_add_one(rs_roll *roll, double T0)
+rs_status rsi_roll_add_one(rs_roll *roll, double T0)
 {
   const int k_old = roll->n, k = k_old + 1, bottom = k_old + 1 - roll->shift;
   const int lo = roll->start;
-  /* the case of roll_block_increment's deep part read from the shape (lo = start > 0),
+  /* the case of rsi_roll_block_increment's deep part read from the shape (lo = start > 0),
    * with the load beneath the layer, over a range the decays cut into segments */
   if (!roll->shift || lo < 1 || lo > roll->shape_top || !(roll->shape_e[lo] > 1e-280) ||
       bottom - lo < 256) {
-    roll_block_increment(roll, k_old, 1, &T0, NULL);
-    return roll_commit(roll, 1, &T0);
+    rsi_roll_block_increment(roll, k_old, 1, &T0, NULL);
+    return rsi_roll_commit(roll, 1, &T0);
   }
   const double S = T0 / roll_node_radius(roll, bottom); /* the block's sum for m = 1 */
   double *restrict e = roll->dsr, *restrict se = roll->shape_e, *restrict sr = roll->sigma_r;
   roll_segments seg;
-  roll_decays_raw(roll->L, e, lo, bottom, &seg);
+  rsi_roll_decays_raw(roll->L, e, lo, bottom, &seg);
   const double v_lo = e[lo] * seg.s[0], e_lo = v_lo > 1e-290 ? v_lo : 0.0;
   double c2;
-  const double c = roll_deep_scales(roll, lo, -S * e_lo / se[lo], &c2);
+  const double c = rsi_roll_deep_scales(roll, lo, -S * e_lo / se[lo], &c2);
   int finite = isfinite(c) && isfinite(c2) && seg.count == 4 &&
                fabs(c) * roll->shape_max < INFINITY &&
                (c2 == 0.0 || fabs(c2) * roll->shape_max * roll->prof_max < INFINITY);
   for (int g = 0; finite && g < seg.count; ++g) finite = seg.M[g] * seg.s[g] * S < INFINITY;
   if (!finite) { /* the two-step path: its check names the node */
-    roll_block_increment(roll, k_old, 1, &T0, NULL);
-    return roll_commit(roll, 1, &T0);
+    rsi_roll_block_increment(roll, k_old, 1, &T0, NULL);
+    return rsi_roll_commit(roll, 1, &T0);
   }
   roll->deep_lo = lo;
   roll->c_deep = c;
@@ -64,17 +64,9 @@ rs_status roll_add_one(rs_roll *roll, double T0)
   roll->ref_c += c;
   /* below the start: c times the shape, plus c2 times the shape's correction (the lazy
    * nodes in their common scales) */
-  int j0 = 1;
-  if (roll->lazy_top > 0) {
-    roll->lazy_c += c;
-    roll->lazy_c2 += c2;
-    j0 = roll->lazy_top;
-  } else {
-    roll->core_sigma += c * se[0]; /* prof_L is 0 at the core */
-  }
-  roll_shape_add(roll, j0, lo, c, c2);
+  rsi_roll_commit_deep(roll, lo, c, c2, 0.0);
   /* the shape above the start follows this integration, in the reference's scale, unless
-   * that scale would overflow (roll_block_increment) */
+   * that scale would overflow (rsi_roll_block_increment) */
   const double scale = e_lo > 1e-280 ? se[lo] / e_lo : 0.0;
   const int follow = e_lo > 1e-280 && scale < 1e200;
   for (int g = 0; g < seg.count; ++g)

@@ -1,10 +1,10 @@
 /* The deep part of the roll kept lazy (docs/roll-model.md, "The lazy deep part"): below the
  * node an increment's integration starts from, the increment is c times the reference's
- * shape e_j (roll_block_increment). Nodes below the lazy frontier F are not touched at
+ * shape e_j (rsi_roll_block_increment). Nodes below the lazy frontier F are not touched at
  * every increment: their stresses are
  *     sigma_r(r_j) = stored_j + C e_j,    (Hakiel placement: sigma_theta_j = stored + C h_j)
  * with C the sum of the increments' c since the nodes were frozen. The start-node search
- * (roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
+ * (rsi_roll_reuse_start) needs their modulus drift eps_j = |E_r/E_ref - 1|; to first order in
  * the pressure added since freezing, -dC e_j, it is at most
  *     eps_j ~ a_j + |C| b_j,   b_j = |d ln E_r / dP| e_j,   a_j = eps_j(freeze) - |C_f| b_j
  * (C only grows in magnitude: every increment compresses; ln E_r is concave in P for the
@@ -31,7 +31,7 @@ static void roll_shape_add_n(double *restrict sr, const double *restrict e,
 
 /* the radial stresses of the nodes [lo, hi) (lo >= 1) take c x shape + c2 x shape x prof_L:
  * a deep part below an increment's start, or nodes leaving or joining the lazy zone */
-void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
+void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
 {
   roll_shape_add_n(roll->sigma_r, roll->shape_e, roll->prof_L, lo, hi, c, c2);
 }
@@ -42,7 +42,7 @@ void roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
 static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double scale2)
 {
   if (lo == 0) roll->core_sigma += scale * roll->shape_e[0]; /* prof_L is 0 at the core */
-  roll_shape_add(roll, lo > 1 ? lo : 1, hi, scale, scale2);
+  rsi_roll_shape_add(roll, lo > 1 ? lo : 1, hi, scale, scale2);
   if (!roll->shift) {
     const double *restrict h = roll->shape_h;
     double *restrict sth = roll->sigma_theta;
@@ -51,7 +51,7 @@ static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double 
 }
 
 /* Nodes [from, F) back to explicit stresses (their true values); F = from. */
-void roll_lazy_flush(rs_roll *roll, int from)
+void rsi_roll_lazy_flush(rs_roll *roll, int from)
 {
   const int F = roll->lazy_top;
   if (from < 0) from = 0;
@@ -77,13 +77,12 @@ static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P
   }
 }
 
-/* roll_lazy_freeze's block of nodes: its ten arrays' blocks fit the first-level cache */
+/* rsi_roll_lazy_freeze's block of nodes: its ten arrays' blocks fit the first-level cache */
 enum { RS_FREEZE_BLOCK = 256 };
 
 /* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
- * current, and the reference's shape covers them. Uses dsr and dsh as scratch (free
- * between an integration's start and its increment). */
-void roll_lazy_freeze(rs_roll *roll, int to)
+ * current, and the reference's shape covers them. */
+void rsi_roll_lazy_freeze(rs_roll *roll, int to)
 {
   const int F = roll->lazy_top;
   /* C sums the increments since it was last 0. A node wound after that was above some of
@@ -95,7 +94,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
   if (to <= F) return;
   const double C = roll->lazy_c, aC = fabs(C);
   const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
-  double *restrict Pp = roll->dsr, *restrict Ep = roll->dsh;
+  double *restrict Pp = roll->scratch.c, *restrict Ep = roll->scratch.q;
   double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
   const double *restrict P = roll->P_node, *restrict L = roll->L;
   double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
@@ -108,7 +107,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
     /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
     for (int j = b0; j < b1; ++j) Pp[j] = P[j] * 1.001 + 1.0;
     rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, b1 - b0);
-    if (roll->p.air_film) roll_air_series(roll, Pp, Ep, b0, b1);
+    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b1);
     /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
      * the three running maxima side by side */
     roll_lazy_bounds(b0, b1, aC, P, Pp, E, Ep, Eref, e, la, lb);
@@ -126,7 +125,7 @@ void roll_lazy_freeze(rs_roll *roll, int to)
 }
 
 /* sigma_r at node j (0: the core), lazy or not */
-double roll_lazy_sigma(const rs_roll *roll, int j)
+double rsi_roll_lazy_sigma(const rs_roll *roll, int j)
 {
   const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
   if (j >= roll->lazy_top) return s;
@@ -151,12 +150,12 @@ static const double *roll_lazy_view(const rs_roll *roll, const double *restrict 
   return v;
 }
 
-const double *roll_lazy_view_r(rs_roll *roll)
+const double *rsi_roll_lazy_view_r(rs_roll *roll)
 {
   return roll_lazy_view(roll, roll->sigma_r, roll->shape_e, roll->lazy_c2, roll->view_r);
 }
 
-const double *roll_lazy_view_theta(rs_roll *roll)
+const double *rsi_roll_lazy_view_theta(rs_roll *roll)
 {
   return roll_lazy_view(roll, roll->sigma_theta, roll->shape_h, 0.0, roll->view_theta);
 }
@@ -170,7 +169,7 @@ const double *roll_lazy_view_theta(rs_roll *roll)
  * stack law's alone, also with air films (their series compliance falls with P: there the
  * bound is an estimate, like the rest of the criterion), so that a roll whose films are all
  * cut off winds as one without air, bit for bit. */
-int roll_lazy_allowed(const rs_roll_params *p)
+int rsi_roll_lazy_allowed(const rs_roll_params *p)
 {
   if (p->radial.law == RS_RADIAL_LINEAR || p->radial.law == RS_RADIAL_PFEIFFER) return 1;
   enum { NG = 400 };

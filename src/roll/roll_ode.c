@@ -11,7 +11,7 @@
 #include "util/error.h"
 #include "util/log_vec.h"
 
-/* ln g^2 at node j: from the pass over the integration's nodes (roll_lg2_range), or else
+/* ln g^2 at node j: from the pass over the integration's nodes (rsi_roll_lg2_range), or else
  * formed when first needed in an epoch. A neighbour's value is usually
  * there already (an interval needs nodes j-1..j+2, and the steps move up the roll): then
  *     ln g_j^2 = ln g_k^2 + ln(E_k / E_j) = ln g_k^2 + 2 atanh(z),  z = (E_k - E_j)/(E_k + E_j),
@@ -60,7 +60,7 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
 {
   const double r = roll_radius_at(roll, x);
   double inv_p = roll->inv_caliper; /* 1 / the pitch of the interval r is in */
-  const double xi = roll->geom ? roll_air_coord(roll, r, &inv_p) : (r - roll->p.core_radius) * inv_p;
+  const double xi = roll->geom ? rsi_roll_air_coord(roll, r, &inv_p) : (r - roll->p.core_radius) * inv_p;
   *xi_out = xi;
   const int last = roll->nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
@@ -99,14 +99,14 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
 }
 
 /* (r - r_c)/t at x = ln r: the layer coordinate g^2 was last evaluated at when x is that
- * point (the end of the step just taken: roll_integrate looks for its nodes there), else
+ * point (the end of the step just taken: rsi_roll_integrate looks for its nodes there), else
  * from the anchored radius; either way without an exp() */
-double roll_layer_coord_at(rs_roll *roll, double x)
+double rsi_roll_layer_coord_at(rs_roll *roll, double x)
 {
   if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
   if (roll->geom) {
     double inv_p;
-    return roll_air_coord(roll, roll_radius_at(roll, x), &inv_p);
+    return rsi_roll_air_coord(roll, roll_radius_at(roll, x), &inv_p);
   }
   return (roll_radius_at(roll, x) - roll->p.core_radius) * roll->inv_caliper;
 }
@@ -117,7 +117,7 @@ double roll_layer_coord_at(rs_roll *roll, double x)
  * below 2.2e-308 of it) takes log() instead, as the lazy path does: an infinite g^2 gives
  * the right-hand side the infinity that makes CVODE say so (the flag is a compare mask as
  * wide as a double: it stays in the vector registers) */
-void roll_lg2_range(rs_roll *roll, int lo, int hi)
+void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->lg2;
   const double *restrict E = roll->Er, Eth = roll->p.E_theta;
@@ -139,7 +139,7 @@ void roll_lg2_range(rs_roll *roll, int lo, int hi)
 /* g^2 at x for the error correction's look inside a step, on a copy of the right-hand
  * side's interval cubic: what it and the step's end keep stay as they were, as the next
  * step starts where this one ended */
-double roll_g2_probe(rs_roll *roll, double x)
+double rsi_roll_g2_probe(rs_roll *roll, double x)
 {
   roll_g2_cubic hc = roll->g2c;
   double dg2, xi;
@@ -147,7 +147,7 @@ double roll_g2_probe(rs_roll *roll, double x)
 }
 
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
-double roll_g2_at(rs_roll *roll, double x, double *dg2)
+double rsi_roll_g2_at(rs_roll *roll, double x, double *dg2)
 {
   if (x != roll->gx || roll->gepoch != roll->epoch) {
     roll->g2x = roll_g2_eval(roll, &roll->g2c, x, &roll->dg2x, &roll->gxi);
@@ -159,19 +159,19 @@ double roll_g2_at(rs_roll *roll, double x, double *dg2)
 }
 
 /* f(x, [w, L]) = [g^2 - 1 - 2w - w^2, w],  x = ln r */
-int roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
+int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
 {
   rs_roll *roll = user;
   const sunrealtype *y = NV_DATA_S(yv); /* the macro: the library's getter is a call */
   sunrealtype *f = NV_DATA_S(ydot);
-  double g2 = roll_g2_at(roll, x, NULL), w = y[0];
+  double g2 = rsi_roll_g2_at(roll, x, NULL), w = y[0];
   f[0] = g2 - 1.0 - 2.0 * w - w * w;
   f[1] = w;
   return isfinite(f[0]) ? 0 : 1; /* recoverable: CVODE retries with a smaller step */
 }
 
 /* J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
-int roll_jac(double x, const double y[2], double J[2][2], void *user)
+int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user)
 {
   (void)x;
   (void)user;
@@ -184,7 +184,7 @@ int roll_jac(double x, const double y[2], double J[2][2], void *user)
 
 /* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in
  * one function instead of five vector operations */
-int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
+int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user)
 {
   const rs_roll *roll = user;
   const sunrealtype *y = NV_DATA_S(yv);
@@ -200,7 +200,7 @@ int roll_ewt(N_Vector yv, N_Vector ewt, void *user)
 /* P_node = the pressures (Pa, compression positive) at the nodes lazy_top..k before the
  * increment, plus add[j] where add != NULL; the layers being wound carry none yet. Nodes
  * below the lazy frontier are not read (roll_lazy.c). Plain loops: they vectorise. */
-void roll_gather_pressure(rs_roll *roll, int k, const double *add)
+void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add)
 {
   double *restrict P = roll->P_node;
   const int n = roll->n < k ? roll->n : k, F = roll->lazy_top;
@@ -227,7 +227,7 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   if (hi <= lo) return RS_OK;
   rs_radial_modulus_n(&roll->p.radial, roll->P_node + lo, roll->Er + lo, hi - lo);
   /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
-   * E_r > 0 checked at load; the pressures are finite: roll_commit); a polynomial or a
+   * E_r > 0 checked at load; the pressures are finite: rsi_roll_commit); a polynomial or a
    * table can leave its range: one vectorised pass, the node looked for only then */
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
@@ -238,7 +238,7 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return roll_modulus_refused(roll, j);
   }
-  if (roll->p.air_film) roll_air_series(roll, roll->P_node, roll->Er, lo, hi);
+  if (roll->p.air_film) rsi_roll_air_series(roll, roll->P_node, roll->Er, lo, hi);
   return RS_OK;
 }
 
@@ -267,15 +267,14 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
   }
   if (bad >= 0)
     return roll_modulus_refused(roll, bad);
-  if (roll->p.air_film) roll_air_series(roll, P, E, lo, hi);
+  if (roll->p.air_film) rsi_roll_air_series(roll, P, E, lo, hi);
   return RS_OK;
 }
 
 /* The moduli of the nodes 0..k are the integration's from now: a new epoch (ln g^2 and the
  * interpolation's caches are formed again: over a long integration only where CVODE's
- * steps look, a few nodes per step, ~1/4 of the nodes of a long roll, since a log at every
- * node at every increment was 7 % of the engine's time; over a short one in a vectorised
- * pass, roll_lg2_range) */
+ * steps look, a few nodes per step, rather than a log at every node at every increment;
+ * over a short one in a vectorised pass, rsi_roll_lg2_range) */
 static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
 {
   if (st) return st;
@@ -284,24 +283,24 @@ static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
   return RS_OK;
 }
 
-/* roll_gather_pressure (nothing added) and roll_set_modulus in one pass over the nodes:
+/* rsi_roll_gather_pressure (nothing added) and rsi_roll_set_modulus in one pass over the nodes:
  * the predictor's modulus, at the pressures before the increment */
-rs_status roll_set_modulus_stress(rs_roll *roll, int k)
+rs_status rsi_roll_set_modulus_stress(rs_roll *roll, int k)
 {
   return roll_modulus_epoch(roll, k, roll_modulus_stress_range(roll, roll->lazy_top, k + 1));
 }
 
 /* The pressures and moduli of the nodes [lo, hi) that have just left the lazy zone
- * (roll_integrate, when an integration starts below the frontier): same epoch */
-rs_status roll_prepare_nodes(rs_roll *roll, int lo, int hi)
+ * (rsi_roll_integrate, when an integration starts below the frontier): same epoch */
+rs_status rsi_roll_prepare_nodes(rs_roll *roll, int lo, int hi)
 {
   return roll_modulus_stress_range(roll, lo, hi); /* flushed: none of them lazy */
 }
 
 /* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees
- * (g^2 = E_theta / E_r, and ln g^2, are formed by roll_lg2_range or where the steps look:
+ * (g^2 = E_theta / E_r, and ln g^2, are formed by rsi_roll_lg2_range or where the steps look:
  * roll_lg2). */
-rs_status roll_set_modulus(rs_roll *roll, int k)
+rs_status rsi_roll_set_modulus(rs_roll *roll, int k)
 {
   return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy_top, k + 1));
 }

@@ -3,7 +3,7 @@
  *
  * Below an increment's start node the engine keeps the reference's (w, L), integrated with
  * the modulus E_ref of the reference's time. Since then each increment has added c e_j to
- * the radial stress there (e the reference's shape, roll_block_increment), so the pressure
+ * the radial stress there (e the reference's shape, rsi_roll_block_increment), so the pressure
  * is P_ref - C e_j, C = ref_c the sum of those c, and g^2 = E_theta/E_r has moved by
  *     dg^2_j = -g^2_ref (dE_r/dP / E_ref) (-C e_j) = C beta_j,   beta_j = g^2_ref kappa_j e_j,
  * kappa = d ln E_r / dP at P_ref (first order in the drift eps = E_r/E_ref - 1). The
@@ -15,7 +15,7 @@
  * first order: two scales, so the deep part stays lazy (roll_lazy.c). What is left is
  * second order in the drift (the curvature of 1/E_r, the Riccati term -p_w^2 C^2, the
  * pressure the correction itself adds, the exponential's), so the start-node search holds
- * eps^2 rather than eps to the tolerance (roll_profile_bound), and the start stays near the
+ * eps^2 rather than eps to the tolerance (rsi_roll_profile_bound), and the start stays near the
  * surface however many increments the reference serves: the nodes that must be integrated
  * again at every increment are those the last increment's own drift reaches, not the
  * ones the drift since the reference does. */
@@ -53,7 +53,7 @@ static inline void roll_profile_weights(double z, int series, double *q, double 
   }
 }
 
-/* Layer j's coefficients of the recurrence (roll_profile_build): over the layer
+/* Layer j's coefficients of the recurrence (rsi_roll_profile_build): over the layer
  * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B. d holds the differences of
  * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where
  * they hold (the weights' by z, the exponential's by its argument), else the closed forms,
@@ -127,25 +127,24 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
  * between the nodes was 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
-int roll_profile_build(rs_roll *roll, int from, int top)
+int rsi_roll_profile_build(rs_roll *roll, int from, int top)
 {
   double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
   const double *restrict E = roll->Er_ref, *restrict P = roll->P_node, Eth = roll->p.E_theta;
-  /* scratch, free once a reference's increment is committed, above the lazy nodes: u
-   * (block_share) and d (scan_eps); the moduli a little above P, then the coefficients
-   * (P_mean, dsh, lazy_a, lazy_b) */
-  double *restrict u = roll->block_share, *restrict d = roll->scan_eps;
-  double *Q = roll->dsh, *Cf = roll->P_mean; /* the arrays Pp and Ep were: not restrict */
-  double *restrict A = roll->lazy_a, *restrict B = roll->lazy_b;
+  /* the roll's scratch: u and d; the moduli a little above P, then in the same arrays the
+   * coefficients Q and Cf (so not restrict), A and B */
+  double *restrict u = roll->scratch.u, *restrict d = roll->scratch.d;
+  double *Q = roll->scratch.q, *Cf = roll->scratch.c;
+  double *restrict A = roll->scratch.a, *restrict B = roll->scratch.b;
   const int lo = from > 0 ? from - 1 : 0; /* the first layer's slopes read its neighbour */
   for (int b0 = lo; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
-    double *Pp = roll->P_mean, *Ep = roll->dsh;
+    double *Pp = Cf, *Ep = Q;
     /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
     for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
     rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
-    if (roll->p.air_film) roll_air_series(roll, Pp, Ep, b0, b0 + nb);
+    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b0 + nb);
     for (int j = b0; j < b0 + nb; ++j) u[j] = (Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])) * e[j];
   }
   /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
@@ -170,7 +169,7 @@ int roll_profile_build(rs_roll *roll, int from, int top)
       roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, A + j, B + j);
   }
   /* from the core, where p = 0; or on from the profile's values at from (a reference that
-   * keeps the nodes below it, roll_reference_extend) */
+   * keeps the nodes below it, rsi_roll_reference_extend) */
   if (from == 0) {
     pw[0] = 0.0;
     pL[0] = 0.0;
@@ -195,15 +194,15 @@ int roll_profile_build(rs_roll *roll, int from, int top)
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
 }
 
-/* A new reference from node `from` up (roll_reuse_start), before it is integrated: below
+/* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
  * the node the reference's values take their first-order correction for the drift since
  * the last reference, C = ref_c, for good,
  *     (w, L)_j += C (p_w, p_L)_j,   e_j *= exp(C (p_L,j - p_L,from)),   E_ref,j = E_r,j,
  * the shape so that it stays exp(L) up to a constant, and continuous at the node, where the
- * integration's shape joins it (roll_add_one). The drift there restarts from 0: what the
+ * integration's shape joins it (rsi_roll_add_one). The drift there restarts from 0: what the
  * correction leaves is second order (the start-node search bounded it). Every node was
- * taken out of the lazy zone first (roll_integrate), so that the shape may change. */
-void roll_reference_rebase(rs_roll *roll, int from)
+ * taken out of the lazy zone first (rsi_roll_integrate), so that the shape may change. */
+void rsi_roll_reference_rebase(rs_roll *roll, int from)
 {
   const double C = roll->ref_c, pLf = roll->prof_L[from];
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->shape_e;
@@ -220,7 +219,7 @@ void roll_reference_rebase(rs_roll *roll, int from)
   roll->shape_max *= exp(2.0 * fabs(C) * roll->prof_max);
   /* the drift is in the rebased values now: should this increment fail, the next starts
    * at or below the node, uncorrected (the nodes above hold the last reference's values,
-   * whose drift C no longer tells: as roll_integrate marks them for an integration from
+   * whose drift C no longer tells: as rsi_roll_integrate marks them for an integration from
    * the node, but before anything can fail) */
   roll->ref_c = 0.0;
   roll->ref_top = from;
@@ -228,12 +227,12 @@ void roll_reference_rebase(rs_roll *roll, int from)
 }
 
 /* A new reference from node ref_from up, its increment committed: the nodes above it hold
- * this integration's (w, L) and modulus (roll_integrate), the shape follows it
- * (roll_add_one, roll_block_increment); below they were rebased (roll_reference_rebase).
+ * this integration's (w, L) and modulus (rsi_roll_integrate), the shape follows it
+ * (rsi_roll_add_one, rsi_roll_block_increment); below they were rebased (rsi_roll_reference_rebase).
  * The profile goes on from the node: to first order the drift to come below it is, as
  * before, C times the shape's forcing, so p there is what it was. The drift since is this
  * increment's own deep scale; the reference's age starts again. */
-void roll_reference_extend(rs_roll *roll)
+void rsi_roll_reference_extend(rs_roll *roll)
 {
   /* as far as the shape followed the integration (not where its scale would overflow) */
   const int from = roll->ref_from;
@@ -246,11 +245,11 @@ void roll_reference_extend(rs_roll *roll)
     roll->prof_top = -1;
     return;
   }
-  roll->prof_top = roll_profile_build(roll, from, top); /* w stored to top: the caller */
+  roll->prof_top = rsi_roll_profile_build(roll, from, top); /* w stored to top: the caller */
   roll->ref_c = roll->c_deep;
 }
 
-/* The start-node search's error bound for a start s0 (roll_reuse_start), in units of T0/s,
+/* The start-node search's error bound for a start s0 (rsi_roll_reuse_start), in units of T0/s,
  * from the largest drift eps_max = |E_r/E_ref - 1| of the nodes at and below s0 and their
  * largest L: at first order eps_max exp(L_max - Ls); with the deep part corrected, the
  * second order's eps_max^2 / 4 exp(L_max - Ls), but only where the drift is small enough
@@ -260,7 +259,7 @@ void roll_reference_extend(rs_roll *roll)
  * bound holds as eps is eps/2, and the one the second holds is eps^2/8 = (eps^2/4)/2
  * (measured on a Pfeiffer roll: the remainder is 0.135 eps^2 against the first-order
  * term's eps, test_roll_profile.profile_first_order). */
-double roll_profile_bound(double eps_max, double L_max, double Ls, int second)
+double rsi_roll_profile_bound(double eps_max, double L_max, double Ls, int second)
 {
   if (!second) return eps_max * exp(L_max - Ls);
   return eps_max <= 0.1 ? 0.25 * eps_max * eps_max * exp(L_max - Ls) : INFINITY;

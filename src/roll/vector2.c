@@ -2,21 +2,18 @@
  *
  * Why: the roll engine's state has two components, so each of CVODE's vector operations
  * does two flops, and the serial implementation's generality (special cases of the
- * coefficients, loops, length checks) costs far more than the flops: callgrind measured
- * N_VLinearSum_Serial alone at ~130 instructions a call and a quarter of the engine's
- * instructions (docs/performance.md). SUNDIALS lets a program supply its own vector
- * operations through the N_Vector ops table; these compute the same quantities as the
- * serial ones (a x + b y is evaluated as written, so where the serial code factors
- * c (x + y) the last bit may differ). Everything else stays SUNDIALS' own.
- * The same for Newton's method on the 2 x 2 corrector equations: SUNDIALS' Newton solver,
- * the linear-solver interface and the dense LU spent more on their bookkeeping (scaling
- * for a stale matrix, copies, loops and checks) than the six flops of a 2 x 2
- * elimination; CVODE accepts any nonlinear solver that solves its residual. */
+ * coefficients, loops, length checks) costs far more than the flops (docs/performance.md).
+ * SUNDIALS lets a program supply its own vector operations through the N_Vector ops table;
+ * these compute the same quantities as the serial ones (a x + b y is evaluated as written,
+ * so where the serial code factors c (x + y) the last bit may differ). Everything else
+ * stays SUNDIALS' own.
+ * And the corrector equations: CVODE accepts any nonlinear solver that solves its
+ * residual, and the roll's, quadratic in w, has a closed-form root (newton2_solve), where
+ * SUNDIALS' Newton solver with a linear solver would iterate. */
 #include <math.h>
 #include <stdlib.h>
 
 #include <cvode/cvode.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include "util/sundials_compat.h"
 #include "vector2.h"
@@ -137,24 +134,15 @@ int rs_roll_vector2_specialise(N_Vector v)
   return 0;
 }
 
-/* ---- Newton's method for the 2 x 2 systems of CVODE's steps ------------------------- */
+/* ---- The exact corrector for the 2 x 2 systems of CVODE's steps ---------------------- */
 
 typedef struct newton2 {
-  SUNNonlinSolSysFn sys;          /* CVODE's residual F(ycor) */
-  SUNNonlinSolLSetupFn lsetup;    /* CVODE's linear-solver setup: its convergence bookkeeping */
-  SUNNonlinSolConvTestFn ctest;   /* CVODE's convergence test */
-  void *ctest_data;
+  SUNNonlinSolSysFn sys; /* CVODE's residual F(ycor) */
   void *cvode;
-  SUNLinearSolver setup_only; /* attached beside it, with a matrix it never forms: */
-  SUNMatrix unused;           /* see rs_roll_newton2_attach */
-  rs_roll_jac2_fn jac;
-  void *user;
-  int quadratic;              /* f = (a(t) + p w + q w^2, b(t) + w): the exact corrector */
-  double p, q;
-  N_Vector res, delta;
+  double p, q;           /* f = (a(t) + p w + q w^2, b(t) + w) */
+  N_Vector res;
   int maxiters, curiter;
   long niters, nconvfails; /* in the last solve */
-  long njac;               /* in all solves */
 } newton2;
 
 #define NEWTON2(S) ((newton2 *)(S)->content)
@@ -195,12 +183,26 @@ int rs_roll_corrector_quadratic(double gamma, double p, double q, double w, cons
   return 0;
 }
 
-static int newton2_solve_exact(newton2 *c, const sunrealtype *yp, sunrealtype *yc,
-                               const sunrealtype *r, double gamma, void *mem, N_Vector ycor)
+/* Solves F(ycor) = ycor + rl1 zn1 - gamma f(t, ypred + ycor) = 0 for the corrector ycor
+ * exactly (rs_roll_corrector_quadratic): one residual at the initial guess, whose f carries
+ * a(t) and b(t). gamma is all it needs from CVODE. CVODE's setup requests (call_setup) are
+ * ignored: no Jacobian or matrix is formed. CVODE adds the counts to its own after every
+ * solve: they are per solve. */
+static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vector w,
+                         sunrealtype tol, sunbooleantype call_setup, void *mem)
 {
+  (void)w;
+  (void)tol;
+  (void)call_setup;
+  newton2 *c = NEWTON2(S);
+  sunrealtype *yc = D(ycor);
+  const sunrealtype *yp = D(y0), *r = D(c->res);
+  c->niters = c->nconvfails = 0;
   c->curiter = 0;
+  sunrealtype gamma;
+  if (CVodeGetCurrentGamma(c->cvode, &gamma) != CV_SUCCESS) return SUN_NLS_MEM_NULL;
   int flag = c->sys(ycor, c->res, mem);
-  if (flag != SUN_NLS_SUCCESS) return flag;
+  if (flag != SUN_NLS_SUCCESS) return flag; /* CVODE's code: < 0 fatal, > 0 recoverable */
   double d[2];
   if (rs_roll_corrector_quadratic(gamma, c->p, c->q, yp[0] + yc[0], r, d) != 0) {
     c->nconvfails = 1;
@@ -212,100 +214,9 @@ static int newton2_solve_exact(newton2 *c, const sunrealtype *yp, sunrealtype *y
   return SUN_NLS_SUCCESS;
 }
 
-/* Solves F(ycor) = ycor + rl1 zn1 - gamma f(t, ypred + ycor) = 0 for the corrector ycor,
- * F' = I - gamma J: two equations, so each iteration forms the exact Jacobian at the
- * current iterate and eliminates with partial pivoting (full Newton: no stale matrix to
- * decide about). Convergence is CVODE's own test (rate estimate, tolerance tq[4]). */
-static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vector w,
-                         sunrealtype tol, sunbooleantype call_setup, void *mem)
-{
-  newton2 *c = NEWTON2(S);
-  sunrealtype *yc = D(ycor), *r = D(c->res), *d = D(c->delta);
-  const sunrealtype *yp = D(y0);
-  int flag;
-  /* CVODE adds these counts to its own after every solve: they are per solve */
-  c->niters = c->nconvfails = 0;
-  if (c->quadratic) { /* gamma is all it needs from CVODE (one getter, not nine) */
-    sunrealtype gamma;
-    if (CVodeGetCurrentGamma(c->cvode, &gamma) != CV_SUCCESS) return SUN_NLS_MEM_NULL;
-    return newton2_solve_exact(c, yp, yc, r, gamma, mem, ycor);
-  }
-  sunrealtype t, gamma, rl1;
-  N_Vector ypred, yn, fn, zn1;
-  void *user_data;
-  if (CVodeGetNonlinearSystemData(c->cvode, &t, &ypred, &yn, &fn, &gamma, &rl1, &zn1,
-                                  &user_data) != CV_SUCCESS)
-    return SUN_NLS_MEM_NULL;
-  /* CVODE decides when a setup is due (every 20 steps, a large change of gamma, after a
-   * failure) and resets its convergence-rate estimate there (the setup itself forms
-   * nothing: rs_roll_newton2_attach); the test below is CVODE's and uses that estimate.
-   * The exact corrector (above) calls no convergence test, so nothing reads that
-   * estimate: it skips the setup (a third of the steps asked for one: 1.5 % of the
-   * reel's instructions, the same steps and results; docs/performance.md). CVODE's
-   * record of the last setup (its step and gamma) then stays where it was, so it asks
-   * for one at every step after the 20th: the request is ignored alike, and the Newton
-   * path, which honours it, resets that record at its first setup */
-  if (call_setup && c->lsetup) {
-    sunbooleantype jcur;
-    flag = c->lsetup(SUNFALSE, &jcur, mem);
-    if (flag != SUN_NLS_SUCCESS) return flag;
-  }
-  for (c->curiter = 0;;) {
-    flag = c->sys(ycor, c->res, mem);
-    if (flag != SUN_NLS_SUCCESS) break; /* CVODE's code: < 0 fatal, > 0 recoverable */
-    const double y[2] = {yp[0] + yc[0], yp[1] + yc[1]};
-    double J[2][2];
-    c->njac++;
-    if (c->jac(t, y, J, c->user) != 0) {
-      flag = SUN_NLS_CONV_RECVR;
-      break;
-    }
-    /* (I - gamma J) d = -res */
-    double a00 = 1.0 - gamma * J[0][0], a01 = -gamma * J[0][1];
-    double a10 = -gamma * J[1][0], a11 = 1.0 - gamma * J[1][1];
-    double b0 = -r[0], b1 = -r[1];
-    if (fabs(a10) > fabs(a00)) {
-      double t0 = a00, t1 = a01, tb = b0;
-      a00 = a10, a01 = a11, b0 = b1;
-      a10 = t0, a11 = t1, b1 = tb;
-    }
-    const double l = a00 != 0.0 ? a10 / a00 : 0.0, u = a11 - l * a01;
-    if (a00 == 0.0 || u == 0.0) { /* singular: CVODE retries with a smaller step */
-      flag = SUN_NLS_CONV_RECVR;
-      break;
-    }
-    d[1] = (b1 - l * b0) / u;
-    d[0] = (b0 - a01 * d[1]) / a00;
-    yc[0] += d[0];
-    yc[1] += d[1];
-    c->niters++;
-    flag = c->ctest(S, ycor, c->delta, tol, w, c->ctest_data);
-    if (flag != SUN_NLS_CONTINUE) break;
-    if (++c->curiter >= c->maxiters) {
-      flag = SUN_NLS_CONV_RECVR;
-      break;
-    }
-  }
-  if (flag == SUN_NLS_CONV_RECVR) c->nconvfails++;
-  return flag;
-}
-
 static int newton2_set_sys(SUNNonlinearSolver S, SUNNonlinSolSysFn f)
 {
   NEWTON2(S)->sys = f;
-  return SUN_NLS_SUCCESS;
-}
-
-static int newton2_set_lsetup(SUNNonlinearSolver S, SUNNonlinSolLSetupFn f)
-{
-  NEWTON2(S)->lsetup = f;
-  return SUN_NLS_SUCCESS;
-}
-
-static int newton2_set_ctest(SUNNonlinearSolver S, SUNNonlinSolConvTestFn f, void *data)
-{
-  NEWTON2(S)->ctest = f;
-  NEWTON2(S)->ctest_data = data;
   return SUN_NLS_SUCCESS;
 }
 
@@ -339,9 +250,6 @@ static int newton2_free(SUNNonlinearSolver S)
   if (!S) return SUN_NLS_SUCCESS;
   if (S->content) {
     N_VDestroy(NEWTON2(S)->res);
-    N_VDestroy(NEWTON2(S)->delta);
-    if (NEWTON2(S)->setup_only) SUNLinSolFreeEmpty(NEWTON2(S)->setup_only);
-    if (NEWTON2(S)->unused) SUNMatDestroy(NEWTON2(S)->unused);
     free(S->content);
     S->content = NULL;
   }
@@ -349,76 +257,27 @@ static int newton2_free(SUNNonlinearSolver S)
   return SUN_NLS_SUCCESS;
 }
 
-/* The linear solver attached beside the Newton solver: it has nothing to set up and is
- * never asked to solve (newton2_solve eliminates its own 2 x 2 systems). */
-static SUNLinearSolver_Type setup_only_type(SUNLinearSolver S)
-{
-  (void)S;
-  return SUNLINEARSOLVER_DIRECT;
-}
-
-/* CVODE's linear-system function for it: the matrix is never read, so nothing is formed */
-static int setup_only_system(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A,
-                             sunbooleantype jok, sunbooleantype *jcur, sunrealtype gamma,
-                             void *user, N_Vector t1, N_Vector t2, N_Vector t3)
-{
-  (void)t; (void)y; (void)fy; (void)A; (void)jok; (void)gamma; (void)user;
-  (void)t1; (void)t2; (void)t3;
-  *jcur = SUNTRUE;
-  return 0;
-}
-
-static int setup_only_setup(SUNLinearSolver S, SUNMatrix A)
-{
-  (void)S;
-  (void)A;
-  return SUNLS_SUCCESS;
-}
-
-static int setup_only_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, sunrealtype tol)
-{
-  (void)S; (void)A; (void)x; (void)b; (void)tol;
-  return SUNLS_PACKAGE_FAIL_UNREC; /* not called: a call would be a wiring error */
-}
-
-static SUNLinearSolver setup_only_create(SUNContext ctx)
-{
-  SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
-  if (!S) return NULL;
-  S->ops->gettype = setup_only_type;
-  S->ops->setup = setup_only_setup;
-  S->ops->solve = setup_only_solve;
-  return S;
-}
-
 SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *cvode_mem,
-                                          rs_roll_jac2_fn jac, void *user)
+                                          double p, double q)
 {
   SUNNonlinearSolver S = SUNNonlinSolNewEmpty(ctx);
   if (!S) return NULL;
   newton2 *c = calloc(1, sizeof *c);
   S->content = c;
-  if (c) {
-    c->res = N_VClone(tmpl);
-    c->delta = N_VClone(tmpl);
-    c->setup_only = setup_only_create(ctx);
-    c->unused = SUNDenseMatrix(2, 2, ctx);
-  }
-  if (!c || !c->res || !c->delta || !c->setup_only || !c->unused) {
+  if (c) c->res = N_VClone(tmpl);
+  if (!c || !c->res) {
     newton2_free(S);
     return NULL;
   }
   c->cvode = cvode_mem;
-  c->jac = jac;
-  c->user = user;
+  c->p = p;
+  c->q = q;
   c->maxiters = 3; /* CVODE's default; it sets its own when the solver is attached */
   S->ops->gettype = newton2_type;
   S->ops->initialize = newton2_initialize;
   S->ops->solve = newton2_solve;
   S->ops->free = newton2_free;
   S->ops->setsysfn = newton2_set_sys;
-  S->ops->setlsetupfn = newton2_set_lsetup;
-  S->ops->setctestfn = newton2_set_ctest;
   S->ops->setmaxiters = newton2_set_maxiter;
   S->ops->getnumiters = newton2_num_iters;
   S->ops->getcuriter = newton2_cur_iter;
@@ -428,22 +287,5 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
 
 int rs_roll_newton2_attach(SUNNonlinearSolver S)
 {
-  newton2 *c = NEWTON2(S);
-  if (CVodeSetNonlinearSolver(c->cvode, S) != CV_SUCCESS ||
-      CVodeSetLinearSolver(c->cvode, c->setup_only, c->unused) != CV_SUCCESS)
-    return -1;
-  return CVodeSetLinSysFn(c->cvode, setup_only_system) == CV_SUCCESS ? 0 : -1;
-}
-
-void rs_roll_newton2_set_quadratic(SUNNonlinearSolver S, double p, double q)
-{
-  newton2 *c = NEWTON2(S);
-  c->quadratic = 1;
-  c->p = p;
-  c->q = q;
-}
-
-long rs_roll_newton2_jacobians(SUNNonlinearSolver S)
-{
-  return S && S->content ? NEWTON2(S)->njac : 0;
+  return CVodeSetNonlinearSolver(NEWTON2(S)->cvode, S) == CV_SUCCESS ? 0 : -1;
 }

@@ -17,10 +17,10 @@
 static void selftest_passes(void)
 {
   double err = NAN;
-  CHECK(roll_corrector_selftest(0, &err) == 1);
+  CHECK(rsi_roll_corrector_selftest(0, &err) == 1);
   CHECK_LOG("self-test relative error", err);
   CHECK_LT(err, 1e-4);
-  CHECK(roll_corrector_exact_trusted() == 1);
+  CHECK(rsi_roll_corrector_exact_trusted() == 1);
   rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, 20);
   rs_roll *roll = wind(&p, 20, 1, 500.0);
   if (!roll) return;
@@ -37,11 +37,11 @@ static void selftest_passes(void)
 static void selftest_catches_stale_norm(void)
 {
   double err = 0.0;
-  CHECK(roll_corrector_selftest(1, &err) == 0);
+  CHECK(rsi_roll_corrector_selftest(1, &err) == 0);
   CHECK_LOG("self-test relative error, sabotaged", err);
   CHECK_LT(1e-2, err);
   /* and the sabotage leaves nothing behind: the next self-test passes */
-  CHECK(roll_corrector_selftest(0, &err) == 1);
+  CHECK(rsi_roll_corrector_selftest(0, &err) == 1);
 }
 
 /* max |a - b| / max |b| over n values */
@@ -62,9 +62,9 @@ static double max_rel(const double *a, const double *b, int n)
 static void agree(const rs_roll_params *p, int n, int per_step, double tol)
 {
   rs_roll *exact = wind(p, n, per_step, 500.0);
-  roll_corrector_force_newton(1);
+  rsi_roll_corrector_force_newton(1);
   rs_roll *newton = wind(p, n, per_step, 500.0);
-  roll_corrector_force_newton(0);
+  rsi_roll_corrector_force_newton(0);
   if (!exact || !newton) goto done;
   CHECK(exact->NLS != NULL);
   CHECK(newton->NLS == NULL && newton->fallback_LS != NULL && newton->fallback_A != NULL);

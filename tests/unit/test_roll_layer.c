@@ -1,6 +1,6 @@
 /* The fused one-layer increment (src/roll/roll_layer.c) and w kept as each step's quintic
- * (roll->w_lazy, roll_integrate.c) are the two-step path (roll_block_increment then
- * roll_commit, w stored node by node) operation for operation: a roll wound through
+ * (roll->w_lazy, roll_integrate.c) are the two-step path (rsi_roll_block_increment then
+ * rsi_roll_commit, w stored node by node) operation for operation: a roll wound through
  * rs_roll_add_layers and a twin wound by the same steps spelled out with the fused path
  * and the kept quintics switched off must hold the same stresses bit for bit.
  *
@@ -14,7 +14,7 @@
  *                       steps kept w as their quintics.
  *   quadratic_air       the same with Hakiel's quadratic E_r(P) (the other one-pass branch
  *                       of rs_radial_modulus_stress_n) and an entrained air film under
- *                       every layer (roll_air_series in the predictor's modulus).
+ *                       every layer (rsi_roll_air_series in the predictor's modulus).
  *   nonfinite_same      an increment whose stresses overflow above the reused start (a web
  *                       stiffer across than along, g < 1, so the decays grow down the roll,
  *                       and a tension near the largest double) fails as the two-step path
@@ -30,7 +30,7 @@
  *                       97 layers of a 5000-layer roll, within 2e-14 (measured 1.8e-15;
  *                       the series cut at z^5 is off by 2.2e-13), on the lazy path.
  *   lg2_range           the same for ln g^2 formed in one pass over a short integration's
- *                       nodes (roll_lg2_range, rs_log_positive): within 4e-15.
+ *                       nodes (rsi_roll_lg2_range, rs_log_positive): within 4e-15.
  *   lg2_range_same_roll the pass and the lazy path wind the same 1970-layer roll: sigma_r
  *                       within rtol of the largest (measured 0.22 rtol: rounding moves
  *                       some of CVODE's steps; they are not bit for bit). */
@@ -63,21 +63,21 @@ static rs_roll *newsprint(int quadratic_air)
   return roll;
 }
 
-/* rs_roll_add_layers for one layer, with roll_block_increment + roll_commit in place of
- * roll_add_one and w stored at every node (w_lazy off) */
+/* rs_roll_add_layers for one layer, with rsi_roll_block_increment + rsi_roll_commit in place of
+ * rsi_roll_add_one and w stored at every node (w_lazy off) */
 static rs_status add_two_step(rs_roll *roll, double T0)
 {
   const int k_old = roll->n, k = k_old + 1, top = k - roll->shift;
   roll->lazy_ok = roll->lazy_allowed;
   roll->w_lazy = 0;
   roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
-  rs_status st = roll_set_modulus_stress(roll, top);
-  if (st == RS_OK) st = roll_integrate(roll, top);
+  rs_status st = rsi_roll_set_modulus_stress(roll, top);
+  if (st == RS_OK) st = rsi_roll_integrate(roll, top);
   if (st == RS_OK) {
-    roll_block_increment(roll, k_old, 1, &T0, NULL);
-    st = roll_commit(roll, 1, &T0);
+    rsi_roll_block_increment(roll, k_old, 1, &T0, NULL);
+    st = rsi_roll_commit(roll, 1, &T0);
   }
-  roll_start_release(roll, st);
+  rsi_roll_start_release(roll, st);
   if (st) return st;
   roll->n = k;
   roll->stats.increments++;
@@ -152,7 +152,7 @@ static void run(int quadratic_air)
 /* ln g^2 as the interpolation reads it against log(E_theta / E_r), at the nodes formed in
  * the roll's latest epoch, every 97 layers of a 5000-layer roll: formed one by one when a
  * step first looks (range = 0: the lazy path, roll_lg2) or all in one pass before the
- * integration (the default for a span of up to RS_LG2_RANGE_MAX nodes, roll_lg2_range) */
+ * integration (the default for a span of up to RS_LG2_RANGE_MAX nodes, rsi_roll_lg2_range) */
 static void lg2_check(int range, double tol)
 {
   enum { M = 5000 };

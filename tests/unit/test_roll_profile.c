@@ -8,7 +8,7 @@
  *                        (ratios ~4 for each halving: second order, so the profile is the
  *                        first-order term); the remainder at 2 % drift is under 3 % of the
  *                        correction, and under eps/4 = 0.5 % of it (the start-node
- *                        search's calibration, roll_profile_bound; measured 0.27 %)
+ *                        search's calibration, rsi_roll_profile_bound; measured 0.27 %)
  *   constant_modulus     a constant E_r never drifts: the profile is 0 at every node
  *   failed_reference     a reference's increment that overflows (T0 = 1e308 N/m) fails and
  *                        the roll winds on at once, as a twin that never saw it (its profile
@@ -43,12 +43,12 @@ static rs_status integrate_from_core(rs_roll *roll, int k, const double *e, doub
                                      const double *P0)
 {
   for (int j = 0; j <= k; ++j) roll->P_node[j] = P0[j] - (e ? C * e[j] : 0.0);
-  rs_status st = roll_set_modulus(roll, k);
+  rs_status st = rsi_roll_set_modulus(roll, k);
   if (st) return st;
   const rs_reuse keep = roll->p.reuse;
   roll->p.reuse = RS_REUSE_OFF;
   roll->w_lazy = 0;
-  st = roll_integrate(roll, k);
+  st = rsi_roll_integrate(roll, k);
   roll->p.reuse = keep;
   return st;
 }
@@ -63,8 +63,8 @@ static void profile_first_order(void)
   if (!roll) return;
   const int k = n - roll->shift;
   static double P0[n + 1], L0[n + 1], w0[n + 1], e[n + 1], pw[n + 1], pL[n + 1];
-  roll_lazy_flush(roll, 0);
-  CHECK(roll_set_modulus_stress(roll, k) == RS_OK);
+  rsi_roll_lazy_flush(roll, 0);
+  CHECK(rsi_roll_set_modulus_stress(roll, k) == RS_OK);
   memcpy(P0, roll->P_node, sizeof P0);
   CHECK(integrate_from_core(roll, k, NULL, 0.0, P0) == RS_OK);
   memcpy(L0, roll->L, sizeof L0);
@@ -72,7 +72,7 @@ static void profile_first_order(void)
   /* the reference's shape (any scale: the profile is linear in it) */
   for (int j = 0; j <= k; ++j) e[j] = exp(L0[j] - L0[k]);
   memcpy(roll->shape_e, e, sizeof e);
-  CHECK(roll_profile_build(roll, 0, k) == k);
+  CHECK(rsi_roll_profile_build(roll, 0, k) == k);
   memcpy(pw, roll->prof_w, sizeof pw);
   memcpy(pL, roll->prof_L, sizeof pL);
   /* C for a 2 % drift at most: eps_j = kappa_j |C| e_j, kappa = 1/(P + K1) (Pfeiffer) */
@@ -310,7 +310,7 @@ static rs_roll *wind_deep(const rs_roll_params *p, int n, double T0, int deep)
   return roll;
 }
 
-/* references from a node above the core (roll_reference_rebase): they happen, they
+/* references from a node above the core (rsi_roll_reference_rebase): they happen, they
  * replace most integrations from the core, and the roll is as accurate against a tight
  * reference as with every reference from the core */
 static void deep_reference(void)

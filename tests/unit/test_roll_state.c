@@ -52,7 +52,7 @@ static void rewind_is_exact(void)
 /* An increment whose stresses are not finite (a wound-on tension of 1e308 N/m: T0/s
  * overflows) fails with RS_ERR_SOLVER saying so and leaves the roll's stresses exactly as
  * they were: the one-layer increment is checked before anything is written
- * (src/roll/roll_layer.c, roll_commit); then the roll winds on. */
+ * (src/roll/roll_layer.c, rsi_roll_commit); then the roll winds on. */
 static void nonfinite_keeps_roll(void)
 {
   enum { N = 1000 };

@@ -411,7 +411,7 @@ static void lumping_corrected(void)
   rs_roll_destroy(&ref_frozen);
 }
 
-/* The reuse of the deep solution (roll.c, roll_reuse_start) against every increment
+/* The reuse of the deep solution (roll.c, rsi_roll_reuse_start) against every increment
  * integrated from the core, on the Pfeiffer newsprint roll, where the modulus drifts with
  * every layer. Its bound is tol x T0/s per increment at any node (tol = RS_ACCURACY_PER_RTOL
  * x rtol); summed over the increments that reach a node that is at most ~N tol (T0/s) / P

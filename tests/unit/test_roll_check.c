@@ -1,0 +1,116 @@
+/* The roll engine's invariants (src/roll/roll_check.c, stated in roll_internal.h).
+ *   holds_while_winding  after every increment of a 800-layer newsprint roll (the reuse,
+ *                        the lazy zone and the drift profile in use), of one with Hakiel's
+ *                        placement and of one wound four layers a step, every invariant
+ *                        holds, with the checks over the nodes; the rolls did use the lazy
+ *                        zone and the profile, so those checks looked at something
+ *   catches_broken       each of a set of broken states (a pending lazy scale with no lazy
+ *                        node, drift bounds that are not prefix maxima, a profile beyond
+ *                        its bound, a shape beyond its bound, a reference above the roll)
+ *                        is reported, by name; the state restored, none is */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "roll/roll_internal.h"
+#include "roll_helpers.h"
+
+enum { N = 800 };
+
+static rs_roll *newsprint(rs_load_placement placement)
+{
+  rs_roll_params p = pfeiffer_params(0.0762, 70e-6, 3.5e9, 5e3, 60, 1e9, N);
+  p.rtol = 1e-5 / RS_ACCURACY_PER_RTOL; /* the reuse held to 1e-5: long lazy zones */
+  p.placement = placement;
+  rs_roll *roll = NULL;
+  CHECK(rs_roll_create(&p, &roll) == RS_OK);
+  return roll;
+}
+
+/* winds the roll to N layers m at a time, checking the invariants after each increment;
+ * *lazy and *prof: the largest lazy zone and profile seen */
+static void wind_checked(rs_roll *roll, int m, int *lazy, int *prof)
+{
+  const double T[4] = {682.5, 682.5, 682.5, 682.5};
+  int bad = 0;
+  *lazy = *prof = 0;
+  while (rs_roll_layers(roll) + m <= N) {
+    if (rs_roll_add_layers(roll, m, T) != RS_OK) break;
+    const char *why = rsi_roll_check_invariants(roll, 1);
+    if (why && !bad++) fprintf(stderr, "layer %d: %s\n", rs_roll_layers(roll), why);
+    *lazy = roll->lazy_top > *lazy ? roll->lazy_top : *lazy;
+    *prof = roll->prof_top > *prof ? roll->prof_top : *prof;
+  }
+  CHECK(rs_roll_layers(roll) > N - m);
+  CHECK(bad == 0);
+}
+
+static void holds_while_winding(void)
+{
+  int lazy, prof;
+  rs_roll *roll = newsprint(RS_LOAD_BENEATH);
+  if (!roll) return;
+  wind_checked(roll, 1, &lazy, &prof);
+  printf("load beneath: largest lazy zone %d nodes, profile %d nodes\n", lazy, prof);
+  CHECK(lazy > N / 4 && prof > N / 4);
+  rs_roll_destroy(&roll);
+  roll = newsprint(RS_LOAD_HAKIEL);
+  if (!roll) return;
+  wind_checked(roll, 1, &lazy, &prof);
+  printf("Hakiel: largest lazy zone %d nodes\n", lazy);
+  CHECK(lazy > N / 8);
+  rs_roll_destroy(&roll);
+  roll = newsprint(RS_LOAD_BENEATH);
+  if (!roll) return;
+  wind_checked(roll, 4, &lazy, &prof);
+  rs_roll_destroy(&roll);
+}
+
+/* the check reports a broken state, naming what broke (a word of it in `word`) */
+static void expect_broken(rs_roll *roll, const char *word)
+{
+  const char *why = rsi_roll_check_invariants(roll, 1);
+  printf("%s: %s\n", word, why ? why : "(not reported)");
+  CHECK(why != NULL && strstr(why, word) != NULL);
+}
+
+static void catches_broken(void)
+{
+  rs_roll *roll = newsprint(RS_LOAD_BENEATH);
+  if (!roll) return;
+  const double T = 682.5;
+  for (int k = 0; k < N - 50; ++k) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
+  CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
+  CHECK(roll->lazy_top > 10 && roll->prof_top > 10);
+  if (!(roll->lazy_top > 10 && roll->prof_top > 10)) goto done;
+  const int F = roll->lazy_top, P = roll->prof_top;
+  const double a = roll->lazy_a[5], pL = roll->prof_L[P / 2], e = roll->shape_e[3];
+  roll->lazy_a[5] = roll->lazy_a[F - 1] + 1.0;
+  expect_broken(roll, "prefix maxima");
+  roll->lazy_a[5] = a;
+  roll->prof_L[P / 2] = 2.0 * roll->prof_max + 1.0;
+  expect_broken(roll, "prof_max");
+  roll->prof_L[P / 2] = pL;
+  roll->shape_e[3] = 2.0 * roll->shape_max;
+  expect_broken(roll, "shape_max");
+  roll->shape_e[3] = e;
+  roll->lazy_top = 0;
+  expect_broken(roll, "pending scale");
+  roll->lazy_top = F;
+  roll->ref_top = roll->n + 1;
+  expect_broken(roll, "ref_top");
+  roll->ref_top = roll->n - roll->shift;
+  CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
+  /* and the roll winds on as before */
+  CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
+  CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
+done:
+  rs_roll_destroy(&roll);
+}
+
+static const check_case cases[] = {
+    {"holds_while_winding", holds_while_winding},
+    {"catches_broken", catches_broken},
+};
+
+int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
