@@ -91,6 +91,9 @@ typedef struct rs_material {
                             the default of air.roughness); 0 = not given */
   double hoop_strength;  /* Pa: machine-direction compressive strength (starring); 0 = not
                             given */
+  double nit_saturation; /* N/m: the most nip-induced tension one nip adds (measured WIT
+                            levels off with nip load; docs/nip.md, "Two-drum winders");
+                            0 = not given (no cap) */
 } rs_material;
 
 /* Entrained air (docs/roll-model.md, "Entrained air"). The film a web wrapping a roll of

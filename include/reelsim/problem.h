@@ -67,6 +67,30 @@ typedef struct rs_air_spec {
                               or 1 (one surface: TopWeb's convention) */
 } rs_air_spec;
 
+/* A winder with several nips (docs/nip.md, "Two-drum winders"): the scene's `nip:` as a
+ * list and its `winder` block. n_nips = 0: the problem's one nip (`nip`) or none, wound
+ * exactly as without this block. */
+enum { RS_MAX_NIPS = 4 };
+typedef enum rs_nip_position {
+  RS_NIP_AT_NONE,  /* not given (a nip of a center or surface winder) */
+  RS_NIP_AT_FRONT, /* the front drum of a two-drum winder */
+  RS_NIP_AT_REAR,  /* the rear drum */
+  RS_NIP_AT_RIDER  /* the rider roll on top of the roll */
+} rs_nip_position;
+typedef enum rs_winder_type {
+  RS_WINDER_TYPE_CENTER,  /* the roll's weight on its shaft: every nip load as given */
+  RS_WINDER_TYPE_SURFACE, /* likewise; the drive at the surface (documentation, checks) */
+  RS_WINDER_TYPE_TWO_DRUM /* the roll rests on two drums that share its weight */
+} rs_winder_type;
+typedef struct rs_winder_spec {
+  rs_winder_type type;
+  int n_nips;                           /* 0: `nip` alone; else the list, in the scene's order */
+  rs_nip_spec nips[RS_MAX_NIPS];        /* each nip's model, friction, drum and load */
+  rs_nip_position position[RS_MAX_NIPS];
+  double drum_radius[RS_MAX_NIPS];      /* m, two_drum: the drum of a front/rear nip */
+  double drum_distance;                 /* m, two_drum: the drums' centre distance */
+} rs_winder_spec;
+
 typedef struct rs_problem {
   rs_material material;
   rs_core core;
@@ -92,6 +116,10 @@ typedef struct rs_problem {
                               given (winding.accel_torque is the alternative) */
   double core_friction;    /* static web-on-core friction, core.friction (cinching at the core);
                               0 = not given */
+  /* Several nips (nip: as a list) and the winder that carries the roll. With a list, `nip`
+   * holds the first nip's settings (update policy, model) and, as its load, the nips'
+   * total against radius (the /layers/nip_load record). */
+  rs_winder_spec winder;
 } rs_problem;
 
 RS_END_DECLS

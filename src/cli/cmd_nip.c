@@ -42,6 +42,13 @@ int cli_nip(const cli_args *a)
   if (st) return cli_fail_status(st);
   cli_scene_warnings(scene);
   const rs_problem *pb = rs_scene_problem(scene);
+  if (pb->winder.n_nips > 1 || pb->winder.type == RS_WINDER_TYPE_TWO_DRUM) {
+    /* each nip of a list has its own load (a drum's from the statics): one at a time */
+    rs_scene_destroy(&scene);
+    return cli_fail(CLI_EXIT_USAGE, "%s: nip: 'reelsim nip' solves one nip; this scene lists "
+                    "several (docs/nip.md, \"Two-drum winders\"): give that nip as the scene's "
+                    "only nip, with its load", scene_path);
+  }
   if (pb->nip.model != RS_NIP_CONTACT) {
     rs_scene_destroy(&scene);
     return cli_fail(CLI_EXIT_USAGE, "%s: nip.model: 'reelsim nip' needs nip.model: contact", scene_path);

@@ -81,6 +81,13 @@ rs_status rs_h5_write_nip(hid_t loc, const rs_scene *scene, const rs_reel_result
                   : rs_h5_attr_int64(g, "update_every", rs_scene_problem(scene)->nip.update_every);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "solves", res->nip_solves);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "rejected", res->nip_rejected);
+  const rs_winder_spec *w = &rs_scene_problem(scene)->winder;
+  if (st == RS_OK && w->n_nips > 0) { /* nip: as a list (docs/nip.md, "Two-drum winders") */
+    st = rs_h5_attr_int64(g, "nips", w->n_nips);
+    if (st == RS_OK)
+      st = rs_h5_attr_string(g, "winder", w->type == RS_WINDER_TYPE_TWO_DRUM ? "two_drum"
+                                          : w->type == RS_WINDER_TYPE_SURFACE ? "surface" : "center");
+  }
   long long *it = malloc((n ? n : 1) * sizeof *it);
   if (!it && st == RS_OK) st = RS_ERROR(RS_ERR_MEMORY, "out of memory for the nip record");
   for (size_t i = 0; it && i < n; ++i) it[i] = res->nip_iterations[i];

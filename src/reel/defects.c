@@ -32,10 +32,12 @@ const char *rs_starring_criterion_name(rs_starring_criterion c)
 
 /* The drive's share at the core: center winding (and unwinding on a core brake) puts the
  * whole torque there, surface winding none (the drum drives the surface), center-surface
- * its torque_share. */
+ * its torque_share, a two-drum winder none. */
 double rs_defect_core_share(const rs_problem *pb)
 {
   if (pb->nip.model == RS_NIP_NONE) return 1.0;
+  /* two drums drive the roll's surface; its core is free (docs/nip.md, "Two-drum winders") */
+  if (pb->winder.type == RS_WINDER_TYPE_TWO_DRUM) return 0.0;
   switch (pb->nip.winder) {
   case RS_WINDER_CENTER: return 1.0;
   case RS_WINDER_SURFACE: return 0.0;

@@ -58,6 +58,12 @@ static rs_status fill(yn *map, const ys_value *schema, const stems *st)
       rs_status s = fill(kid, f->value, st);
       if (s != RS_OK) return s;
     }
+    /* a mapping written as a list of them (nip:): each entry's defaults */
+    for (int i = 0; kid && kid->kind == YN_SEQ && f->value->list_form && i < kid->n; ++i) {
+      if (kid->kids[i]->kind != YN_MAP) continue;
+      rs_status s = fill(kid->kids[i], f->value->list_form->entry, st);
+      if (s != RS_OK) return s;
+    }
   }
   return RS_OK;
 }

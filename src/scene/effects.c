@@ -141,6 +141,7 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
   if (s->problem.air.on) fprintf(out, "; with the air films the reel stops at the size");
   fprintf(out, "\n");
   print_recipe(out, "tension", &s->problem.tension);
+  if (!ys_print_nips(out, s)) /* nip: as a list (effects_winder.c), else the one nip */
   switch (s->problem.nip.model) {
   case RS_NIP_NONE: fprintf(out, "  - nip: none (T0 = web tension)\n"); break;
   case RS_NIP_FRICTION:
@@ -161,6 +162,7 @@ void rs_scene_print_effects(const rs_scene *s, FILE *out)
                    "will refuse this material (docs/nip.md)\n");
     break;
   }
+  ys_print_nip_saturation(out, s);
   if (s->problem.nip.model != RS_NIP_NONE) {
     if (s->problem.nip.update == RS_NIP_UPDATE_ADAPTIVE)
       fprintf(out, "  - nip updates: adaptive (solved where T0 changes; T0 within %s of itself)\n",

@@ -2,8 +2,10 @@
  *   tension: 350                 -> tension: {law: constant, value: 350}
  *   tension: {table: [...]}      -> tension: {law: table, table: [...]}
  *   centrifugal: true / false    -> centrifugal: {} / no key (air likewise)
- * (the same for nip.load and winding.speed). The new nodes keep the line and origin of what the user
+ *   winder: two_drum             -> winder: {type: two_drum}
+ * (the same for nip.load, each list entry's load, and winding.speed). The new nodes keep the line and origin of what the user
  * wrote, so `tension: abc` is still reported as winding.tension at its line. */
+#include <stdio.h>
 #include <string.h>
 
 #include "scene/scene_internal.h"
@@ -94,6 +96,23 @@ static rs_status normalize_switch(yn *root, const char *key)
   return RS_OK;
 }
 
+/* winder: two_drum -> winder: {type: two_drum} */
+static rs_status normalize_winder(yn *root)
+{
+  int i = yn_map_index(root, "winder");
+  if (i < 0 || root->kids[i]->kind != YN_SCALAR || yn_is_empty(root->kids[i])) return RS_OK;
+  yn *node = root->kids[i];
+  yn *map = yn_new_map(node->file, node->line, node->path);
+  if (!map || (node->origin && yn_set_origin(map, node->origin) != RS_OK)) {
+    yn_free(map);
+    return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  }
+  root->kids[i] = map;
+  /* the scalar itself goes under `type`: it keeps its path, line and origin, so errors
+   * about it name what the user wrote */
+  return yn_map_put(map, "type", node);
+}
+
 rs_status ys_normalize(yn *root)
 {
   rs_status st = RS_OK;
@@ -103,6 +122,13 @@ rs_status ys_normalize(yn *root)
     st = normalize_recipe(root, "winding", "speed");
   if (st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_MAP)
     st = normalize_recipe(root, "nip", "load");
+  for (int i = 0; st == RS_OK && yn_get(root, "nip") && yn_get(root, "nip")->kind == YN_SEQ &&
+                  i < yn_get(root, "nip")->n; ++i) {
+    char entry[32];
+    snprintf(entry, sizeof entry, "nip[%d]", i);
+    if (yn_get(root, entry)->kind == YN_MAP) st = normalize_recipe(root, entry, "load");
+  }
+  if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_winder(root);
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "centrifugal");
   if (st == RS_OK && root && root->kind == YN_MAP) st = normalize_switch(root, "air");
   return st;

@@ -25,6 +25,7 @@ static const ys_range table[] = {
     {"material.pressure_limit", "Pa", 1, 1e12, 1e4, 1e10, "kPa MPa psi"},
     {"material.friction_layer", "", 0, 10, 0.05, 2, ""},
     {"material.hoop_strength", "Pa", 1, 1e12, 1e5, 1e9, "kPa MPa psi"},
+    {"material.nit_saturation", "N/m", 1e-3, 1e7, 5, 2e4, "kN/m N/mm pli"},
     {"material.E_z", "Pa", 1, 1e13, 1e4, 5e11, "kPa MPa GPa"},
     {"material.E_cd", "Pa", 1, 1e13, 1e7, 5e11, "kPa MPa GPa"},
     {"material.nu_md_cd", "", -1, 1, NONE, NONE, ""},
@@ -102,6 +103,8 @@ static const ys_range table[] = {
     {"air.cutoff", "", 0, 1e3, NONE, NONE, ""},
     {"air.pressure", "Pa", 1, 1e9, 3e4, 3e5, "kPa bar psi"},
     {"air.nip_radius", "m", 1e-3, 10, 0.01, 1.5, "mm in"},
+    {"winder.drum_distance", "m", 2e-3, 40, 0.1, 4, "mm in"},
+    {"winder.drum_radius", "m", 1e-3, 10, 0.05, 1.5, "mm in"},
 };
 
 const ys_range *ys_ranges(int *n)
@@ -146,6 +149,7 @@ static rs_status visit(yn *node, const char *path, int column, ys_number_fn fn, 
 static rs_status walk(yn *node, const ys_value *s, const char *path, ys_number_fn fn, void *ctx)
 {
   rs_status bad = RS_OK, st = RS_OK;
+  s = ys_schema_form(s, node);
   if (s->type == YS_FLOAT) return visit(node, path, -1, fn, ctx);
   if (s->type == YS_LIST && node->kind == YN_SEQ) {
     int pairs = is_pair_list(s);

@@ -264,7 +264,8 @@ static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
   return RS_OK;
 }
 
-static rs_status resolve_nip(const yn *root, rs_scene *s)
+/* by_winder: the load comes from the winder's statics (a drum of a two-drum winder) */
+static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
 {
   const int model_kind = ys_enum(root, "nip.model"), winder = ys_enum(root, "nip.winder"),
             update = ys_enum(root, "nip.update");
@@ -281,11 +282,15 @@ static rs_status resolve_nip(const yn *root, rs_scene *s)
   n->model = (rs_nip_model_kind)model_kind;
   const char *model = n->model == RS_NIP_CONTACT ? "contact" : "friction";
 
-  if (!ys_has(root, "nip.load"))
+  rs_status st = RS_OK;
+  if (by_winder && ys_has(root, "nip.load"))
+    return ys_fail(root, "nip.load", "a drum of a two-drum winder carries the roll's weight: "
+                   "its load comes from the winder's statics (remove the key)");
+  if (!by_winder && !ys_has(root, "nip.load"))
     return ys_fail(root, "nip.load", "required by nip model %s (N/m, a number or a recipe)", model);
-  rs_status st = ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
-                                   s->problem.final_radius, &n->load);
-  if (st != RS_OK) return st;
+  if (!by_winder && (st = ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
+                                            s->problem.final_radius, &n->load)) != RS_OK)
+    return st;
 
   if (!ys_has(root, "nip.friction.roll"))
     return ys_fail(root, "nip.friction.roll",
@@ -448,8 +453,10 @@ rs_status ys_resolve(const yn *root, rs_scene *s)
                                              &s->problem.tension),
                            &bad);
   if (fatal(tension)) return tension;
-  if ((st = part(resolve_nip(root, s), &bad)) != RS_OK) return st;
-  if (tension == RS_OK && fatal(st = part(check_drum_capacity(root, s), &bad))) return st;
+  /* the nip, or each nip of a list (resolve_winder.c, handed the one-nip steps) */
+  if ((st = part(ys_resolve_nips(root, s, resolve_nip), &bad)) != RS_OK) return st;
+  if (tension == RS_OK && fatal(st = part(ys_check_nips_capacity(root, s, check_drum_capacity), &bad)))
+    return st;
   if (tension == RS_OK && fatal(st = part(ys_resolve_speed(root, s), &bad))) return st;
   if (mat == RS_OK && fatal(st = part(ys_resolve_storage(root, s), &bad))) return st;
   if (fatal(st = part(resolve_output(root, s), &bad))) return st;

@@ -130,6 +130,13 @@ rs_status ys_resolve_material(const yn *root, rs_material *m)
                      "must be > 0 Pa (got %g; omit the key to skip the check)", hs);
     m->hoop_strength = hs;
   }
+  if (ys_has(root, "material.nit_saturation")) {
+    const double cap = ys_num(root, "material.nit_saturation");
+    if (!(cap > 0.0))
+      return ys_fail(root, "material.nit_saturation",
+                     "must be > 0 N/m (got %g; omit the key for no cap)", cap);
+    m->nit_saturation = cap;
+  }
   /* the sheet in the contact nip (docs/nip.md): 0 = derived (E_z: the roll's nip E_r,
    * E_cd: E_theta); nu_md_cd defaults to 0.3, a typical in-plane Poisson ratio of paper */
   if (ys_has(root, "material.E_z") && !(E_z > 0.0))

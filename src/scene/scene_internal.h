@@ -8,6 +8,7 @@
 #define RS_SCENE_INTERNAL_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "reelsim/scene.h"
 #include "scene/scene_type.h"
@@ -57,6 +58,19 @@ rs_status ys_core_geometry(const yn *root, double *radius, const char **key, dou
 /* resolve_storage.c: winding temperature and humidity, storage stages, the material's
  * thermal, hygroscopic and viscoelastic data, the core's expansion (docs/storage.md). */
 rs_status ys_resolve_storage(const yn *root, rs_scene *scene);
+/* resolve_winder.c: `nip` (a mapping or a list) and `winder` into the problem, and the
+ * drums' capacity of every nip (docs/nip.md, "Two-drum winders"). resolve.c hands in its
+ * steps for one nip (the tree's `nip` mapping into scene->problem.nip; by_winder: its load
+ * comes from the winder's statics) and for one drum's friction capacity along the roll;
+ * the list applies them to each entry. */
+typedef rs_status (*ys_nip_step)(const yn *root, rs_scene *scene, int by_winder);
+typedef rs_status (*ys_capacity_step)(const yn *root, const rs_scene *scene);
+rs_status ys_resolve_nips(const yn *root, rs_scene *scene, ys_nip_step one);
+rs_status ys_check_nips_capacity(const yn *root, rs_scene *scene, ys_capacity_step one);
+/* effects_winder.c: the lines of `nip:` as a list (1 when it printed them, 0 for one nip)
+ * and the nips' saturation, for reelsim check */
+int ys_print_nips(FILE *out, const rs_scene *scene);
+void ys_print_nip_saturation(FILE *out, const rs_scene *scene);
 /* resolve_speed.c: winding.speed and the centrifugal load */
 rs_status ys_resolve_speed(const yn *root, rs_scene *scene);
 

@@ -92,6 +92,7 @@ static const ys_field material_fields[] = {
     OPT("model", &v_name), /* a shipped model these keys change (models.c); gone once inlined */
     OPT("roughness", &v_float),
     OPT("hoop_strength", &v_float),
+    OPT("nit_saturation", &v_float),
     END};
 static const ys_value v_material = MAP(material_fields);
 
@@ -131,6 +132,13 @@ static const ys_name nip_updates[] = {
     {"adaptive", RS_NIP_UPDATE_ADAPTIVE}, {"every", RS_NIP_UPDATE_EVERY}, {NULL, 0}};
 static const ys_value v_nip_update = ENUM(nip_updates);
 
+/* a nip's place on a two-drum winder (docs/nip.md, "Two-drum winders") */
+static const ys_name nip_positions[] = {{"front", RS_NIP_AT_FRONT},
+                                        {"rear", RS_NIP_AT_REAR},
+                                        {"rider", RS_NIP_AT_RIDER},
+                                        {NULL, 0}};
+static const ys_value v_nip_position = ENUM(nip_positions);
+
 static const ys_field friction_fields[] = {OPT("roll", &v_float), OPT("drum", &v_float), END};
 static const ys_value v_friction = MAP(friction_fields);
 
@@ -156,8 +164,24 @@ static const ys_field nip_fields[] = {
     DEF_WHEN("update", &v_nip_update, "adaptive", "model", "!none"),
     DEF_WHEN("update_every", &v_int, "1", "update", "every"),
     DEF_WHEN("T0_rtol", &v_float, "1e-4", "update", "adaptive"),
+    OPT("position", &v_nip_position),
     END};
-static const ys_value v_nip = MAP(nip_fields);
+/* `nip:` is one nip (a mapping) or several (a list of the same mappings) */
+static const ys_value v_nip_entry = MAP(nip_fields);
+static const ys_value v_nip_list = {.type = YS_LIST, .entry = &v_nip_entry, .min = 1,
+                                    .max = RS_MAX_NIPS};
+static const ys_value v_nip = {.type = YS_MAP, .fields = nip_fields, .list_form = &v_nip_list};
+
+/* the winder that carries the roll (`winder: two_drum` is {type: two_drum}) */
+static const ys_name winder_types[] = {{"center", RS_WINDER_TYPE_CENTER},
+                                       {"surface", RS_WINDER_TYPE_SURFACE},
+                                       {"two_drum", RS_WINDER_TYPE_TWO_DRUM},
+                                       {NULL, 0}};
+static const ys_value v_winder_type = ENUM(winder_types);
+static const ys_field winder_block_fields[] = {REQ("type", &v_winder_type),
+                                               OPT("drum_distance", &v_float),
+                                               OPT("drum_radius", &v_float), END};
+static const ys_value v_winder_block = MAP(winder_block_fields);
 
 /* ---- numerics and output ------------------------------------------------------------- */
 static const ys_name reuses[] = {{"deep", RS_REUSE_ON}, {"none", RS_REUSE_OFF},
@@ -214,14 +238,26 @@ static const ys_field scene_fields[] = {
     OPT("air", &v_air),
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
+    OPT("winder", &v_winder_block),
     END};
 const ys_value ys_scene_schema = MAP(scene_fields);
 
 int ys_is_shorthand(const char *p)
 {
+  long k;
+  char seg[4][YN_SEG_MAX];
+  /* a list entry's load: nip[1].load */
+  if (yn_path_split(p, seg, 4) == 3 && strcmp(seg[0], "nip") == 0 && yn_seg_index(seg[1], &k) &&
+      strcmp(seg[2], "load") == 0)
+    return 1;
   return strcmp(p, "material") == 0 || strcmp(p, "winding.tension") == 0 ||
          strcmp(p, "winding.speed") == 0 ||
-         strcmp(p, "nip.load") == 0;
+         strcmp(p, "nip.load") == 0 || strcmp(p, "winder") == 0;
+}
+
+const ys_value *ys_schema_form(const ys_value *s, const yn *node)
+{
+  return s && s->list_form && node && node->kind == YN_SEQ ? s->list_form : s;
 }
 
 const ys_value *ys_schema_at(const char *path)
@@ -230,8 +266,9 @@ const ys_value *ys_schema_at(const char *path)
   int n = yn_path_split(path, seg, 32);
   const ys_value *s = n < 0 ? NULL : &ys_scene_schema;
   for (int i = 0; s && i < n; ++i) {
+    long k;
+    if (s->list_form && yn_seg_index(seg[i], &k)) s = s->list_form; /* "nip[1]" */
     if (s->type == YS_LIST) {
-      long k;
       s = yn_seg_index(seg[i], &k) ? s->entry : NULL;
       continue;
     }

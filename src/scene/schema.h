@@ -34,6 +34,9 @@ typedef struct ys_value {
   unsigned min, max;      /* YS_LIST: entries; YS_STRING: bytes */
   int exact;              /* YS_LIST: exactly min entries ("a pair") */
   const ys_name *names;   /* YS_ENUM: ends with a NULL name */
+  /* YS_MAP: the value may instead be written as this list (`nip:` as a list of nips); the
+   * checks, defaults and paths ("nip[1].load") follow the form the file uses */
+  const struct ys_value *list_form;
 } ys_value;
 
 /* A default that depends on the scene rather than on the schema: the file's stem. */
@@ -62,6 +65,9 @@ int ys_is_shorthand(const char *scene_path);
 /* The schema of the value at a dotted path from the top level ("nip.load.table[2]");
  * NULL if the schema has no such key. */
 const ys_value *ys_schema_at(const char *scene_path);
+
+/* The schema a node is checked against: s, or s->list_form when the node is a list. */
+const ys_value *ys_schema_form(const ys_value *s, const yn *node);
 
 /* The keys of a mapping, ", "-separated, for messages. */
 void ys_schema_keys(const ys_value *mapping, char *buf, size_t size);

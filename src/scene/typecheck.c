@@ -158,6 +158,7 @@ static rs_status check_scalar(const yn *node, const ys_value *s);
 
 static rs_status check_value(const yn *node, const ys_value *s)
 {
+  s = ys_schema_form(s, node);
   if (s->type == YS_MAP) return check_mapping(node, s);
   if (s->type == YS_LIST) return check_sequence(node, s);
   return ys_note(check_scalar(node, s));

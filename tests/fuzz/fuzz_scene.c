@@ -73,6 +73,8 @@ static int same_scene(const rs_scene *a, const rs_scene *b)
          a->problem.n_layers == b->problem.n_layers &&
          memcmp(&a->problem.tension, &b->problem.tension, sizeof a->problem.tension) == 0 &&
          memcmp(&a->problem.nip, &b->problem.nip, sizeof a->problem.nip) == 0 &&
+         a->problem.material.nit_saturation == b->problem.material.nit_saturation &&
+         memcmp(&a->problem.winder, &b->problem.winder, sizeof a->problem.winder) == 0 &&
          memcmp(&a->problem.numerics, &b->problem.numerics, sizeof a->problem.numerics) == 0 &&
          memcmp(&a->problem.record, &b->problem.record, sizeof a->problem.record) == 0 &&
          memcmp(&a->output, &b->output, sizeof a->output) == 0;
