@@ -6,10 +6,12 @@
  * 0 prints and writes. A failed run is recorded (status, NaN figures) and the sweep goes
  * on: its exit status is 0 when it ran, and the last line counts the failures. */
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/capture.h"
 #include "cli/cli.h"
 #include "cli/signals.h"
 #include "reelsim/clock.h"
@@ -19,12 +21,21 @@
 
 static const char default_output[] = "sweep.h5";
 
+/* Nonzero (the signal's number, or another rank's notice) stops the sweep: asked before
+ * every check and during every run. Under mpirun a signal caught here is told to every
+ * other rank, so that the whole job stops (sweep_mpi_poll). */
 static int on_progress(void *user, int layers_done, int layers_total)
 {
   (void)user;
   (void)layers_done;
   (void)layers_total;
-  return cli_signal_caught() != 0;
+  return sweep_mpi_poll(cli_signal_caught());
+}
+
+/* A check that returned st: exit 2 naming what is wrong, or SWEEP_STOPPED (said later). */
+static int checked(rs_status st)
+{
+  return st == RS_ERR_INTERRUPTED ? SWEEP_STOPPED : cli_fail_status(st);
 }
 
 typedef struct sweep_state {
@@ -62,11 +73,13 @@ static int prepare(sweep_state *s, const cli_args *a)
   if ((st = rs_scene_load(a->scene, a->n_sets, a->sets, &s->base)) != RS_OK)
     return cli_fail_status(st);
   cli_scene_warnings(s->base);
+  /* a grid key may have 10^7 values, lhs 10^7 runs: each step can be stopped */
   for (int k = 0; k < s->n_vary; ++k)
-    if ((st = sweep_vary_check(a->scene, a->n_sets, a->sets, &s->vary[k])) != RS_OK)
-      return cli_fail_status(st);
-  if ((st = sweep_plan_make(s->n_vary, s->vary, &s->sample, &s->plan)) != RS_OK)
-    return cli_fail_status(st);
+    if ((st = sweep_vary_check_stoppable(a->scene, a->n_sets, a->sets, &s->vary[k],
+                                         on_progress)) != RS_OK)
+      return checked(st);
+  if ((st = sweep_plan_make_stoppable(s->n_vary, s->vary, &s->sample, on_progress, &s->plan)) != RS_OK)
+    return checked(st);
   return CLI_EXIT_OK;
 }
 
@@ -134,12 +147,49 @@ static void free_state(sweep_state *s)
   rs_scene_destroy(&s->base);
 }
 
+/* The exit status of an agreement, with the message of a signal (on rank 0): "sweep:
+ * terminated (SIGTERM) on rank 2 before winding (no output written)". */
+static int said(const sweep_agreement *ag, const char *when)
+{
+  if (!ag->signal) return ag->code;
+  char on[32] = "";
+  if (ag->rank > 0) snprintf(on, sizeof on, " on rank %d", ag->rank);
+  if (sweep_mpi_rank() != 0) return cli_signal_exit_code(ag->signal);
+  return cli_fail(cli_signal_exit_code(ag->signal), "sweep: %s%s%s%s (no output written)",
+                  cli_signal_word(ag->signal), on, when[0] ? " " : "", when);
+}
+
+/* Every rank's checks (the arguments, the scene, every run; rank 0 also the output's
+ * folder), then their agreement (sweep_mpi_agree_all): under mpirun each rank's messages
+ * are captured and rank 0 prints them. Returns the exit status all ranks take; a signal
+ * on any rank is said here. */
+static int check_everywhere(sweep_state *s, const cli_args *a, const sweep_spec *spec, int root)
+{
+  cli_capture cap = {NULL, -1};
+  if (sweep_mpi_size() > 1) cli_capture_begin(&cap);
+  uint64_t digest = 0;
+  rs_status st = RS_OK;
+  int code = prepare(s, a);
+  if (code == CLI_EXIT_OK && (st = sweep_check_runs(spec, &digest)) != RS_OK) code = checked(st);
+  /* a missing output directory should not cost the sweep (rank 0's view decides) */
+  if (code == CLI_EXIT_OK && root && (st = rs_output_check_target(s->output)) == RS_OK &&
+      a->csv_dir)
+    st = rs_output_check_target(a->csv_dir);
+  if (code == CLI_EXIT_OK && root && st != RS_OK) code = cli_fail_status(st);
+  char *text = cli_capture_end(&cap, root ? (size_t)1 << 20 : SWEEP_TEXT_MAX);
+  if (root && text) fputs(text, stderr);
+  sweep_agreement ag = sweep_mpi_agree_all(code, digest, text, cli_signal_caught);
+  free(text);
+  return said(&ag, "before winding");
+}
+
 int cli_sweep(const cli_args *a)
 {
   double t0 = rs_clock_wall();
   sweep_mpi_begin();
   int root = sweep_mpi_rank() == 0;
-  /* every rank checks the same input and fails alike; only rank 0 says so */
+  /* only rank 0 prints: the others' messages reach it (check_everywhere, and a failed
+   * run's through the schedule) */
   if (!root && (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))) {
     /* nothing to say it with: go on, the messages are rank 0's anyway */
   }
@@ -148,19 +198,9 @@ int cli_sweep(const cli_args *a)
   cli_signals_install(&sig_saved);
   sweep_spec spec = {a->scene, a->n_sets, a->sets, &s.plan, a->threads, a->profiles, on_progress};
 
-  int code = prepare(&s, a);
-  rs_status st = RS_OK;
-  if (code == CLI_EXIT_OK && (st = sweep_check_runs(&spec)) != RS_OK) code = cli_fail_status(st);
-  if (code == CLI_EXIT_USAGE) {
-    fprintf(stderr, "reelsim: sweep: nothing was wound\n");
-    goto done;
-  }
+  int code = check_everywhere(&s, a, &spec, root);
+  if (code == CLI_EXIT_USAGE && root) fprintf(stderr, "reelsim: sweep: nothing was wound\n");
   if (code != CLI_EXIT_OK) goto done;
-  /* a missing output directory should not cost the sweep (rank 0's view decides) */
-  if (root && (st = rs_output_check_target(s.output)) == RS_OK && a->csv_dir)
-    st = rs_output_check_target(a->csv_dir);
-  if (root && st != RS_OK) code = cli_fail_status(st);
-  if ((code = sweep_mpi_agree(code)) != CLI_EXIT_OK) goto done;
 
   if (!a->quiet && root && sweep_mpi_size() == 2) /* docs/scale.md */
     fprintf(stderr, "reelsim: note: under mpirun rank 0 only hands out the runs: -n 2 winds "
@@ -170,19 +210,14 @@ int cli_sweep(const cli_args *a)
     printf("sweep: %d run%s of %s (%d key%s)\n", s.plan.n_runs, s.plan.n_runs == 1 ? "" : "s",
            a->scene, s.n_vary, s.n_vary == 1 ? "" : "s");
   fflush(stdout);
-  if ((st = sweep_wind(&spec, &s.result)) != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
-  if (!root) goto done;
-  if (s.result.stopped || cli_signal_caught()) {
-    int sig = cli_signal_caught();
-    code = cli_fail(cli_signal_exit_code(sig ? sig : SIGINT), "sweep: %s (no output written)",
-                    cli_signal_word(sig));
-    goto done;
-  }
-  if ((code = write_files(&s, a)) != CLI_EXIT_OK) goto done;
-  if (!a->quiet) {
+  rs_status st = sweep_wind(&spec, &s.result);
+  code = st != RS_OK ? cli_fail_status(st) : CLI_EXIT_OK;
+  /* every rank has stopped winding; a signal anywhere means no file */
+  sweep_agreement ag = sweep_mpi_agree_all(code, 0, NULL, cli_signal_caught);
+  if (ag.signal == 0 && ag.code == CLI_EXIT_OK && s.result.stopped) ag.signal = SIGINT;
+  if ((code = said(&ag, "")) != CLI_EXIT_OK) goto done;
+  if (root) code = write_files(&s, a);
+  if (code == CLI_EXIT_OK && root && !a->quiet) {
     char where[64];
     if (s.result.ranks > 0)
       snprintf(where, sizeof where, "%d MPI rank%s", s.result.ranks, s.result.ranks == 1 ? "" : "s");
@@ -192,6 +227,7 @@ int cli_sweep(const cli_args *a)
     printf("sweep: %d run%s on %s in %.2f s, %d failed\n", s.plan.n_runs,
            s.plan.n_runs == 1 ? "" : "s", where, rs_clock_wall() - t0, s.result.failed);
   }
+  code = sweep_mpi_agree(code);
 
 done:
   free_state(&s);

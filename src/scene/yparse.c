@@ -25,16 +25,46 @@ typedef struct anchor {
 typedef struct builder {
   yaml_parser_t parser;
   const char *file;
+  const char *text; /* the input, for the line of a reader error */
+  size_t len;
   anchor *anchors;
   int n_anchors, cap_anchors;
   long values; /* values in the tree, alias copies included */
   long copied; /* values copied from anchors */
 } builder;
 
+/* libyaml's reader (bytes -> characters) gives no mark, only the byte offset of the bad
+ * byte: its line is 1 + the newlines before it, its column 1 + the characters (UTF-8 lead
+ * bytes; the text before it decoded) since the last one. */
+static rs_status reader_error(const builder *b)
+{
+  const yaml_parser_t *p = &b->parser;
+  size_t off = p->problem_offset < b->len ? p->problem_offset : b->len;
+  int line = 1, column = 1;
+  for (size_t i = 0; i < off; ++i) {
+    unsigned char c = (unsigned char)b->text[i];
+    if (c == '\n') {
+      ++line;
+      column = 1;
+    } else if ((c & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  char what[32] = "";
+  if (p->problem_value >= 0 && p->problem_value <= 0xFF)
+    snprintf(what, sizeof what, " (byte 0x%02X)", (unsigned)p->problem_value);
+  else if (p->problem_value > 0xFF)
+    snprintf(what, sizeof what, " (U+%04X)", (unsigned)p->problem_value);
+  return RS_ERROR(RS_ERR_INPUT,
+                  "%s:%d: column %d: %s%s: a scene must be UTF-8 text without control characters",
+                  b->file, line, column, p->problem ? p->problem : "unreadable text", what);
+}
+
 static rs_status syntax_error(builder *b)
 {
   const yaml_parser_t *p = &b->parser;
   if (p->error == YAML_MEMORY_ERROR) return RS_ERROR(RS_ERR_MEMORY, "out of memory reading %s", b->file);
+  if (p->error == YAML_READER_ERROR) return reader_error(b);
   const char *ctx = p->context ? p->context : "";
   return RS_ERROR(RS_ERR_INPUT, "%s:%d: YAML syntax error: %s%s%s", b->file,
                   (int)p->problem_mark.line + 1, p->problem ? p->problem : "?", ctx[0] ? " " : "",
@@ -326,7 +356,7 @@ static rs_status parse_stream(builder *b, yn **out)
 
 rs_status rsi_yn_parse_text(const char *text, size_t len, const char *file, yn **out)
 {
-  builder b = {.file = file};
+  builder b = {.file = file, .text = text, .len = len};
   *out = NULL;
   if (len > YN_MAX_BYTES)
     return RS_ERROR(RS_ERR_INPUT, "%s: larger than %d bytes (the limit for scene files)", file,

@@ -65,7 +65,15 @@ rs_status sweep_plan_check_size(int n_keys, const sweep_vary *vary, const sweep_
   return RS_OK;
 }
 
-static rs_status make_grid(sweep_plan *p)
+/* Every this many points a plan being made asks whether to stop (some milliseconds). */
+enum { POLL_POINTS = 1 << 16 };
+
+static rs_status stopped(long long done, long long n)
+{
+  return APP_ERROR(RS_ERR_INTERRUPTED, "stopped while making the plan (%lld of %lld points)", done, n);
+}
+
+static rs_status make_grid(sweep_plan *p, rs_reel_progress_fn stop)
 {
   long long n = 1;
   for (int k = 0; k < p->n_keys; ++k) {
@@ -77,6 +85,7 @@ static rs_status make_grid(sweep_plan *p)
   p->points = malloc((size_t)n * (size_t)p->n_keys * sizeof *p->points);
   if (!p->points) return APP_ERROR(RS_ERR_MEMORY, "out of memory for %lld runs", n);
   for (long long i = 0; i < n; ++i) {
+    if (stop && i % POLL_POINTS == 0 && stop(NULL, 0, 0)) return stopped(i, n);
     long long rest = i;
     for (int k = p->n_keys - 1; k >= 0; --k) {
       const sweep_vary *v = &p->vary[k];
@@ -88,7 +97,7 @@ static rs_status make_grid(sweep_plan *p)
   return RS_OK;
 }
 
-static rs_status make_lhs(sweep_plan *p, int r)
+static rs_status make_lhs(sweep_plan *p, int r, rs_reel_progress_fn stop)
 {
   p->n_runs = r;
   p->points = malloc((size_t)r * (size_t)p->n_keys * sizeof *p->points);
@@ -102,11 +111,19 @@ static rs_status make_lhs(sweep_plan *p, int r)
     const sweep_vary *v = &p->vary[k];
     for (int j = 0; j < r; ++j) perm[j] = j;
     for (int j = r - 1; j > 0; --j) { /* Fisher-Yates */
+      if (stop && j % POLL_POINTS == 0 && stop(NULL, 0, 0)) {
+        free(perm);
+        return stopped((long long)k * r, (long long)p->n_keys * r);
+      }
       int m = (int)(next(&state) % (uint64_t)(j + 1)), t = perm[j];
       perm[j] = perm[m];
       perm[m] = t;
     }
     for (int i = 0; i < r; ++i) {
+      if (stop && i % POLL_POINTS == 0 && stop(NULL, 0, 0)) {
+        free(perm);
+        return stopped((long long)k * r + i, (long long)p->n_keys * r);
+      }
       int j = perm[i];
       double x;
       if (v->kind == SWEEP_LIST) {
@@ -126,11 +143,17 @@ static rs_status make_lhs(sweep_plan *p, int r)
 rs_status sweep_plan_make(int n_keys, const sweep_vary *vary, const sweep_sample *s,
                           sweep_plan *plan)
 {
+  return sweep_plan_make_stoppable(n_keys, vary, s, NULL, plan);
+}
+
+rs_status sweep_plan_make_stoppable(int n_keys, const sweep_vary *vary, const sweep_sample *s,
+                                    rs_reel_progress_fn stop, sweep_plan *plan)
+{
   memset(plan, 0, sizeof *plan);
   plan->n_keys = n_keys;
   plan->vary = vary;
   if (n_keys < 1) return APP_ERROR(RS_ERR_INPUT, "nothing to vary: give --vary KEY=LO:HI:N");
-  rs_status st = s->kind == SWEEP_SAMPLE_LHS ? make_lhs(plan, s->runs) : make_grid(plan);
+  rs_status st = s->kind == SWEEP_SAMPLE_LHS ? make_lhs(plan, s->runs, stop) : make_grid(plan, stop);
   if (st != RS_OK) sweep_plan_free(plan);
   return st;
 }

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "reelsim/reel.h"
 #include "reelsim/status.h"
 #include "sweep/vary.h"
 
@@ -44,6 +45,10 @@ typedef struct sweep_plan {
  * SWEEP_MAX_RUNS runs. */
 rs_status sweep_plan_make(int n_keys, const sweep_vary *vary, const sweep_sample *s,
                           sweep_plan *plan);
+/* The same, asking stop(NULL, 0, 0) every 65536 points (a plan of 10^7 runs takes seconds
+ * to make): nonzero gives RS_ERR_INTERRUPTED and no plan. stop may be NULL. */
+rs_status sweep_plan_make_stoppable(int n_keys, const sweep_vary *vary, const sweep_sample *s,
+                                    rs_reel_progress_fn stop, sweep_plan *plan);
 void sweep_plan_free(sweep_plan *plan);
 
 /* The overrides of run i: sets[0..n_sets) then "KEY=VALUE" for every key, into *all

@@ -1,5 +1,6 @@
 /* reelsim sweep's runs in one process: checked, then wound in batches over threads. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,14 +35,39 @@ static rs_status load_run(const sweep_spec *spec, int i, rs_scene **scene)
   return st;
 }
 
-rs_status sweep_check_runs(const sweep_spec *spec)
+/* FNV-1a (64 bits) of a resolved scene's text, continuing from h, without its comment
+ * lines (the files and --sets it came from) and its `source:` lines (where a model was
+ * found, which may differ between machines holding the same model). */
+static uint64_t digest_scene(uint64_t h, const char *text)
 {
+  while (*text) {
+    const char *end = strchr(text, '\n');
+    size_t len = end ? (size_t)(end - text) + 1 : strlen(text);
+    size_t lead = strspn(text, " ");
+    if (text[lead] != '#' && strncmp(text + lead, "source:", 7) != 0)
+      for (size_t k = 0; k < len; ++k) {
+        h ^= (unsigned char)text[k];
+        h *= 0x100000001b3ULL;
+      }
+    text += len;
+  }
+  return h;
+}
+
+rs_status sweep_check_runs(const sweep_spec *spec, uint64_t *digest)
+{
+  uint64_t h = 0xcbf29ce484222325ULL; /* FNV-1a's offset basis */
   for (int i = 0; i < spec->plan->n_runs; ++i) {
+    if (spec->progress && spec->progress(NULL, 0, 0))
+      return APP_ERROR(RS_ERR_INTERRUPTED, "stopped while checking run %d of %d", i + 1,
+                      spec->plan->n_runs);
     rs_scene *scene = NULL;
     rs_status st = load_run(spec, i, &scene);
+    if (st == RS_OK) h = digest_scene(h, rs_scene_resolved_text(scene));
     rs_scene_destroy(&scene);
     if (st != RS_OK) return st;
   }
+  if (digest) *digest = h;
   return RS_OK;
 }
 
@@ -83,15 +109,15 @@ static void keep_profile(const rs_reel_result *res, rs_output_profile *prof)
   *prof = (rs_output_profile){(int)n, block, block + n, block + 2 * n};
 }
 
-/* A failed run does not sink the sweep, but why it failed is said (on the stderr of the
- * process that wound it), not only recorded as a status. */
-static void say_failed(int i, const char *why)
+/* A failed run does not sink the sweep, but why it failed is said (on rank 0's stderr: a
+ * worker rank sends it there), not only recorded as a status. */
+void sweep_say_failed(int i, const char *why)
 {
   fprintf(stderr, "reelsim: sweep: run %d failed: %s\n", i + 1, why && why[0] ? why : "(no message)");
 }
 
 void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
-                   rs_output_profile *prof)
+                   rs_output_profile *prof, char *why, size_t why_size)
 {
   double t0 = rs_clock_wall();
   rs_scene *scene = NULL;
@@ -102,7 +128,9 @@ void sweep_run_one(const sweep_spec *spec, int i, double fig[SWEEP_N_FIGURES],
     st = rs_scene_wind(scene, &opts, &res);
   }
   double wall = rs_clock_wall() - t0;
-  if (st != RS_OK) say_failed(i, app_error_message());
+  if (st != RS_OK) sweep_say_failed(i, app_error_message());
+  if (why && why_size)
+    snprintf(why, why_size, "%s", st == RS_OK ? "" : app_error_message()[0] ? app_error_message() : "(no message)");
   sweep_figures_compute(scene ? rs_scene_problem(scene) : NULL, res, st, wall, fig);
   if (prof) {
     if (st == RS_OK) keep_profile(res, prof);
@@ -144,7 +172,7 @@ static rs_status wind_batch(const sweep_spec *spec, int first, int n, sweep_resu
   for (int j = 0; st == RS_OK && j < n; ++j) {
     int i = first + j;
     double fig[SWEEP_N_FIGURES];
-    if (jobs[j].status != RS_OK) say_failed(i, jobs[j].message);
+    if (jobs[j].status != RS_OK) sweep_say_failed(i, jobs[j].message);
     sweep_figures_compute(scenes[j] ? rs_scene_problem(scenes[j]) : NULL, jobs[j].result,
                           jobs[j].status, jobs[j].wall_seconds + load_each, fig);
     for (int f = 0; f < SWEEP_N_FIGURES; ++f) out->figures[(size_t)f * out->n_runs + i] = fig[f];

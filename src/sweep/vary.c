@@ -170,6 +170,12 @@ static rs_status check_at(const char *path, int n_sets, const char *const *sets,
 rs_status sweep_vary_check(const char *scene_path, int n_sets, const char *const *sets,
                            const sweep_vary *v)
 {
+  return sweep_vary_check_stoppable(scene_path, n_sets, sets, v, NULL);
+}
+
+rs_status sweep_vary_check_stoppable(const char *scene_path, int n_sets, const char *const *sets,
+                                     const sweep_vary *v, rs_reel_progress_fn stop)
+{
   /* the scene as given first: its own error is not the --vary argument's */
   rs_scene *scene = NULL;
   rs_status st = rs_scene_load(scene_path, n_sets, sets, &scene);
@@ -179,6 +185,11 @@ rs_status sweep_vary_check(const char *scene_path, int n_sets, const char *const
   if (!all) return APP_ERROR(RS_ERR_MEMORY, "out of memory");
   int n = v->kind == SWEEP_RANGE ? 2 : v->n;
   for (int i = 0; i < n && st == RS_OK; ++i) {
+    if (stop && stop(NULL, 0, 0)) {
+      free(all);
+      return APP_ERROR(RS_ERR_INTERRUPTED, "--vary %s: stopped while checking value %d of %d",
+                      v->arg, i + 1, n);
+    }
     double x = v->kind == SWEEP_RANGE ? (i == 0 ? v->lo : v->hi)
              : v->words              ? (double)i
                                      : v->values[i];

@@ -13,6 +13,7 @@
 
 #include <stddef.h>
 
+#include "reelsim/reel.h"
 #include "reelsim/status.h"
 
 /* The forms a command accepts (a bit set). */
@@ -58,5 +59,9 @@ rs_status sweep_vary_set_text(const sweep_vary *v, double x, char *buf, size_t s
  * (an unknown key, a value the key does not take). */
 rs_status sweep_vary_check(const char *scene_path, int n_sets, const char *const *sets,
                            const sweep_vary *v);
+/* The same, asking stop(NULL, 0, 0) before each value (a grid key may have 10^7):
+ * nonzero gives RS_ERR_INTERRUPTED. stop may be NULL. */
+rs_status sweep_vary_check_stoppable(const char *scene_path, int n_sets, const char *const *sets,
+                                     const sweep_vary *v, rs_reel_progress_fn stop);
 
 #endif

@@ -38,3 +38,5 @@ rs_cli_test(sweep_grid_1e12 2 [[--vary: the grid has more than 10000000 runs]]
 set_tests_properties(cli.sweep_grid_1e12 PROPERTIES TIMEOUT 10)
 # control characters in titles printed escaped
 rs_cli_script(title_escaped title_escaped.sh ${SC}/small.yaml)
+# libyaml's reader errors (a NUL or a byte that is not UTF-8) at their own line and column
+rs_cli_script(reader_error_line reader_line.sh ${SC}/small.yaml)

@@ -11,7 +11,8 @@ rs_sweep_test(test_sweep_vary unit SOURCES sweep/test_vary.c
 
 # --- reelsim sweep from the command line ------------------------------------------------
 set(SWEEP_SCENE ${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/small.yaml)
-foreach(c matches_runs grid_counts lhs_strata failed_run profiles plot interrupted)
+foreach(c matches_runs grid_counts lhs_strata failed_run profiles plot interrupted
+          plan_interrupted grid_terminated)
   add_test(NAME cli.sweep.${c}
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh ${c} $<TARGET_FILE:reelsim_cli>
                    ${SWEEP_SCENE})
@@ -29,6 +30,18 @@ if(RS_HAVE_MPI AND RS_MPIEXEC)
   if(REELSIM_SANITIZE)
     set_tests_properties(cli.sweep.mpi_same PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
   endif()
+  # issue 36: a rank's failure, a different scene on a rank, a signal to any rank, a huge
+  # plan, under mpirun -n 3 with each rank in its own folder (sweep.sh says what each asserts)
+  foreach(c rank_fails scene_differs signal_worker signal_root signal_checking run_failed
+            grid_1e12)
+    add_test(NAME cli.sweep.mpi_${c}
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh mpi_${c}
+                     $<TARGET_FILE:reelsim_cli> ${SWEEP_SCENE} ${RS_MPIEXEC})
+    set_tests_properties(cli.sweep.mpi_${c} PROPERTIES LABELS "mpi;cli" TIMEOUT 300)
+    if(REELSIM_SANITIZE)
+      set_tests_properties(cli.sweep.mpi_${c} PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+    endif()
+  endforeach()
 endif()
 
 # --- bad input: exit 2 naming the argument, nothing wound --------------------------------

@@ -15,6 +15,24 @@
 #                 and for two (a heat map); real PNGs, nothing else in the directory
 #   interrupted   SIGTERM during a long sweep: exit 143, the message, no file and no temporary
 #   mpi_same      mpirun -n 3 writes the same figures (all but wall_seconds) as one process
+#   plan_interrupted  SIGINT while a --sample lhs:10000000 plan is made and checked (it would
+#                 take minutes): exit 130 within 5 s (measured: 0.1-0.5 s), the message, no file
+#   grid_terminated   SIGTERM while a 10^6 x 10 grid is checked: exit 143, no file
+# Under mpirun -n 3, each rank in its own folder node<R> (a node's own disk), as a wrapper
+# script arranges from OMPI_COMM_WORLD_RANK:
+#   mpi_rank_fails    rank 1's folder lacks the model: exit 2, rank 0 prints "rank 1: ...no
+#                 material model 'myweb'..." once, nothing wound, no file; the same with
+#                 lhs:10^7, where ranks 0 and 2 stop checking when told (within 60 s, not
+#                 the minutes 10^7 checks take)
+#   mpi_scene_differs rank 1's model has another E_theta: exit 2 naming rank 1 and the digests;
+#                 the same model found in another folder on each rank is accepted
+#   mpi_signal_worker SIGTERM to rank 1's process mid-sweep: exit 143, "terminated (SIGTERM)
+#                 on rank 1 (no output written)", every rank gone within 10 s, no file
+#   mpi_signal_root   SIGINT to rank 0 mid-sweep: exit 130, "interrupted", no file
+#   mpi_signal_checking SIGHUP to rank 2 while the ranks check lhs:10^7: exit 129, "on rank 2
+#                 before winding", every rank gone within 10 s
+#   mpi_run_failed    runs that fail on a worker rank: their messages printed by rank 0, exit 0
+#   mpi_grid_1e12     a 10^12-run grid refused (exit 2) before any scene is loaded, said once
 set -u
 case_=$1 bin=$2 scene=$3 mpirun=${4:-}
 . "$(dirname "$0")/../cli/lib.sh" # fail, run, has
@@ -27,6 +45,20 @@ close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b <
                                            exit !(d <= 1e-12 * m) }'; }
 # the scalar dataset PATH of FILE, %.17g
 h5val() { h5dump -m %.17g -d "$2" "$1" | awk '/\(0\)/ { print $2; exit }'; }
+# handles PID SIG: waits (at most 30 s) until process PID has its handler for SIG (its
+# SigCgt mask in /proc), so that a signal sent then is reelsim's to handle
+handles() {
+  local bit n
+  n=$(kill -l "$2")
+  for _ in $(seq 600); do
+    bit=$(awk -v n="$n" '/^SigCgt:/ { v = 0; h = substr($2, length($2) - 3) # signals 1-16
+            for (i = 1; i <= length(h); ++i) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1
+            print int(v / 2 ^ (n - 1)) % 2 }' /proc/"$1"/status 2>/dev/null)
+    [ "$bit" = 1 ] && return 0
+    sleep 0.05
+  done
+  fail "process $1 never handled SIG$2"
+}
 # column NAME of CSV row I (1-based, after the header)
 col() { awk -F, -v name="$2" -v row="$3" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i }
                                           NR == row + 1 { print $c }' "$1"; }
@@ -110,6 +142,7 @@ profiles)
   grep -q '^/sweep/profiles/1/radius *Dataset {200}' ls.txt || fail "run 1's profile" ;;
 mpi_same)
   [ -n "$mpirun" ] || fail "no mpirun given"
+  export TMPDIR=$tmp # Open MPI's session folder: see mpi_* below
   args=(sweep "$scene" --vary winding.tension=100:400:4 --vary core.radius=0.04,0.045,0.05
         --vary numerics.max_steps=1,5000 --profiles)
   run "$bin" "${args[@]}" --csv one.csv -o one.h5 --threads 1
@@ -157,6 +190,142 @@ interrupted)
   [ "$got" -eq 143 ] || fail "exit $got, expected 143"
   grep -q "reelsim: sweep: terminated (SIGTERM) (no output written)" log.txt || fail "message"
   [ -z "$(ls -A | grep -v '^log.txt$')" ] || { ls -la; fail "files were left"; } ;;
+plan_interrupted | grid_terminated)
+  if [ "$case_" = plan_interrupted ]; then
+    sig=INT want=130 word=interrupted vary=(--vary winding.tension=100:400 --sample lhs:10000000)
+  else
+    sig=TERM want=143 word='terminated \(SIGTERM\)'
+    vary=(--vary winding.tension=100:400:1000000 --vary core.radius=0.04:0.05:10)
+  fi
+  # SIGINT reaches reelsim as Ctrl-C would even where the shell ignores it in background jobs
+  env --default-signal=INT "$bin" sweep "$scene" "${vary[@]}" -o big.h5 >log.txt 2>&1 &
+  pid=$!
+  handles "$pid" "$sig"
+  sleep 1
+  t0=$(date +%s.%N)
+  kill -"$sig" "$pid"
+  wait "$pid"
+  got=$?
+  took=$(echo "$(date +%s.%N) - $t0" | bc)
+  cat log.txt
+  echo "stopped $took s after SIG$sig"
+  [ "$got" -eq "$want" ] || fail "exit $got, expected $want"
+  grep -Eq "reelsim: sweep: $word before winding \(no output written\)" log.txt || fail "message"
+  [ "$(echo "$took < 5" | bc)" -eq 1 ] || fail "took $took s to stop"
+  [ -z "$(ls -A | grep -v '^log.txt$')" ] || { ls -la; fail "files were left"; } ;;
+mpi_*)
+  [ -n "$mpirun" ] || fail "no mpirun given"
+  # Open MPI's session folder in our own TMPDIR: two mpiruns starting at once in /tmp race
+  # for /tmp/ompi.<host>.<uid> ("mkdir ... File exists", orte_init fails)
+  export TMPDIR=$tmp
+  # node0: the scene and its model (material: myweb, found beside the scene)
+  mkdir node0 node1 node2
+  sed -e '/^  name: test-web$/d' -e '/^  caliper:/d' -e '/^  E_theta:/d' -e '/^  radial:/d' \
+      -e 's/^material:$/material: {model: myweb}/' "$scene" >node0/scene.yaml
+  printf 'name: test-web\ncaliper: 100.0e-6\nE_theta: 4.0e9\nradial: {law: linear, E_r: 20.0e6}\n' \
+    >node0/myweb.yaml
+  for n in 1 2; do cp node0/scene.yaml node0/myweb.yaml node$n/; done
+  # a rank in its own folder (its node's disk), its pid in pid.<rank> (exec keeps the pid)
+  printf '%s\n' '#!/bin/bash' 'd=$(cd "$(dirname "$0")" && pwd) r=${OMPI_COMM_WORLD_RANK:-0}' \
+    'echo $$ >"$d/pid.$r"' 'cd "$d/node$r" && exec "$@"' >wrap.sh
+  chmod +x wrap.sh
+  mpi() { env --default-signal=INT "$mpirun" --allow-run-as-root --oversubscribe -n 3 ./wrap.sh "$bin" "$@"; }
+  # every rank's process gone (or a zombie not yet reaped by mpirun) within LIMIT s of T0
+  all_gone() {
+    local p st alive
+    for _ in $(seq 500); do
+      alive=0
+      for p in $(cat pid.0 pid.1 pid.2); do
+        st=$(awk '{ print $3 }' /proc/"$p"/stat 2>/dev/null)
+        [ -n "$st" ] && [ "$st" != Z ] && alive=1
+      done
+      [ "$alive" -eq 0 ] && break
+      sleep 0.02
+    done
+    took=$(echo "$(date +%s.%N) - $1" | bc)
+    echo "every rank stopped $took s after the signal"
+    [ "$(echo "$took < $2" | bc)" -eq 1 ] || fail "the ranks took $took s to stop"
+  }
+  # signal_rank SIGNAL RANK STATUS ARGS...: the signal to a rank's process once the winding
+  # (with --sample lhs: the checking) is under way
+  signal_rank() {
+    local sig=$1 r=$2 want=$3 m t0
+    shift 3
+    mpi sweep scene.yaml "$@" -o "$PWD/out.h5" >log.txt 2>&1 &
+    m=$!
+    for _ in $(seq 300); do [ -s pid.0 ] && [ -s pid.1 ] && [ -s pid.2 ] && break; sleep 0.1; done
+    case "$*" in
+    *lhs*) # until the rank handles the signal (MPI's start-up done; under load it takes
+           # seconds), then into its checks
+      handles "$(cat pid."$r")" "$sig"
+      sleep 1 ;;
+    *) for _ in $(seq 300); do grep -q "^sweep: .* runs of" log.txt && break; sleep 0.1; done
+       sleep 1 ;;
+    esac
+    t0=$(date +%s.%N)
+    kill -"$sig" "$(cat pid."$r")"
+    all_gone "$t0" 10
+    wait "$m"
+    got=$?
+    cat log.txt
+    [ "$got" -eq "$want" ] || fail "exit $got, expected $want"
+    [ -z "$(ls | grep '^out\.h5')" ] || { ls -la; fail "an output file was left"; }
+  }
+  long=(--set winding.final_radius=1 --set numerics.rtol=1e-6 --vary winding.tension=100:400:40)
+  case $case_ in
+  mpi_rank_fails)
+    rm node1/myweb.yaml
+    run mpi sweep scene.yaml --vary winding.tension=100:300:5 -o "$PWD/out.h5"
+    [ "$got" -eq 2 ] || fail "exit $got, expected 2"
+    has "^reelsim: rank 1: scene\.yaml:[0-9]+: material\.model: no material model 'myweb'"
+    has "^reelsim: sweep: nothing was wound$"
+    [ "$(printf '%s\n' "$out" | grep -c "no material model")" -eq 1 ] || fail "said more than once"
+    t0=$(date +%s.%N)
+    run mpi sweep scene.yaml --vary winding.tension=100:300 --sample lhs:10000000 -o "$PWD/out.h5"
+    took=$(echo "$(date +%s.%N) - $t0" | bc)
+    echo "lhs:10^7 with rank 1 failing: $took s"
+    [ "$got" -eq 2 ] || fail "exit $got, expected 2"
+    has "^reelsim: rank 1: scene\.yaml:[0-9]+: material\.model: no material model 'myweb'"
+    # checking 10^7 runs takes each rank minutes; told, they stop at once (5-16 s in all
+    # here, mpirun's start and end included, with other tests' ranks on the 2 cores)
+    [ "$(echo "$took < 60" | bc)" -eq 1 ] || fail "the other ranks went on checking ($took s)"
+    [ ! -e out.h5 ] || fail "a file was written" ;;
+  mpi_scene_differs)
+    sed -i 's/4.0e9/4.5e9/' node1/myweb.yaml
+    run mpi sweep scene.yaml --vary winding.tension=100:300:5 -o "$PWD/out.h5"
+    [ "$got" -eq 2 ] || fail "exit $got, expected 2"
+    has "^reelsim: sweep: rank 1 resolved other scenes than rank 0 \(digest [0-9a-f]{16} against [0-9a-f]{16}\): every rank must read the same scene and model files$"
+    printf '%s\n' "$out" | grep -q "rank 2 resolved" && fail "rank 2 holds the same scene"
+    [ ! -e out.h5 ] || fail "a file was written"
+    # where a model was found (node<R>/myweb.yaml) is not part of the digest
+    sed -i 's/4.5e9/4.0e9/' node1/myweb.yaml
+    run mpi sweep scene.yaml --vary winding.tension=100:300:5 -o "$PWD/out.h5" -q
+    [ "$got" -eq 0 ] || fail "the same model in other folders was refused" ;;
+  mpi_signal_worker)
+    signal_rank TERM 1 143 "${long[@]}"
+    grep -q "^reelsim: sweep: terminated (SIGTERM) on rank 1 (no output written)$" log.txt ||
+      fail "message" ;;
+  mpi_signal_root)
+    signal_rank INT 0 130 "${long[@]}"
+    grep -q "^reelsim: sweep: interrupted (no output written)$" log.txt || fail "message" ;;
+  mpi_signal_checking)
+    signal_rank HUP 2 129 --vary winding.tension=100:400 --sample lhs:10000000
+    grep -q "^reelsim: sweep: terminated (SIGHUP) on rank 2 before winding (no output written)$" \
+      log.txt || fail "message" ;;
+  mpi_run_failed)
+    run mpi sweep scene.yaml --vary numerics.max_steps=1,5000,1 --csv f.csv -o "$PWD/f.h5"
+    [ "$got" -eq 0 ] || fail "a failed run sank the sweep"
+    has "^reelsim: sweep: run 1 failed: .*CVODE needed more than 1 steps"
+    has "^reelsim: sweep: run 3 failed: .*CVODE needed more than 1 steps"
+    has "sweep: 3 runs on 2 MPI ranks .*, 2 failed" ;;
+  mpi_grid_1e12)
+    run mpi sweep scene.yaml --vary winding.tension=100:200:1000000 \
+      --vary core.radius=0.04:0.05:1000000 -o "$PWD/out.h5"
+    [ "$got" -eq 2 ] || fail "exit $got, expected 2"
+    [ "$(printf '%s\n' "$out" | grep -c "^reelsim: --vary: the grid has more than 10000000 runs$")" -eq 1 ] ||
+      fail "not said once" ;;
+  *) fail "unknown case $case_" ;;
+  esac ;;
 *) fail "unknown case $case_" ;;
 esac
 echo PASS
