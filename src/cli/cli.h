@@ -24,6 +24,7 @@ int cli_nip(const cli_args *a);
  * (cmd_fit.c; parses its own arguments). */
 int cli_fit(int argc, char **argv);
 void cli_fit_usage(FILE *out);
+extern const char cli_fit_stack_flags[], cli_fit_roll_flags[];
 /* reelsim fit roll SCENE --measured DATA.csv --vary KEY=LO:HI ... (cmd_fit_roll.c). */
 int cli_fit_roll(int argc, char **argv);
 /* reelsim optimize SCENE --vary KEY=LO:HI ... (--minimize | --maximize) FIGURE ...

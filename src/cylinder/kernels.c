@@ -140,169 +140,222 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
   }
 }
 
-rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, double shift, int M,
-                              unsigned what, const rs_series_opts *opts, rs_kernels *out)
+/* The summation's state: the offsets summed (t, nk of them; src maps every offset k of the
+ * 2M - 1 to its summed twin, src[k] >= 0, or to its mirror, -(1 + mirror)), the closed-form
+ * parts, the partial sums (wk.acc) and the previous doubling's totals (prev). */
+typedef struct kernel_sum {
+  int K, nk;
+  double *mem, *prevmem, *t, *closed[NK], *prev[NK];
+  int *src;
+  work wk;
+} kernel_sum;
+
+static void kernel_sum_free(kernel_sum *ks)
 {
-  if (!cyl || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  free(ks->prevmem);
+  free(ks->mem);
+  free(ks->src);
+}
+
+static rs_status kernel_check(const rs_cylinder *cyl, rs_basis basis, double dx, double shift,
+                              int M, double *w)
+{
   if (basis != RS_BASIS_HAT && basis != RS_BASIS_BOX)
     return RS_ERROR(RS_ERR_INPUT, "unknown basis %d", (int)basis);
   if (M < 2 || M > 1000000) return RS_ERROR(RS_ERR_INPUT, "M = %d out of range", M);
   if (!(dx > 0) || !isfinite(shift)) return RS_ERROR(RS_ERR_INPUT, "dx = %g, shift = %g", dx, shift);
-  double w = basis == RS_BASIS_HAT ? dx / cyl->R : 0.5 * dx / cyl->R;
-  if (w > 0.25 * RS_PI)
+  *w = basis == RS_BASIS_HAT ? dx / cyl->R : 0.5 * dx / cyl->R;
+  if (*w > 0.25 * RS_PI)
     return RS_ERROR(RS_ERR_INPUT, "element too coarse: dx/R = %g (basis half-width %g rad > pi/4)",
-                    dx / cyl->R, w);
-  rs_series_opts o = {0, 1e-6, 1L << 22, 1};
-  if (opts) o = *opts;
-  if (o.tol <= 0) o.tol = 1e-6;
-  if (o.max_terms <= 0) o.max_terms = 1L << 22;
-  what &= RS_KERNEL_ALL;
-  if (!what) what = RS_KERNEL_ALL;
+                    dx / cyl->R, *w);
+  return RS_OK;
+}
 
+/* The offsets to sum. Parity: pu, pe are even and qu, qe odd in the offset, so an offset
+ * u = d + shift/dx (in cells) whose mirror -u is also in the set is computed once. With
+ * 2 shift/dx an integer s2 the mirror of index k is 2(M-1) - s2 - k. */
+static rs_status offsets_build(const rs_cylinder *cyl, double dx, double shift, int M,
+                               kernel_sum *ks)
+{
   const int K = 2 * M - 1;
-  rs_status st = ensure_capacity(out, K);
-  if (st) return st;
-  /* Parity: pu, pe are even and qu, qe odd in the offset, so an offset u = d + shift/dx
-   * (in cells) whose mirror -u is also in the set is computed once. With 2 shift/dx an
-   * integer s2 the mirror of index k is 2(M-1) - s2 - k. */
   double s2r = 2 * shift / dx;
   long s2 = lround(s2r);
   int mirror = fabs(s2r - (double)s2) <= 1e-12 * fmax(1.0, fabs(s2r)) && labs(s2) < 2L * K;
   const int Kp = (K + 3) & ~3; /* work arrays padded (see work.K) */
-  double *mem = calloc((size_t)Kp * (6 + 2 * NK), sizeof(double));
-  int *src = malloc((size_t)K * sizeof *src); /* src[k] >= 0: compact index; else -(1 + mirror) */
-  if (!mem || !src) {
-    free(mem);
-    free(src);
-    return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
-  }
-  double *t = mem, *tall = mem + 5 * Kp, *closed[NK], *prev[NK];
+  ks->K = K;
+  ks->mem = calloc((size_t)Kp * (6 + 2 * NK), sizeof(double));
+  ks->src = malloc((size_t)K * sizeof *ks->src);
+  if (!ks->mem || !ks->src) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
+  double *mem = ks->mem, *t = mem, *tall = mem + 5 * Kp;
   int nk = 0;
   for (int k = 0; k < K; ++k) {
     tall[k] = remainder(((double)(k - (M - 1)) * dx + shift) / cyl->R, 2 * RS_PI);
     long km = mirror ? 2L * (M - 1) - s2 - k : -1;
     double u = (double)(k - (M - 1)) + s2r / 2;
     if (km >= 0 && km < K && km != k && u < 0) {
-      src[k] = -1 - (int)km;
+      ks->src[k] = -1 - (int)km;
     } else {
-      src[k] = nk;
+      ks->src[k] = nk;
       t[nk++] = tall[k];
     }
   }
   const int nkp = (nk + 3) & ~3; /* padding offsets t = 0, never read back */
-  work wk = {nkp, t, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}};
+  ks->nk = nk;
+  ks->t = t;
+  ks->wk = (work){nkp, t, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}};
   for (int j = 0; j < NK; ++j) {
-    wk.acc[j] = mem + (size_t)(6 + j) * Kp;
-    closed[j] = mem + (size_t)(6 + NK + j) * Kp;
+    ks->wk.acc[j] = mem + (size_t)(6 + j) * Kp;
+    ks->closed[j] = mem + (size_t)(6 + NK + j) * Kp;
   }
   for (int i = nk; i < nkp; ++i) {
-    wk.ct[i] = 1.0;
-    wk.st[i] = 0.0;
+    ks->wk.ct[i] = 1.0;
+    ks->wk.st[i] = 0.0;
   }
-  for (int j = 0; j < NK; ++j) prev[j] = NULL;
-  double *prevmem = NULL;
+  return RS_OK;
+}
 
-  double e[NK][3];
-  multiplier_expansion(cyl, e);
+/* cos t, sin t of each summed offset, and the closed-form part of each kernel there: the
+ * accelerated sums' e0 S0 + e1 S1 + e2 S2 and the n = 0 term (uniform pressure; uniform
+ * shear, torsion, gives no w and no eps). */
+static rs_status closed_parts(rs_cylinder *cyl, rs_basis basis, double w, int accelerate,
+                              const double e[NK][3], unsigned what, double shift, int M,
+                              kernel_sum *ks)
+{
   const unsigned cmask = (what & (RS_KERNEL_PU | RS_KERNEL_PE) ? 1u : 0u) |
                          (what & (RS_KERNEL_QU | RS_KERNEL_QE) ? 2u : 0u);
-  for (int i = 0; i < nk; ++i) {
-    wk.ct[i] = cos(t[i]);
-    wk.st[i] = sin(t[i]);
-    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(t[i]) - w) < 1e-10 * w) {
+  double *const *closed = ks->closed;
+  for (int i = 0; i < ks->nk; ++i) {
+    double ti = ks->t[i];
+    ks->wk.ct[i] = cos(ti);
+    ks->wk.st[i] = sin(ti);
+    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(ti) - w) < 1e-10 * w) {
       int k = 0;
-      while (src[k] != i) ++k;
-      free(mem);
-      free(src);
+      while (ks->src[k] != i) ++k;
       return RS_ERROR(RS_ERR_INPUT, "shear-to-strain kernel of a box is log-singular at its "
                       "edge (offset %d dx %+g m)", k - (M - 1), shift);
     }
-    if (o.accelerate) {
+    if (accelerate) {
       double S[6];
-      rs_cyl_closed_sums_part(basis, w, t[i], cmask, S);
+      rs_cyl_closed_sums_part(basis, w, ti, cmask, S);
       closed[KPU][i] = e[KPU][1] * S[1] + e[KPU][2] * S[2];
       closed[KPE][i] = e[KPE][0] * S[0] + e[KPE][1] * S[1] + e[KPE][2] * S[2];
       closed[KQU][i] = e[KQU][1] * S[4] + e[KQU][2] * S[5];
       closed[KQE][i] = e[KQE][0] * S[3] + e[KQE][1] * S[4] + e[KQE][2] * S[5];
     }
   }
-
-  /* n = 0: uniform pressure; uniform shear (torsion) gives no w and no eps */
-  st = rs_cyl_cache_reserve(cyl, 0);
-  if (st) goto done;
+  rs_status st = rs_cyl_cache_reserve(cyl, 0);
+  if (st) return st;
   double a0 = rs_cyl_basis_coef(basis, w, 0), F0 = cyl->cache[0].F[0][0];
-  for (int i = 0; i < nk; ++i) {
+  for (int i = 0; i < ks->nk; ++i) {
     closed[KPU][i] += a0 * F0;
     closed[KPE][i] -= a0 * F0;
   }
+  return RS_OK;
+}
 
-  long N = o.terms > 0 ? o.terms : 64, done_to = 0;
-  unsigned bit[NK] = {RS_KERNEL_PU, RS_KERNEL_PE, RS_KERNEL_QU, RS_KERNEL_QE};
-  for (;;) {
-    st = rs_cyl_cache_reserve(cyl, N);
-    if (st) goto done;
-    /* in chunks of whole 256-mode restarts (bit for bit one call), asking between them
-     * whether to stop: 65536 terms at 1024 nodes take seconds */
-    for (long n1 = done_to + 1; n1 <= N; n1 += 16 * 256) {
-      if (rs_cancel_requested()) {
-        st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted while summing the kernel series");
-        goto done;
-      }
-      add_modes(cyl, basis, w, o.accelerate, e, what, n1, n1 + 16 * 256 - 1 < N ? n1 + 16 * 256 - 1 : N,
-                &wk);
+static const unsigned kernel_bit[NK] = {RS_KERNEL_PU, RS_KERNEL_PE, RS_KERNEL_QU, RS_KERNEL_QE};
+
+/* Doubling: converged when the last doubling moved each requested kernel by less than
+ * tol/4 of its largest value. */
+static int series_converged(const kernel_sum *ks, unsigned what, double tol)
+{
+  for (int j = 0; j < NK; ++j) {
+    if (!(what & kernel_bit[j])) continue;
+    double mx = 0, dmax = 0;
+    for (int i = 0; i < ks->nk; ++i) {
+      double v = ks->closed[j][i] + ks->wk.acc[j][i];
+      mx = fmax(mx, fabs(v));
+      dmax = fmax(dmax, fabs(v - ks->prev[j][i]));
     }
-    done_to = N;
-    if (o.terms > 0) break;
-    /* doubling: converged when the last doubling moved each kernel < tol/4 of its max */
-    if (prevmem) {
-      int ok = 1;
-      for (int j = 0; j < NK && ok; ++j) {
-        if (!(what & bit[j])) continue;
-        double mx = 0, dmax = 0;
-        for (int i = 0; i < nk; ++i) {
-          double v = closed[j][i] + wk.acc[j][i];
-          mx = fmax(mx, fabs(v));
-          dmax = fmax(dmax, fabs(v - prev[j][i]));
-        }
-        if (!(dmax <= 0.25 * o.tol * mx)) ok = 0;
-      }
-      if (ok) break;
+    if (!(dmax <= 0.25 * tol * mx)) return 0;
+  }
+  return 1;
+}
+
+/* Sums the series: o->terms modes when given, else 64, 128, ... until converged. Modes are
+ * added in chunks of whole 256-mode restarts (bit for bit one call), asking between them
+ * whether to stop: 65536 terms at 1024 nodes take seconds. */
+static rs_status series_sum(rs_cylinder *cyl, rs_basis basis, double w, const rs_series_opts *o,
+                            const double e[NK][3], unsigned what, kernel_sum *ks, long *done_to)
+{
+  long N = o->terms > 0 ? o->terms : 64;
+  *done_to = 0;
+  for (;;) {
+    rs_status st = rs_cyl_cache_reserve(cyl, N);
+    if (st) return st;
+    for (long n1 = *done_to + 1; n1 <= N; n1 += 16 * 256) {
+      if (rs_cancel_requested())
+        return RS_ERROR(RS_ERR_INTERRUPTED, "interrupted while summing the kernel series");
+      add_modes(cyl, basis, w, o->accelerate, e, what, n1,
+                n1 + 16 * 256 - 1 < N ? n1 + 16 * 256 - 1 : N, &ks->wk);
+    }
+    *done_to = N;
+    if (o->terms > 0) return RS_OK;
+    if (ks->prevmem) {
+      if (series_converged(ks, what, o->tol)) return RS_OK;
     } else {
-      prevmem = malloc((size_t)K * NK * sizeof(double));
-      if (!prevmem) {
-        st = RS_ERROR(RS_ERR_MEMORY, "kernel work space");
-        goto done;
-      }
-      for (int j = 0; j < NK; ++j) prev[j] = prevmem + (size_t)j * K;
+      ks->prevmem = malloc((size_t)ks->K * NK * sizeof(double));
+      if (!ks->prevmem) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
+      for (int j = 0; j < NK; ++j) ks->prev[j] = ks->prevmem + (size_t)j * ks->K;
     }
     for (int j = 0; j < NK; ++j)
-      for (int i = 0; i < nk; ++i) prev[j][i] = closed[j][i] + wk.acc[j][i];
-    if (2 * N > o.max_terms) {
-      st = RS_ERROR(RS_ERR_SOLVER, "kernel series not converged to %g with %ld terms "
-                    "(max_terms %ld)", o.tol, N, o.max_terms);
-      goto done;
-    }
+      for (int i = 0; i < ks->nk; ++i) ks->prev[j][i] = ks->closed[j][i] + ks->wk.acc[j][i];
+    if (2 * N > o->max_terms)
+      return RS_ERROR(RS_ERR_SOLVER, "kernel series not converged to %g with %ld terms "
+                      "(max_terms %ld)", o->tol, N, o->max_terms);
     N *= 2;
   }
+}
 
+/* The kernels at every offset: the summed ones scaled (R/A for displacements, 1/A for
+ * strains), the mirrored ones by parity (even p, odd q). */
+static void kernels_scatter(const rs_cylinder *cyl, const kernel_sum *ks, unsigned what,
+                            rs_kernels *out)
+{
   double fu = cyl->R / cyl->A_ref, fe = 1.0 / cyl->A_ref;
   double *dst[NK] = {out->pu, out->pe, out->qu, out->qe};
   double fac[NK] = {fu, fe, fu, fe}, par[NK] = {1, 1, -1, -1};
+  const int *src = ks->src;
   for (int j = 0; j < NK; ++j) {
-    if (!(what & bit[j])) continue;
-    for (int k = 0; k < K; ++k)
-      if (src[k] >= 0) dst[j][k] = fac[j] * (closed[j][src[k]] + wk.acc[j][src[k]]);
-    for (int k = 0; k < K; ++k)
+    if (!(what & kernel_bit[j])) continue;
+    for (int k = 0; k < ks->K; ++k)
+      if (src[k] >= 0) dst[j][k] = fac[j] * (ks->closed[j][src[k]] + ks->wk.acc[j][src[k]]);
+    for (int k = 0; k < ks->K; ++k)
       if (src[k] < 0) dst[j][k] = par[j] * dst[j][-1 - src[k]];
   }
-  out->M = M;
-  out->basis = basis;
-  out->dx = dx;
-  out->shift = shift;
-  out->terms = done_to;
-done:
-  free(prevmem);
-  free(mem);
-  free(src);
+}
+
+rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, double shift, int M,
+                              unsigned what, const rs_series_opts *opts, rs_kernels *out)
+{
+  if (!cyl || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  double w = 0;
+  rs_status st = kernel_check(cyl, basis, dx, shift, M, &w);
+  if (st) return st;
+  rs_series_opts o = {0, 1e-6, 1L << 22, 1};
+  if (opts) o = *opts;
+  if (o.tol <= 0) o.tol = 1e-6;
+  if (o.max_terms <= 0) o.max_terms = 1L << 22;
+  what &= RS_KERNEL_ALL;
+  if (!what) what = RS_KERNEL_ALL;
+  st = ensure_capacity(out, 2 * M - 1);
+  if (st) return st;
+
+  kernel_sum ks = {0};
+  double e[NK][3];
+  long done_to = 0;
+  multiplier_expansion(cyl, e);
+  st = offsets_build(cyl, dx, shift, M, &ks);
+  if (!st) st = closed_parts(cyl, basis, w, o.accelerate, e, what, shift, M, &ks);
+  if (!st) st = series_sum(cyl, basis, w, &o, e, what, &ks, &done_to);
+  if (!st) {
+    kernels_scatter(cyl, &ks, what, out);
+    out->M = M;
+    out->basis = basis;
+    out->dx = dx;
+    out->shift = shift;
+    out->terms = done_to;
+  }
+  kernel_sum_free(&ks);
   return st;
 }

@@ -37,6 +37,10 @@ static void row_update(int n, double *restrict x, double f, const double *restri
   for (int j = 0; j < n; ++j) x[j] -= f * y[j];
 }
 
+/* The whole method in one function, as the textbooks give it (set up the tableau from the
+ * full-stick solve, then pivot: entering variable, ratio test, pivot, complement), longer
+ * than the project's 80 lines because split it reads worse: the tableau, the basis and the
+ * pivot rule are one piece of state that every step reads and changes. */
 rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *state_out, int *pivots)
 {
   const int M = nc->M, n = nc->n, E = M - 1, S = 2 * E, m = 2 * S;

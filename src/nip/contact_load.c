@@ -104,6 +104,84 @@ static void remember(rs_nip_contact *nc, double P, double Rs, double Es, double 
   if (nc->hist_n < 3) ++nc->hist_n;
 }
 
+/* The load search's state in x = ln a: the bracket [lo, hi] once found (P(lo) < P <
+ * P(hi)), the last step and the secant slope d ln P / d ln a, and how many steps in a row
+ * did not halve the misfit. */
+typedef struct load_search {
+  double P, lnP, carried, xmin, xmax;
+  int have_lo, have_hi, evals, solves, stall;
+  double lo, hi, xprev, fprev, fbest, slope;
+} load_search;
+
+/* The misfit f = ln P(a) - ln P at a = exp(x). A state that cannot exist at a half-width
+ * too small for the drum's traction counts as too little load (widen), not as a failure. */
+static rs_status load_misfit(rs_nip_contact *nc, double Ti, load_search *ls, double x,
+                             rs_nip_solution *out, double *f)
+{
+  rs_status st = rs_nipc_solve_fixed(nc, exp(x), Ti, out);
+  ++ls->evals;
+  ls->solves += out->iterations;
+  if (st == RS_ERR_SOLVER && ls->carried > 0 && !ls->have_hi) {
+    /* No stick/slip state at this a: if the load it carries (the pressures of the last
+     * linear solve) is too small for the drum's traction, no state can exist there; that
+     * says the half-width is too small, so widen instead of failing. */
+    double Pa = 0, dx = 2 * exp(x) / (nc->M - 1);
+    for (int j = 1; j < nc->M - 1; ++j) Pa += dx * nc->z[j - 1];
+    if (!(Pa > 0 && nc->cfg.mu_drum * Pa < 1.5 * ls->carried))
+      return rs_error_wrap("load search for nip.load = %g N/m (try %d)", ls->P, ls->evals);
+    rs_error_clear();
+    nc->have_warm = 0;
+    *f = fmin(log(Pa) - ls->lnP, -1e-3);
+    return RS_OK;
+  }
+  if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", ls->P, ls->evals);
+  if (!(out->load > 0))
+    return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
+  *f = log(out->load) - ls->lnP;
+  return RS_OK;
+}
+
+/* The next x after misfit f at x: the secant step inside the bracket (bisection when it
+ * leaves it or stalls); before a bracket, the secant step doubled for each step that did
+ * not halve |f| (a poor slope), at most a factor 2 in a, within [xmin, xmax]. */
+static rs_status load_step(load_search *ls, double x, double f, const rs_nip_solution *out,
+                           double *xn_out)
+{
+  if (f < 0) { ls->have_lo = 1; ls->lo = x; }
+  else { ls->have_hi = 1; ls->hi = x; }
+  if (ls->evals > 1 && x != ls->xprev) {
+    double s = (f - ls->fprev) / (x - ls->xprev);
+    if (s > 0 && isfinite(s)) ls->slope = s;
+  }
+  ls->stall = fabs(f) > 0.5 * ls->fbest ? ls->stall + 1 : 0;
+  ls->fbest = fmin(ls->fbest, fabs(f));
+  double xn = x - f / ls->slope;
+  if (ls->have_lo && ls->have_hi) {
+    if (!(xn > ls->lo && xn < ls->hi) || ls->stall >= 2) {
+      xn = 0.5 * (ls->lo + ls->hi);
+      ls->stall = 0;
+    }
+  } else {
+    xn = x - ldexp(f / ls->slope, ls->stall < 8 ? ls->stall : 8);
+    if (!ls->have_hi) { /* P too small so far: widen */
+      if (x >= ls->xmax)
+        return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m needs a contact half-width beyond "
+                        "0.2 min(R1, R2) = %g m (P there is %g N/m): no half-width carries it",
+                        ls->P, exp(ls->xmax), out->load);
+      xn = fmin(fmin(xn, x + log(2.0)), ls->xmax);
+    } else { /* P too large so far: narrow */
+      if (x <= ls->xmin)
+        return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m is too small: P(a = %g m) = %g N/m",
+                        ls->P, exp(ls->xmin), out->load);
+      xn = fmax(fmax(xn, x - log(2.0)), ls->xmin);
+    }
+  }
+  ls->xprev = x;
+  ls->fprev = f;
+  *xn_out = xn;
+  return RS_OK;
+}
+
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out)
 {
   if (!nc || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
@@ -119,82 +197,29 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
                     "no stick/slip state exists; raise nip.load or nip.friction.drum",
                     nc->cfg.mu_drum, P, nc->cfg.mu_drum * P, carried, Ti);
   const double Rs = rs_nipc_rstar(nc), amax = 0.2 * fmin(nc->R[0], nc->R[1]), Es = estar(nc);
-  const double xmax = log(amax), xmin = log(amax * 1e-7), lnP = log(P), tol = nc->cfg.load_rtol;
-  double a0 = predict(nc, P, Rs, Es), slope = 2.0;
-  if (nc->hist_n > 0 && nc->warm_slope > 0.5 && nc->warm_slope < 4) slope = nc->warm_slope;
+  load_search ls = {.P = P, .lnP = log(P), .carried = carried, .xmin = log(amax * 1e-7),
+                    .xmax = log(amax), .fbest = INFINITY, .slope = 2.0};
+  double a0 = predict(nc, P, Rs, Es);
+  if (nc->hist_n > 0 && nc->warm_slope > 0.5 && nc->warm_slope < 4) ls.slope = nc->warm_slope;
   if (!(a0 > 0) || !isfinite(a0)) a0 = 1e-3 * amax;
-  double x = fmin(fmax(log(a0), xmin), xmax);
-  int have_lo = 0, have_hi = 0, evals = 0, solves = 0, stall = 0;
-  double lo = 0, hi = 0, xprev = 0, fprev = 0, fbest = INFINITY, flast = 0;
+  double x = fmin(fmax(log(a0), ls.xmin), ls.xmax), f = 0;
   for (;;) {
-    rs_status st = rs_nipc_solve_fixed(nc, exp(x), Ti, out);
-    ++evals;
-    solves += out->iterations;
-    double f;
-    if (st == RS_ERR_SOLVER && carried > 0 && !have_hi) {
-      /* No stick/slip state at this a: if the load it carries (the pressures of the last
-       * linear solve) is too small for the drum's traction, no state can exist there; that
-       * says the half-width is too small, so widen instead of failing. */
-      double Pa = 0, dx = 2 * exp(x) / (nc->M - 1);
-      for (int j = 1; j < nc->M - 1; ++j) Pa += dx * nc->z[j - 1];
-      if (!(Pa > 0 && nc->cfg.mu_drum * Pa < 1.5 * carried))
-        return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
-      rs_error_clear();
-      nc->have_warm = 0;
-      f = fmin(log(Pa) - lnP, -1e-3);
-    } else {
-      if (st) return rs_error_wrap("load search for nip.load = %g N/m (try %d)", P, evals);
-      if (!(out->load > 0))
-        return RS_ERROR(RS_ERR_SOLVER, "load search: P(a = %g m) = %g N/m is not positive", exp(x), out->load);
-      f = log(out->load) - lnP;
-    }
-    flast = f;
-    if (fabs(f) <= tol) break;
-    if (evals >= 80)
+    rs_status st = load_misfit(nc, Ti, &ls, x, out, &f);
+    if (st) return st;
+    if (fabs(f) <= nc->cfg.load_rtol) break;
+    if (ls.evals >= 80)
       return RS_ERROR(RS_ERR_SOLVER, "load search for nip.load = %g N/m did not converge in %d "
-                      "half-widths (last a = %g m, P(a) = %g N/m)", P, evals, exp(x), out->load);
-    if (f < 0) { have_lo = 1; lo = x; }
-    else { have_hi = 1; hi = x; }
-    if (evals > 1 && x != xprev) {
-      double s = (f - fprev) / (x - xprev);
-      if (s > 0 && isfinite(s)) slope = s;
-    }
-    stall = fabs(f) > 0.5 * fbest ? stall + 1 : 0;
-    fbest = fmin(fbest, fabs(f));
-    double xn = x - f / slope;
-    if (have_lo && have_hi) {
-      if (!(xn > lo && xn < hi) || stall >= 2) {
-        xn = 0.5 * (lo + hi);
-        stall = 0;
-      }
-    } else {
-      /* not bracketed yet: the secant step, doubled for each step that did not halve |f|
-       * (a poor slope), at most a factor 2 in a */
-      xn = x - ldexp(f / slope, stall < 8 ? stall : 8);
-      if (!have_hi) { /* P too small so far: widen */
-        if (x >= xmax)
-          return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m needs a contact half-width beyond "
-                          "0.2 min(R1, R2) = %g m (P there is %g N/m): no half-width carries it",
-                          P, amax, out->load);
-        xn = fmin(fmin(xn, x + log(2.0)), xmax);
-      } else { /* P too large so far: narrow */
-        if (x <= xmin)
-          return RS_ERROR(RS_ERR_INPUT, "nip.load = %g N/m is too small: P(a = %g m) = %g N/m",
-                          P, exp(xmin), out->load);
-        xn = fmax(fmax(xn, x - log(2.0)), xmin);
-      }
-    }
-    xprev = x;
-    fprev = f;
-    x = xn;
+                      "half-widths (last a = %g m, P(a) = %g N/m)", P, ls.evals, exp(x), out->load);
+    st = load_step(&ls, x, f, out, &x);
+    if (st) return st;
   }
-  out->width_iterations = evals;
-  out->total_solves = solves;
+  out->width_iterations = ls.evals;
+  out->total_solves = ls.solves;
   out->E_r = 0;
   /* remember the half-width that carries P exactly, to first order: the predictor
    * extrapolates these, and the raw ones carry a noise of load_rtol / slope */
-  remember(nc, P, Rs, Es, out->a * exp(-flast / slope));
+  remember(nc, P, Rs, Es, out->a * exp(-f / ls.slope));
   nc->last_a = out->a;
-  nc->warm_slope = slope;
+  nc->warm_slope = ls.slope;
   return RS_OK;
 }

@@ -42,15 +42,12 @@ static double num(const yn *root, const char *path, const char *key)
   return ys_num(root, full);
 }
 
-rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
-                            double r1, rs_recipe *out)
+/* A key the law does not take is an error at that key (a torque recipe's 'end' says why). */
+static rs_status unused_keys(const yn *root, const char *path, const char *what,
+                             rs_recipe_kind law)
 {
   char key[256];
   const yn *node = yn_get(root, path);
-  snprintf(key, sizeof key, "%s.law", path);
-  rs_recipe_kind law = (rs_recipe_kind)ys_enum(root, key);
-  const char *law_name = rs_recipe_law_name(law);
-
   for (int i = 0; i < node->n; ++i) {
     const char *k = node->keys[i];
     if (strcmp(k, "law") == 0 || law_uses(law, k)) continue;
@@ -60,19 +57,23 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
                      "a torque recipe is fixed by its start value (%s = start r0 / r); "
                      "remove 'end', or use law: hyperbolic with end (or k)",
                      what);
-    return ys_fail(root, key, "not used by law %s (it takes: %s)", law_name, law_keys(law));
+    return ys_fail(root, key, "not used by law %s (it takes: %s)", rs_recipe_law_name(law),
+                   law_keys(law));
   }
+  return RS_OK;
+}
+
+/* The law's numbers into out (every key it needs present). */
+static rs_status read_law(const yn *root, const char *path, rs_recipe_kind law, rs_recipe *out)
+{
+  char key[256];
+  const yn *node = yn_get(root, path);
 #define NEED(k)                                                                              \
   do {                                                                                       \
     if (!yn_map_get(node, k))                                                                \
-      return ys_fail(root, path, "law %s needs '%s' (it takes: %s)", law_name, k,            \
-                     law_keys(law));                                                         \
+      return ys_fail(root, path, "law %s needs '%s' (it takes: %s)", rs_recipe_law_name(law), \
+                     k, law_keys(law));                                                      \
   } while (0)
-
-  memset(out, 0, sizeof *out);
-  out->law = law;
-  out->end = NAN;
-  out->k = NAN;
   switch (law) {
   case RS_RECIPE_CONSTANT:
     NEED("value");
@@ -115,27 +116,36 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
   }
   }
 #undef NEED
+  return RS_OK;
+}
 
-  const char *tkey = yn_map_get(node, "points") ? "points" : "table";
-  if (rs_recipe_prepare(out, r0, r1) != RS_OK) {
-    char msg[1024];
-    int idx;
-    snprintf(msg, sizeof msg, "%s", rs_error_message());
-    const char *at = strstr(msg, "table[");
-    if (law == RS_RECIPE_TABLE && at && sscanf(at, "table[%d]", &idx) == 1)
-      snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, idx);
-    else
-      snprintf(key, sizeof key, "%s", path);
-    return ys_fail(root, key, "%s", msg);
-  }
+/* The recipe's own checks (rs_recipe_prepare), reported at the table row they name. */
+static rs_status prepare_at_key(const yn *root, const char *path, const char *tkey, double r0,
+                                double r1, rs_recipe *out)
+{
+  if (rs_recipe_prepare(out, r0, r1) == RS_OK) return RS_OK;
+  char msg[1024], key[256];
+  int idx;
+  snprintf(msg, sizeof msg, "%s", rs_error_message());
+  const char *at = strstr(msg, "table[");
+  if (out->law == RS_RECIPE_TABLE && at && sscanf(at, "table[%d]", &idx) == 1)
+    snprintf(key, sizeof key, "%s.%s[%d]", path, tkey, idx);
+  else
+    snprintf(key, sizeof key, "%s", path);
+  return ys_fail(root, key, "%s", msg);
+}
 
-  /* the least value on [r0, r1] and where it is (each law is monotone, a table is
-   * piecewise linear: the minimum sits at an end or at a point) */
+/* No negative value on [r0, r1], reported where it is (each law is monotone, a table is
+ * piecewise linear: the minimum sits at an end or at a point), and table radii > 0. */
+static rs_status check_sign(const yn *root, const char *path, const char *what,
+                            const char *tkey, double r0, double r1, const rs_recipe *out)
+{
+  char key[256];
   const char *unit = strcmp(what, "speed") == 0 ? "m/s" : "N/m";
   double vmin = rs_recipe_min(out);
   if (!(vmin >= 0.0)) {
     double v0 = rs_recipe_eval(out, r0), v1 = rs_recipe_eval(out, r1);
-    switch (law) {
+    switch (out->law) {
     case RS_RECIPE_TABLE: {
       int imin = 0;
       for (int i = 1; i < out->n_points; ++i)
@@ -153,7 +163,7 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
         return ys_fail(root, key, "the %s must not be negative (got %g %s at the core, r = %g m)",
                        what, v0, unit, r0);
       }
-      snprintf(key, sizeof key, "%s.%s", path, yn_map_get(node, "k") ? "k" : "end");
+      snprintf(key, sizeof key, "%s.%s", path, yn_map_get(yn_get(root, path), "k") ? "k" : "end");
       return ys_fail(root, key, "taper makes the %s negative at r = %.3g m (%.3g %s)", what, r1,
                      v1, unit);
     }
@@ -164,4 +174,24 @@ rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, 
       return ys_fail(root, key, "radius must be > 0 m (got %g)", out->r[i]);
     }
   return RS_OK;
+}
+
+rs_status ys_resolve_recipe(const yn *root, const char *path, const char *what, double r0,
+                            double r1, rs_recipe *out)
+{
+  char key[256];
+  snprintf(key, sizeof key, "%s.law", path);
+  rs_recipe_kind law = (rs_recipe_kind)ys_enum(root, key);
+  rs_status st = unused_keys(root, path, what, law);
+  if (st) return st;
+  memset(out, 0, sizeof *out);
+  out->law = law;
+  out->end = NAN;
+  out->k = NAN;
+  st = read_law(root, path, law, out);
+  if (st) return st;
+  const char *tkey = yn_map_get(yn_get(root, path), "points") ? "points" : "table";
+  st = prepare_at_key(root, path, tkey, r0, r1, out);
+  if (st) return st;
+  return check_sign(root, path, what, tkey, r0, r1, out);
 }

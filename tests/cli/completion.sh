@@ -30,6 +30,16 @@ for c in run check compare plot study nip; do
   [ -n "$want" ] || fail "$c --help lists no flags"
   [ "$want" = "$have" ] || { echo "help:"; echo "$want"; echo "completion:"; echo "$have"; fail "$c: flags differ"; }
 done
+# fit parses its own arguments: its subcommands, then each one's flags as its usage lists them
+[ "$(complete_words reelsim fit '' | tr '\n' ' ')" = "--help roll stack " ] || fail "fit subcommands"
+for sub in stack roll; do
+  want="$("$bin" fit $sub --help | grep "reelsim fit $sub" -A1 | grep -oE '(^|[ [])--?[a-z][a-z-]*' | sed 's/^[ [ ]*//' | sort -u)"
+  have="$(complete_words reelsim fit $sub x -- | sort -u; complete_words reelsim fit $sub x -o | sort -u)"
+  have="$(printf '%s\n' "$have" | sort -u)"
+  [ -n "$want" ] || fail "fit $sub --help lists no flags"
+  [ "$want" = "$have" ] || { echo "usage:"; echo "$want"; echo "completion:"; echo "$have"; fail "fit $sub: flags differ"; }
+done
+[ "$(complete_words reelsim fit stack x.csv --law ha | tr '\n' ' ')" = "hakiel " ] || fail "--law ha"
 [ "$(complete_words reelsim run x.yaml --js | tr '\n' ' ')" = "--json " ] || fail "run --js"
 [ -z "$(complete_words reelsim check --js)" ] || fail "check takes no --json"
 # operands and option arguments

@@ -40,4 +40,6 @@ rs_cli_test(fit_roll_bad_key 2 [[--vary winding\.bogus=100:400: .*unknown key 'b
 # fit parses its own arguments: its help is reachable all three ways
 rs_cli_test(fit_help 0 [[usage: reelsim fit stack TEST\.csv]] fit --help)
 rs_cli_test(help_fit 0 [[reelsim fit roll SCENE --measured DATA\.csv]] help fit)
+rs_cli_test(fit_stack_help 0 [[usage: reelsim fit stack TEST\.csv]] fit stack --help)
+rs_cli_test(fit_roll_help 0 [[reelsim fit roll SCENE --measured DATA\.csv]] fit roll -h)
 rs_cli_test(help_lists_fit 0 [[fit stack TEST\.csv \| fit roll SCENE]] --help)
