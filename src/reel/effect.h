@@ -15,21 +15,21 @@
  *                each effect's `wound` (the air's records, the centrifugal part of the load)
  *       records  radius, Ti, w, T0 into the result
  *     increment  the roll winds the m layers (rs_roll_add_layers)
- *     records    each effect's `after_increment` (the history), the wound radius (gauge)
+ *     records    each effect's `after_increment` (the history, the wound radius)
  *   finish     the roll's state into the result, each effect's `collect` (list order: the
  *              history's last stage, the films as entrained, the spin part), each effect's
- *              `finish` (the films compressed by the final pressures), the gauges, the check
- *              that every stress is finite
+ *              `finish` (the films compressed by the final pressures, then the gauges), the
+ *              check that every stress is finite
  *
  * An effect is an ops table and its content, as SUNDIALS' vectors and solvers: the loop
  * calls an op when it is not NULL, and a problem without the effect has no entry in the
  * list, so none of its code runs. Each effect's content is written by its own file only
- * (effect_nip.c, effect_air.c, effect_spin.c, effect_history.c); the loop's state below is
- * written by the loop, except where an op's comment says what it may set. */
+ * (effect_history.c, effect_air.c, effect_nip.c, effect_spin.c, effect_gauge.c: the list's
+ * order); the loop's state below is written by the loop, except where an op's comment says
+ * what it may set. */
 #ifndef RS_REEL_EFFECT_H
 #define RS_REEL_EFFECT_H
 
-#include "reel/gauge.h"
 #include "reelsim/problem.h"
 #include "reelsim/reel.h"
 #include "reelsim/roll.h"
@@ -72,8 +72,9 @@ typedef struct rs_reel_effect_ops {
   rs_status (*begin)(rs_reel_effect *e, rs_reel_state *s, rs_reel_step *step);
   /* where layer L->j goes on: sets L->R and L->r (one effect at most has it) */
   void (*place)(const rs_reel_effect *e, const rs_reel_state *s, rs_reel_layer *L);
-  /* the layer's T0 (L->Ti, L->load given); may set step->m = L->b and step->end, or
-   * step->again: the ops after it are then not called for this layer */
+  /* the layer's T0 (L->Ti, L->load given; a driver's own tension sets Ti and T0); may set
+   * step->m = L->b and step->end, or step->again: the ops after it are then not called for
+   * this layer */
   rs_status (*tension)(rs_reel_effect *e, const rs_reel_state *s, rs_reel_step *step,
                        rs_reel_layer *L);
   /* the layer is accepted at L->T0 (>= 0): may set L->radius and L->carried */
@@ -106,7 +107,6 @@ struct rs_reel_state {
   rs_roll *roll;
   double *block;          /* [min(per_step, N)] N/m, the loads of one increment */
   const double *film;     /* [N + 1] m, the air films entrained (the air effect's), or NULL */
-  rs_reel_gauge gauge;    /* the wound radius as the roll grew */
   int n_effects;
   rs_reel_effect effects[RS_REEL_MAX_EFFECTS];
   const rs_reel_effect *placer; /* the effect with `place`, or NULL */
@@ -128,6 +128,7 @@ extern const rs_reel_effect_ops rs_reel_history_effect; /* effect_history.c */
 extern const rs_reel_effect_ops rs_reel_air_effect;     /* effect_air.c */
 extern const rs_reel_effect_ops rs_reel_nip_effect;     /* effect_nip.c */
 extern const rs_reel_effect_ops rs_reel_spin_effect;    /* effect_spin.c */
+extern const rs_reel_effect_ops rs_reel_gauge_effect;   /* effect_gauge.c */
 
 /* The loop's phases, for a driver that steps several rolls (reel.c). create: the problem's
  * effects, after `extra` (n_extra of them, first in the list: e.g. a lanes driver's tension,

@@ -1,9 +1,8 @@
-/* Winding a whole reel: grow the roll increment by increment; at each layer the recipes
- * give the web tension and nip load, the effects the problem has (the nip, entrained air,
- * the centrifugal load, the stress history) act through their ops, and the build-up engine
- * winds the layers on. The phases and the effect interface: effect.h. */
+/* Winding a whole reel: set up the roll and the effects the problem has (the nip, entrained
+ * air, the centrifugal load, the stress history, the wound radius), grow the roll increment
+ * by increment (reel_step.c), finish the result. The phases and the effect interface:
+ * effect.h. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -101,30 +100,11 @@ static void reel_collect(const rs_roll *roll, rs_reel_result *res, double t_star
   res->wall_seconds = rs_clock_wall() - t_start;
 }
 
-/* What gauges read, from the finished roll: the deformed radii (now and as each layer went
- * on) and the wound-in tension (src/reel/gauge.c) */
-static rs_status reel_gauges(const rs_problem *pb, rs_reel_result *res, rs_reel_gauge *g,
-                             const double *film)
-{
-  const int n = res->n_layers;
-  res->deformed_radius = malloc((size_t)n * sizeof(double));
-  res->wound_radius = malloc((size_t)n * sizeof(double));
-  res->wound_in_tension = malloc((size_t)n * sizeof(double));
-  if (!res->deformed_radius || !res->wound_radius || !res->wound_in_tension)
-    return RS_ERROR(RS_ERR_MEMORY, "cannot allocate the gauges' radii (%d layers)", n);
-  rs_status st = rs_reel_deformed_radius(pb, res->core_pressure, res->sigma_r, film, n,
-                                         res->deformed_radius);
-  if (!st) st = rs_reel_gauge_record(g, pb, n, res->core_pressure, res->sigma_r, film, 1);
-  if (st) return st;
-  rs_reel_gauge_finish(g, pb, n, res->wound_radius);
-  rs_reel_wound_in_tension(pb, res->sigma_theta, n, res->wound_in_tension);
-  return RS_OK;
-}
-
 /* ---- set up: the effects the problem has, in the loop's order ---------------------------
  * the history (its setup refuses an oversized history before anything else is allocated),
  * the air (it places the layers: the nip is solved at its radii, with its films), the nip,
- * the centrifugal load (on the T0 the nip gave). A driver's own effects come first. */
+ * the centrifugal load (on the T0 the nip gave), the wound radius (every reel; last: it
+ * reads the result the others finished). A driver's own effects come first. */
 static rs_status reel_effects(rs_reel_state *s, const rs_reel_effect *extra, int n_extra)
 {
   const rs_problem *pb = s->pb;
@@ -133,6 +113,7 @@ static rs_status reel_effects(rs_reel_state *s, const rs_reel_effect *extra, int
       pb->air.on ? &rs_reel_air_effect : NULL,
       pb->nip.model != RS_NIP_NONE ? &rs_reel_nip_effect : NULL,
       pb->centrifugal ? &rs_reel_spin_effect : NULL,
+      &rs_reel_gauge_effect,
   };
   const int n_ops = (int)(sizeof ops / sizeof ops[0]);
   if (n_extra < 0 || n_extra + n_ops > RS_REEL_MAX_EFFECTS)
@@ -176,100 +157,8 @@ rs_status rs_reel_state_create(const rs_problem *pb, const rs_reel_effect *extra
     rs_reel_effect *e = &s->effects[k];
     if (e->ops->setup) st = e->ops->setup(e, s, &params);
   }
-  if (!st) st = rs_reel_gauge_init(&s->gauge, N);
   if (!st) st = rs_roll_create(&params, &s->roll);
   return st;
-}
-
-/* ---- per increment ----------------------------------------------------------------------- */
-
-/* One layer: where it goes on, the recipes' tension and load, the effects' T0 (they may end
- * the increment before it or ask to plan it again), the check, what the roll carries, the
- * records. */
-static rs_status reel_layer(rs_reel_state *s, rs_reel_step *step, int b)
-{
-  const rs_problem *pb = s->pb;
-  rs_reel_result *res = s->res;
-  rs_reel_layer L = {.j = step->first + b, .b = b};
-  rs_status st;
-  rs_reel_place(s, &L);
-  L.Ti = L.T0 = rs_recipe_eval(&pb->tension, L.r);
-  L.load = pb->nip.model != RS_NIP_NONE ? rs_recipe_eval(&pb->nip.load, L.r) : 0.0;
-  for (int k = 0; k < s->n_effects; ++k) {
-    rs_reel_effect *e = &s->effects[k];
-    if (e->ops->tension && ((st = e->ops->tension(e, s, step, &L)) || step->m == b || step->again))
-      return st;
-  }
-  if (!(L.T0 >= 0.0) || !isfinite(L.T0))
-    return RS_ERROR(RS_ERR_SOLVER,
-                    "wound-on tension %g N/m at r = %.6g m (layer %d of %d) is %s: the web would "
-                    "go slack on the roll",
-                    L.T0, L.r, L.j + 1, s->N, isfinite(L.T0) ? "negative" : "not finite");
-  L.radius = L.r;
-  L.carried = L.T0;
-  for (int k = 0; k < s->n_effects; ++k) {
-    rs_reel_effect *e = &s->effects[k];
-    if (e->ops->wound && (st = e->ops->wound(e, s, &L))) return st;
-  }
-  res->radius[L.j] = L.radius;
-  res->web_tension[L.j] = L.Ti;
-  res->nip_load[L.j] = L.load;
-  res->wound_on_tension[L.j] = L.T0;
-  s->block[b] = L.carried;
-  return RS_OK;
-}
-
-/* The roll went back to `layers` (an adaptive nip's check failed): every effect drops what
- * it recorded beyond. */
-static void reel_rewind(rs_reel_state *s, int layers)
-{
-  s->first = layers;
-  for (int k = 0; k < s->n_effects; ++k) {
-    rs_reel_effect *e = &s->effects[k];
-    if (e->ops->rewind) e->ops->rewind(e, s, layers);
-  }
-  rs_reel_gauge_rewind(&s->gauge, layers);
-}
-
-/* After the roll's increment: the effects' records, then the wound radius. */
-static rs_status reel_records(rs_reel_state *s)
-{
-  rs_status st;
-  for (int k = 0; k < s->n_effects; ++k) {
-    rs_reel_effect *e = &s->effects[k];
-    if (e->ops->after_increment && (st = e->ops->after_increment(e, s))) return st;
-  }
-  return rs_reel_gauge_record(&s->gauge, s->pb, s->first, rs_roll_core_pressure(s->roll),
-                              rs_roll_sigma_r(s->roll), s->film, 0);
-}
-
-rs_status rs_reel_state_step(rs_reel_state *s)
-{
-  const int left = s->N - s->first;
-  rs_reel_step step = {.first = s->first, .m = left < s->per_step ? left : s->per_step, .rewind = -1};
-  rs_status st = RS_OK;
-  for (int k = 0; k < s->n_effects && !st && step.rewind < 0; ++k) {
-    rs_reel_effect *e = &s->effects[k];
-    if (e->ops->begin) st = e->ops->begin(e, s, &step);
-  }
-  if (st) return st;
-  if (step.rewind >= 0) {
-    reel_rewind(s, step.rewind);
-    return RS_OK;
-  }
-  for (int b = 0; b < step.m && !step.again; ++b)
-    if ((st = reel_layer(s, &step, b))) return st;
-  if (step.again) return RS_OK;
-  if (step.m == 0) { /* the roll reached its size */
-    s->done = 1;
-    return RS_OK;
-  }
-  if ((st = rs_roll_add_layers(s->roll, step.m, s->block)))
-    return rs_error_wrap("winding layers %d-%d of %d (r = %.6g m)", s->first + 1, s->first + step.m,
-                         s->N, rs_roll_layer_radius(s->roll, s->first + step.m - 1));
-  s->first += step.m;
-  s->done = step.end || s->first >= s->N;
-  return reel_records(s);
 }
 
 /* ---- finish ------------------------------------------------------------------------------ */
@@ -296,8 +185,6 @@ rs_status rs_reel_state_finish(rs_reel_state *s, rs_status st, rs_reel_result **
     rs_reel_effect *e = &s->effects[k];
     if (e->ops->finish) st = reel_merge(st, e->ops->finish(e, s, st));
   }
-  if (res->n_layers > 0 && s->gauge.layers)
-    st = reel_merge(st, reel_gauges(s->pb, res, &s->gauge, s->film));
   for (int j = 0; st == RS_OK && j < res->n_layers; ++j)
     if (!isfinite(res->sigma_r[j]) || !isfinite(res->sigma_theta[j]))
       st = RS_ERROR(RS_ERR_SOLVER, "non-finite stress in layer %d after winding", j + 1);
@@ -314,7 +201,6 @@ void rs_reel_state_destroy(rs_reel_state **sp)
   rs_roll_destroy(&s->roll);
   for (int k = s->n_effects - 1; k >= 0; --k)
     if (s->effects[k].ops->destroy) s->effects[k].ops->destroy(&s->effects[k]);
-  rs_reel_gauge_free(&s->gauge);
   free(s->block);
   rs_reel_result_destroy(&s->res);
   free(s);
@@ -360,35 +246,4 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   st = rs_reel_state_finish(s, st, out);
   rs_reel_state_destroy(&s);
   return st;
-}
-
-void rs_reel_summarize(const rs_reel_result *res, rs_reel_summary *sum)
-{
-  memset(sum, 0, sizeof *sum);
-  int n = res->n_layers;
-  sum->layers = n;
-  sum->core_pressure = res->core_pressure;
-  if (n == 0) return;
-  sum->final_radius = res->radius[n - 1];
-  sum->peak_pressure = -INFINITY;
-  sum->min_hoop = INFINITY;
-  sum->wot_min = INFINITY;
-  sum->wot_max = -INFINITY;
-  for (int j = 0; j < n; ++j) {
-    if (-res->sigma_r[j] > sum->peak_pressure) {
-      sum->peak_pressure = -res->sigma_r[j];
-      sum->peak_pressure_radius = res->radius[j];
-    }
-    if (res->sigma_theta[j] < sum->min_hoop) {
-      sum->min_hoop = res->sigma_theta[j];
-      sum->min_hoop_radius = res->radius[j];
-    }
-    sum->wot_min = fmin(sum->wot_min, res->wound_on_tension[j]);
-    sum->wot_max = fmax(sum->wot_max, res->wound_on_tension[j]);
-  }
-  /* the core carries a pressure too; report it as the peak if it is the largest */
-  if (res->core_pressure > sum->peak_pressure) {
-    sum->peak_pressure = res->core_pressure;
-    sum->peak_pressure_radius = res->core_radius;
-  }
 }

@@ -1,7 +1,8 @@
 /* Whether a summary can be shown (NaN or Inf in a figure means a broken solution), and
- * the roll's size as engineers quote it. */
+ * the roll's size as engineers quote it; the summary figures themselves. */
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "reelsim/reel.h"
 
@@ -56,5 +57,36 @@ void rs_reel_sizes_of(const rs_reel_result *res, const rs_problem *problem, rs_r
     out->air_film_max = fmax(out->air_film_max, res->air_film[j]);
     out->air_entrained_min = fmin(out->air_entrained_min, res->air_film_entrained[j]);
     out->air_entrained_max = fmax(out->air_entrained_max, res->air_film_entrained[j]);
+  }
+}
+
+void rs_reel_summarize(const rs_reel_result *res, rs_reel_summary *sum)
+{
+  memset(sum, 0, sizeof *sum);
+  int n = res->n_layers;
+  sum->layers = n;
+  sum->core_pressure = res->core_pressure;
+  if (n == 0) return;
+  sum->final_radius = res->radius[n - 1];
+  sum->peak_pressure = -INFINITY;
+  sum->min_hoop = INFINITY;
+  sum->wot_min = INFINITY;
+  sum->wot_max = -INFINITY;
+  for (int j = 0; j < n; ++j) {
+    if (-res->sigma_r[j] > sum->peak_pressure) {
+      sum->peak_pressure = -res->sigma_r[j];
+      sum->peak_pressure_radius = res->radius[j];
+    }
+    if (res->sigma_theta[j] < sum->min_hoop) {
+      sum->min_hoop = res->sigma_theta[j];
+      sum->min_hoop_radius = res->radius[j];
+    }
+    sum->wot_min = fmin(sum->wot_min, res->wound_on_tension[j]);
+    sum->wot_max = fmax(sum->wot_max, res->wound_on_tension[j]);
+  }
+  /* the core carries a pressure too; report it as the peak if it is the largest */
+  if (res->core_pressure > sum->peak_pressure) {
+    sum->peak_pressure = res->core_pressure;
+    sum->peak_pressure_radius = res->core_radius;
   }
 }
