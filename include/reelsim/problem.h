@@ -67,6 +67,23 @@ typedef struct rs_air_spec {
                               or 1 (one surface: TopWeb's convention) */
 } rs_air_spec;
 
+/* Lanes across the width (docs/lanes.md): the web split into `count` lanes (0: none, the
+ * reel winds one radial line exactly as without the block), each its own roll on the shared
+ * core with its caliper, coupled layer by layer through the one sheet entering. */
+enum { RS_LANES_MAX = 256 };
+typedef enum rs_lanes_nip {
+  RS_LANES_NIP_UNIFORM = 0, /* each lane the mean line load */
+  RS_LANES_NIP_ROLLER = 1   /* a rigid lay-on roller resting on the lanes' radius profile */
+} rs_lanes_nip;
+typedef struct rs_lanes_spec {
+  int count;                      /* lanes; 0: no lanes */
+  rs_lanes_nip nip;
+  double x[RS_LANES_MAX];         /* m, each lane's centre across the width */
+  double width[RS_LANES_MAX];     /* m, each lane's width (> 0) */
+  double caliper[RS_LANES_MAX];   /* factor on material.caliper (> 0) */
+  double tension[RS_LANES_MAX];   /* factor on the entry tension (> 0; 1: uniform) */
+} rs_lanes_spec;
+
 typedef struct rs_problem {
   rs_material material;
   rs_core core;
@@ -92,6 +109,7 @@ typedef struct rs_problem {
                               given (winding.accel_torque is the alternative) */
   double core_friction;    /* static web-on-core friction, core.friction (cinching at the core);
                               0 = not given */
+  rs_lanes_spec lanes;     /* lanes across the width (count 0: none) */
 } rs_problem;
 
 RS_END_DECLS

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "reel/effect.h"
+#include "reel/lanes.h"
 #include "util/cancel.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
@@ -44,6 +45,7 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->deformed_radius);
   free(res->wound_radius);
   free(res->wound_in_tension);
+  rs_lanes_result_destroy(&res->lanes);
   free(res);
   *resp = NULL;
 }
@@ -229,6 +231,7 @@ rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_ree
   if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: out is NULL");
   *out = NULL;
   if (!pb) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: no problem");
+  if (pb->lanes.count > 0) return rs_lanes_wind(pb, opts, out); /* lanes across the width */
   rs_reel_state *s = NULL;
   rs_status st = rs_reel_state_create(pb, NULL, 0, &s);
   if (!s) return st;

@@ -102,6 +102,11 @@ static const ys_range table[] = {
     {"air.cutoff", "", 0, 1e3, NONE, NONE, ""},
     {"air.pressure", "Pa", 1, 1e9, 3e4, 3e5, "kPa bar psi"},
     {"air.nip_radius", "m", 1e-3, 10, 0.01, 1.5, "mm in"},
+    {"lanes.width", "m", 1e-4, 100, 0.05, 12, "mm in"},
+    {"lanes.edges", "m", -100, 100, -12, 12, "mm in"},
+    {"lanes.caliper", "", 0, 100, 0.5, 2, ""},
+    {"lanes.caliper_profile", "m|", 0, 100, 0.5, 2, ""},
+    {"lanes.tension_profile", "m|", 0, 100, 0.2, 5, ""},
 };
 
 const ys_range *ys_ranges(int *n)

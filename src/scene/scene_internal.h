@@ -59,6 +59,8 @@ rs_status ys_core_geometry(const yn *root, double *radius, const char **key, dou
 rs_status ys_resolve_storage(const yn *root, rs_scene *scene);
 /* resolve_speed.c: winding.speed and the centrifugal load */
 rs_status ys_resolve_speed(const yn *root, rs_scene *scene);
+/* resolve_lanes.c: the `lanes` block (docs/lanes.md); count 0 without it */
+rs_status ys_resolve_lanes(const yn *root, rs_scene *scene);
 
 /* Reports an error at a dotted scene path; when the key is absent, at its nearest
  * present parent ("file:line: nip.load: required by ..."). */
