@@ -142,6 +142,14 @@ typedef struct rs_lanes_summary {
 } rs_lanes_summary;
 /* 0 for a result without lanes (sum->count 0), else 1. */
 int rs_lanes_summarize(const rs_reel_result *res, double pressure_limit, rs_lanes_summary *sum);
+/* The lanes' array `name` by name, for a foreign-function interface: per lane ("x",
+ * "width", "caliper", "core_pressure", "outer_radius": *rows = lanes, *cols = 0), per layer
+ * ("strain": *rows = layers, *cols = 0), layers x lanes row-major ("wound_on_tension",
+ * "web_tension", "nip_load", "final/sigma_r", "final/sigma_theta", "final/radius"; *rows =
+ * layers, *cols = lanes). NULL (and 0, 0) for a result without lanes, an unknown name or
+ * nip_load without a nip. Owned by the result. */
+const double *rs_lanes_result_array(const rs_reel_result *res, const char *name, int *rows,
+                                    int *cols);
 
 /* Summary figures a user reads first. */
 typedef struct rs_reel_summary {
