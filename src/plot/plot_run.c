@@ -301,5 +301,6 @@ rs_status plot_run_figures(plot_ctx *c, const run_data *d)
   if (st == RS_OK) st = fig_tension(c, d);
   if (st == RS_OK) st = fig_air(c, d);
   if (st == RS_OK) st = plot_storage_figures(c, d); /* only when the file has /storage */
+  if (st == RS_OK) st = plot_lanes_figures(c, d);   /* only when the file has /lanes */
   return st;
 }

@@ -23,3 +23,4 @@ rs_cli_test(lanes_summary 0 [[hardest lane +x = 0\.45 m]]
             run -o lanes-band-text.h5 ${LSC}/band.yaml)
 rs_cli_test(lanes_none_json 0 [["lanes":null]]
             run --json -o lanes-none.h5 ${SC}/small.yaml)
+rs_cli_script(lanes_plot lanes_plot.sh ${LSC}/band.yaml ${SC}/small.yaml)
