@@ -1,7 +1,8 @@
 /* The reel loop and its effects (internal to src/reel/; docs/architecture.md, "The reel
  * loop").
  *
- * The loop (src/reel/reel.c) winds one roll increment by increment through named phases:
+ * The loop (src/reel/reel.c; one increment: reel_step.c) winds one roll increment by
+ * increment through named phases:
  *
  *   set up     the effects' setup (in list order), then the roll
  *   per increment of m layers (layers_per_step, fewer at the end):
@@ -35,7 +36,8 @@
 #include "reelsim/roll.h"
 #include "reelsim/status.h"
 
-/* at most this many effects in one loop (nip, air, centrifugal, history and room) */
+/* at most this many effects in one loop (history, air, nip, centrifugal, gauge and a
+ * driver's own) */
 #define RS_REEL_MAX_EFFECTS 8
 
 typedef struct rs_reel_effect rs_reel_effect;
@@ -130,12 +132,14 @@ extern const rs_reel_effect_ops rs_reel_nip_effect;     /* effect_nip.c */
 extern const rs_reel_effect_ops rs_reel_spin_effect;    /* effect_spin.c */
 extern const rs_reel_effect_ops rs_reel_gauge_effect;   /* effect_gauge.c */
 
-/* The loop's phases, for a driver that steps several rolls (reel.c). create: the problem's
- * effects, after `extra` (n_extra of them, first in the list: e.g. a lanes driver's tension,
- * its content the caller's, set up by its setup op if any), set up and the roll created; on
- * failure *out (if not NULL) still holds the state for finish. step: one increment (or a
- * rewind, or a re-plan); s->done once the reel is finished. finish: the result (*res, the
- * caller's; NULL when it could not be allocated) with the run's status st merged. */
+/* The loop's phases, for a driver that steps several rolls (reel.c).
+ * create: the effects set up and the roll created: first `extra` (n_extra of them, e.g. a
+ *   lanes driver's tension; content given by the caller or made by its setup op; its
+ *   destroy op, if any, called with the state's), then the problem's. On failure *out (if
+ *   not NULL) still holds the state for finish.
+ * step: one increment (or a rewind, or a re-plan); s->done once the reel is finished.
+ * finish: the result (*res, the caller's; NULL when it could not be allocated) with the
+ *   run's status st merged. */
 rs_status rs_reel_state_create(const rs_problem *pb, const rs_reel_effect *extra, int n_extra,
                                rs_reel_state **out);
 rs_status rs_reel_state_step(rs_reel_state *s);

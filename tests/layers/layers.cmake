@@ -5,7 +5,7 @@ add_test(NAME layers.tree
                  $<TARGET_OBJECTS:reelsim_objects> $<TARGET_OBJECTS:reelsim_sweep>
                  $<TARGET_OBJECTS:reelsim_cli>
          COMMAND_EXPAND_LISTS)
-set_tests_properties(layers.tree PROPERTIES LABELS unit TIMEOUT 300)
+set_tests_properties(layers.tree PROPERTIES LABELS unit TIMEOUT 900)
 foreach(c lower_includes_higher internal_includes_higher include_cycle cli_internal_header
           unplaced call_cycle call_upwards)
   add_test(NAME layers.refuses.${c}
