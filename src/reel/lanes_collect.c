@@ -11,18 +11,6 @@
 
 #include "reel/lanes.h"
 
-void rs_lanes_result_destroy(rs_lanes_result **lrp)
-{
-  if (!lrp || !*lrp) return;
-  rs_lanes_result *lr = *lrp;
-  free(lr->x), free(lr->width), free(lr->caliper), free(lr->core_pressure);
-  free(lr->outer_radius), free(lr->wound_on_tension), free(lr->web_tension), free(lr->slack);
-  free(lr->strain), free(lr->nip_load), free(lr->sigma_r), free(lr->sigma_theta);
-  free(lr->radius);
-  free(lr);
-  *lrp = NULL;
-}
-
 rs_lanes_result *rs_lanes_result_new(int n, int N, int with_nip)
 {
   rs_lanes_result *lr = calloc(1, sizeof *lr);
