@@ -94,6 +94,22 @@ typedef struct rs_winder_spec {
   double drum_radius[RS_MAX_NIPS];      /* m, two_drum: the drum of a front/rear nip */
   double drum_distance;                 /* m, two_drum: the drums' centre distance */
 } rs_winder_spec;
+/* Lanes across the width (docs/lanes.md): the web split into `count` lanes (0: none, the
+ * reel winds one radial line exactly as without the block), each its own roll on the shared
+ * core with its caliper, coupled layer by layer through the one sheet entering. */
+enum { RS_LANES_MAX = 256 };
+typedef enum rs_lanes_nip {
+  RS_LANES_NIP_UNIFORM = 0, /* each lane the mean line load */
+  RS_LANES_NIP_ROLLER = 1   /* a rigid lay-on roller resting on the lanes' radius profile */
+} rs_lanes_nip;
+typedef struct rs_lanes_spec {
+  int count;                      /* lanes; 0: no lanes */
+  rs_lanes_nip nip;
+  double x[RS_LANES_MAX];         /* m, each lane's centre across the width */
+  double width[RS_LANES_MAX];     /* m, each lane's width (> 0) */
+  double caliper[RS_LANES_MAX];   /* factor on material.caliper (> 0) */
+  double tension[RS_LANES_MAX];   /* factor on the entry tension (> 0; 1: uniform) */
+} rs_lanes_spec;
 
 typedef struct rs_problem {
   rs_material material;
@@ -124,6 +140,7 @@ typedef struct rs_problem {
    * holds the first nip's settings (update policy, model) and, as its load, the nips'
    * total against radius (the /layers/nip_load record). */
   rs_winder_spec winder;
+  rs_lanes_spec lanes;     /* lanes across the width (count 0: none) */
 } rs_problem;
 
 RS_END_DECLS

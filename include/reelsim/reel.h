@@ -13,6 +13,10 @@ RS_BEGIN_DECLS
  * may change between versions without breaking a program). */
 typedef struct rs_reel_result rs_reel_result;
 
+/* The lanes' record of a result wound with lanes (docs/lanes.md), opaque: read it with
+ * rs_lanes_result_array and rs_lanes_summarize below. */
+typedef struct rs_lanes_result rs_lanes_result;
+
 /* Optional observer: called after each increment with the layers wound so far.
  * Return nonzero to stop the run (the result then holds what was finished and the
  * status is RS_ERR_INTERRUPTED). */
@@ -41,6 +45,34 @@ rs_status rs_reel_deformed_radius(const rs_problem *problem, double core_pressur
 /* The wound-in tension sigma_theta t (N/m) of n layers. */
 void rs_reel_wound_in_tension(const rs_problem *problem, const double *sigma_theta, int n,
                               double *out);
+
+/* What a user reads first of the lanes (the run's summary, --json "lanes"). A lane's peak
+ * pressure is the largest of its core pressure and -sigma_r; its slack radius the outer
+ * radius (nominal, r_c + (k+1) t_i) of the first layer it went on slack. The defect lines:
+ * hard band where a lane's peak pressure exceeds pressure_limit (> 0; 0: not assessed),
+ * baggy lane where a lane went slack while winding, the ridge height. */
+typedef struct rs_lanes_summary {
+  int count;
+  double ridge_height;        /* m, max - min of the lanes' deformed outer radii */
+  double ridge_x;             /* m, the highest lane's x */
+  int hardest;                /* the lane (0-based) of the largest peak pressure */
+  double hardest_x, hardest_pressure; /* m, Pa */
+  double tension_min, tension_max;    /* N/m, the lanes' web tension over lanes and layers */
+  int slack_lanes;            /* lanes slack at some layer */
+  double slack_from[RS_LANES_MAX]; /* m, where each lane first went slack (NaN: never) */
+  int hard_lanes;             /* lanes over pressure_limit (0 when not assessed) */
+  double pressure_limit;      /* Pa, 0: not given */
+} rs_lanes_summary;
+/* 0 for a result without lanes (sum->count 0), else 1. */
+int rs_lanes_summarize(const rs_reel_result *res, double pressure_limit, rs_lanes_summary *sum);
+/* The lanes' array `name` by name, for a foreign-function interface: per lane ("x",
+ * "width", "caliper", "core_pressure", "outer_radius": *rows = lanes, *cols = 0), per layer
+ * ("strain": *rows = layers, *cols = 0), layers x lanes row-major ("wound_on_tension",
+ * "web_tension", "nip_load", "final/sigma_r", "final/sigma_theta", "final/radius"; *rows =
+ * layers, *cols = lanes). NULL (and 0, 0) for a result without lanes, an unknown name or
+ * nip_load without a nip. Owned by the result. */
+const double *rs_lanes_result_array(const rs_reel_result *res, const char *name, int *rows,
+                                    int *cols);
 
 /* Summary figures a user reads first. */
 typedef struct rs_reel_summary {

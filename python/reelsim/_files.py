@@ -9,7 +9,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from . import _lib
+from . import _lanes, _lib
 from ._errors import Error, InputError
 from ._result import Result
 from ._stored import History, Storage, defects_from_file
@@ -183,6 +183,7 @@ def _extras(rd, base):
                                  sigma_r=rd.matrix(g + "/sigma_r"),
                                  sigma_theta=rd.matrix(g + "/sigma_theta"))
     out["defects"] = defects_from_file(rd.has, rd.attr_number, rd.attr, base)
+    out["lanes"] = _lanes.of_file(rd, base)
     return out
 
 

@@ -46,6 +46,12 @@ class Result:
     history   a reelsim.History: the roll at stages of the winding
               (output.history_every), None without
     name      the run's name in a compare file ("2-lo"), else ""
+    lanes     lanes across the width (docs/lanes.md), None without: a dict of numpy
+              arrays, per lane "x", "width", "caliper", "core_pressure", "outer_radius",
+              per layer "strain", layers x lanes "wound_on_tension", "web_tension",
+              "slack", "nip_load" (with a nip), "final_sigma_r", "final_sigma_theta",
+              "final_radius" (/lanes in the run file); the per-layer arrays above are
+              then the width-weighted means of the lanes'
     """
 
     radius: np.ndarray
@@ -68,6 +74,7 @@ class Result:
     storage: object = None
     history: object = None
     name: str = ""
+    lanes: object = None
 
     @property
     def layers(self):

@@ -13,7 +13,7 @@ import threading
 
 import numpy as np
 
-from . import _lib
+from . import _lanes, _lib
 from ._errors import Error, InputError, SolverError
 from ._result import Result
 from . import _stored
@@ -181,6 +181,7 @@ def run(scene, sets=None, *, name=None):
         a = {k: _copy(res, k) for k in _ARRAYS}
         more = _stored.extras(sc, res, int(a["radius"].shape[0]),
                               lambda st: _raise(st, _last_message()))
+        more["lanes"] = _lanes.of_result(res)
         return Result(**more,
                       radius=a["radius"], sigma_r=a["sigma_r"], sigma_theta=a["sigma_theta"],
                       pressure=0.0 - a["sigma_r"],  # as the HDF5 file: +0 where sigma_r = +0

@@ -40,6 +40,8 @@ int cli_bash_completion(FILE *out);
  * lines of the run summary. */
 void cli_fmt_stress(char *buf, size_t size, double pa);
 void cli_print_defects(FILE *out, const rs_defect_report *rep);
+/* The lanes' block and defect lines (nothing without lanes; lanes_print.c) */
+void cli_print_lanes(FILE *out, const rs_scene *scene, const rs_reel_result *res);
 /* The storage stages and the stage where each defect rule reads worst (summary_storage.c). */
 void cli_print_storage(FILE *out, const rs_storage_result *sr);
 /* compare's table of its runs after storage (summary_storage.c): nothing when no run has

@@ -84,6 +84,7 @@ static void print_summary(const rs_scene *scene, const rs_reel_result *res,
       printf("  csv                %s\n", path);
   }
   cli_print_defects(stdout, defects);
+  cli_print_lanes(stdout, scene, res);
   cli_print_storage(stdout, storage);
 }
 

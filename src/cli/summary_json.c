@@ -115,6 +115,7 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
   cli_json_int(j, "cvode_steps", rs_reel_result_cvode_steps(res));
   if (d) defects(j, "defects", d);
   else cli_json_null(j, "defects");
+  cli_json_lanes(j, scene, res);
 }
 
 void cli_json_storage(cli_json *j, const rs_storage_result *sr)

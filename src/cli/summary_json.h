@@ -14,6 +14,9 @@ void cli_json_run_fields(cli_json *j, const rs_scene *scene, const rs_reel_resul
 /* "storage": the stages after the winder (sr NULL: null): hours, temperature, humidity,
  * core pressure per stage (stage 0 the wound roll), the worst stage of each defect rule and
  * every stage's defect verdicts */
+/* "lanes": count, ridge height, the hardest lane, the tension range, the slack lanes (null
+ * without lanes; lanes_print.c) */
+void cli_json_lanes(cli_json *j, const rs_scene *scene, const rs_reel_result *res);
 void cli_json_storage(cli_json *j, const rs_storage_result *sr);
 
 #endif

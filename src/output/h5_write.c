@@ -13,6 +13,7 @@
 #include "output/h5_defects.h"
 #include "output/h5_layout.h"
 #include "output/h5_nip.h"
+#include "output/h5_lanes.h"
 #include "output/h5_util.h"
 #include "reel/result_internal.h"
 #include "util/atomic_file.h"
@@ -224,6 +225,7 @@ rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result
   if (st == RS_OK && rs_scene_problem(scene)->record.history_every > 0) st = write_history(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_nip(loc, scene, res);
+  if (st == RS_OK) st = rs_h5_write_lanes(loc, res);
   return st;
 }
 

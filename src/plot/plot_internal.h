@@ -39,6 +39,10 @@ rs_status rsi_plot_run_read(const plot_ctx *c, int i, run_data *d);
  * -storage-core.png (core pressure against storage time) when the run has /storage. */
 rs_status rsi_plot_storage_figures(plot_ctx *c, const run_data *d);
 void rsi_plot_run_free(run_data *d);
+/* plot_lanes.c: <stem>-lanes-pressure.png (the pressure map, width x radius),
+ * -lanes-profile.png (the final radius across the width, each lane's core pressure) and
+ * -lanes-tension.png (the lanes' web tension against radius) when the run has /lanes. */
+rs_status rsi_plot_lanes_figures(plot_ctx *c, const run_data *d);
 
 enum { PLOT_PATH = 4096 };
 

@@ -302,5 +302,6 @@ rs_status rsi_plot_run_figures(plot_ctx *c, const run_data *d)
   if (st == RS_OK) st = fig_tension(c, d);
   if (st == RS_OK) st = fig_air(c, d);
   if (st == RS_OK) st = rsi_plot_storage_figures(c, d); /* only when the file has /storage */
+  if (st == RS_OK) st = rsi_plot_lanes_figures(c, d);   /* only when the file has /lanes */
   return st;
 }

@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "reel/effect.h"
-#include "util/cancel.h"
 #include "reelsim/clock.h"
 #include "reelsim/nip.h"
 #include "nip/nip_contact.h"
@@ -46,8 +45,22 @@ void rs_reel_result_destroy(rs_reel_result **resp)
   free(res->deformed_radius);
   free(res->wound_radius);
   free(res->wound_in_tension);
+  rs_lanes_result_destroy(&res->lanes);
   free(res);
   *resp = NULL;
+}
+
+/* here beside rs_reel_result_destroy, which frees res->lanes (lanes.h fills it) */
+void rs_lanes_result_destroy(rs_lanes_result **lrp)
+{
+  if (!lrp || !*lrp) return;
+  rs_lanes_result *lr = *lrp;
+  free(lr->x), free(lr->width), free(lr->caliper), free(lr->core_pressure);
+  free(lr->outer_radius), free(lr->wound_on_tension), free(lr->web_tension), free(lr->slack);
+  free(lr->strain), free(lr->nip_load), free(lr->sigma_r), free(lr->sigma_theta);
+  free(lr->radius);
+  free(lr);
+  *lrp = NULL;
 }
 
 static rs_reel_result *reel_result_new(int n)
@@ -207,45 +220,4 @@ void rs_reel_state_destroy(rs_reel_state **sp)
   rs_reel_result_destroy(&s->res);
   free(s);
   *sp = NULL;
-}
-
-/* ---- the driver -------------------------------------------------------------------------- */
-
-/* The progress callback asked from inside long steps too (util/cancel.h): a nip solve with
- * many series terms or nodes stops within RS_CANCEL_INTERVAL of a Ctrl-C, not at its end. */
-typedef struct reel_cancel {
-  const rs_reel_options *opts;
-  int done, N;
-} reel_cancel;
-
-static int reel_cancel_poll(void *user)
-{
-  const reel_cancel *c = user;
-  return c->opts->progress(c->opts->user, c->done, c->N);
-}
-
-/* set up; increments until the reel is finished, the progress after each that wound layers;
- * finish */
-rs_status rs_reel_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
-{
-  if (!out) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: out is NULL");
-  *out = NULL;
-  if (!pb) return RS_ERROR(RS_ERR_INTERNAL, "rs_reel_wind: no problem");
-  rs_reel_state *s = NULL;
-  rs_status st = rs_reel_state_create(pb, NULL, 0, &s);
-  if (!s) return st;
-  rs_cancel_scope scope = {0};
-  reel_cancel cancel = {opts, 0, s->N};
-  rs_cancel_push(&scope, opts && opts->progress ? reel_cancel_poll : NULL, &cancel);
-  while (st == RS_OK && !s->done) {
-    const int before = s->first;
-    if ((st = rs_reel_state_step(s)) || s->first <= before) continue;
-    cancel.done = s->first;
-    if (opts && opts->progress && opts->progress(opts->user, s->first, s->N))
-      st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted after layer %d of %d", s->first, s->N);
-  }
-  rs_cancel_pop(&scope);
-  st = rs_reel_state_finish(s, st, out);
-  rs_reel_state_destroy(&s);
-  return st;
 }

@@ -8,6 +8,27 @@
 #include "reelsim/nip.h"
 #include "reelsim/reel.h"
 
+/* Lanes across the width (problem.lanes.count > 0; docs/lanes.md): each lane's record.
+ * Arrays "layers x lanes" are row-major, row k = layer k. */
+struct rs_lanes_result {
+  int count, n_layers;
+  double *x, *width;         /* m, each lane's centre and width */
+  double *caliper;           /* m, each lane's caliper */
+  double *core_pressure;     /* Pa, each lane's core pressure (compression positive) */
+  double *outer_radius;      /* m, each lane's deformed outer radius at the end (the diameter
+                                profile a gauge reads) */
+  double *wound_on_tension;  /* N/m, layers x lanes: T_i (+ the lane's nip-induced part) */
+  double *web_tension;       /* N/m, layers x lanes: T_i, the web's share (0: slack) */
+  unsigned char *slack;      /* layers x lanes: 1 where T_i = 0 (the lane is baggy) */
+  double *strain;            /* [n_layers] the web's mean machine-direction strain e */
+  double *nip_load;          /* N/m, layers x lanes (NULL without a nip) */
+  double *sigma_r, *sigma_theta; /* Pa, layers x lanes, the final state */
+  double *radius;            /* m, layers x lanes: each layer's deformed outer radius, final */
+  double Tbar_W_misfit;      /* max over layers of |sum w_i T_i - Tbar W| / (Tbar W) */
+  int threads;               /* threads the lanes were wound on */
+};
+void rs_lanes_result_destroy(rs_lanes_result **lr);
+
 struct rs_reel_result {
   int n_layers;
   double *radius;            /* m, outer radius of each layer */
@@ -64,6 +85,10 @@ struct rs_reel_result {
   double *deformed_radius;   /* m */
   double *wound_radius;      /* m */
   double *wound_in_tension;  /* N/m */
+  /* Lanes across the width (problem.lanes.count > 0; NULL otherwise). The per-layer arrays
+   * above are then the width-weighted means of the lanes' (the nip record, history and
+   * profiles: the lane nearest the middle of the width). */
+  rs_lanes_result *lanes;
 };
 
 #endif

@@ -105,6 +105,11 @@ static const ys_range table[] = {
     {"air.nip_radius", "m", 1e-3, 10, 0.01, 1.5, "mm in"},
     {"winder.drum_distance", "m", 2e-3, 40, 0.1, 4, "mm in"},
     {"winder.drum_radius", "m", 1e-3, 10, 0.05, 1.5, "mm in"},
+    {"lanes.width", "m", 1e-4, 100, 0.05, 12, "mm in"},
+    {"lanes.edges", "m", -100, 100, -12, 12, "mm in"},
+    {"lanes.caliper", "", 0, 100, 0.5, 2, ""},
+    {"lanes.caliper_profile", "m|", 0, 100, 0.5, 2, ""},
+    {"lanes.tension_profile", "m|", 0, 100, 0.2, 5, ""},
 };
 
 const ys_range *rsi_ys_ranges(int *n)

@@ -225,6 +225,21 @@ static const ys_field air_fields[] = {
     OPT("nip_radius", &v_float),          DEF("moving_surfaces", &v_int, "2"), END};
 static const ys_value v_air = MAP(air_fields);
 
+/* ---- lanes across the width (docs/lanes.md) ------------------------------------------ *
+ * lists up to 4096 long: more than RS_LANES_MAX lanes is the resolution's error, at its key */
+static const ys_name lane_nips[] = {
+    {"uniform", RS_LANES_NIP_UNIFORM}, {"roller", RS_LANES_NIP_ROLLER}, {NULL, 0}};
+static const ys_value v_lane_nip = ENUM(lane_nips);
+static const ys_value v_lane_list = {.type = YS_LIST, .entry = &v_float, .min = 1, .max = 4096};
+static const ys_value v_lane_profile = {.type = YS_LIST, .entry = &v_pair, .min = 1,
+                                        .max = RS_TABLE_MAX};
+static const ys_field lanes_fields[] = {
+    OPT("width", &v_float),           OPT("count", &v_int),
+    OPT("edges", &v_lane_list),       OPT("caliper", &v_lane_list),
+    OPT("caliper_profile", &v_lane_profile), OPT("tension_profile", &v_lane_profile),
+    DEF("nip", &v_lane_nip, "uniform"), END};
+static const ys_value v_lanes = MAP(lanes_fields);
+
 /* ---- the scene ------------------------------------------------------------------------ */
 static const ys_value v_title = STRING(0, 511);
 static const ys_field scene_fields[] = {
@@ -236,6 +251,7 @@ static const ys_field scene_fields[] = {
     OPT("storage", &v_storage),
     OPT("centrifugal", &v_centrifugal),
     OPT("air", &v_air),
+    OPT("lanes", &v_lanes),
     DEF("numerics", &v_numerics, "{}"),
     DEF("output", &v_output, "{}"),
     OPT("winder", &v_winder_block),
