@@ -7,6 +7,8 @@
 #include <stdlib.h>
 
 #include "output/h5_util.h"
+#include "reel/result_internal.h"
+#include "util/error.h"
 
 typedef struct lanes_column {
   const char *name;

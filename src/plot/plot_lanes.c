@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "plot/plot_internal.h"
+#include "util/error.h"
 
 enum { MAX_LANE_CURVES = 8, MAP_ROWS = 160 };
 

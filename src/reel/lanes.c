@@ -22,7 +22,9 @@
 #include "reel/effect.h"
 #include "reel/lanes_share.h"
 #include "reelsim/recipe.h"
-#include "reelsim/roll.h"
+#include "roll/roll.h"
+#include "reel/result_internal.h"
+#include "util/error.h"
 
 typedef struct lanes_run {
   const rs_problem *pb;

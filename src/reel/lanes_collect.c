@@ -10,6 +10,8 @@
 #include <string.h>
 
 #include "reel/lanes.h"
+#include "reel/result_internal.h"
+#include "util/error.h"
 
 rs_lanes_result *rs_lanes_result_new(int n, int N, int with_nip)
 {

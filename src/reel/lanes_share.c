@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "reelsim/status.h"
+#include "util/error.h"
 
 /* Insertion sort of the lanes by breakpoint z_i = -b_i / a_i, increasing (n <=
  * 256 lanes; ties keep the lanes' order, so the result does not depend on the

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "reelsim/reel.h"
+#include "reel/result_internal.h"
 
 int rs_lanes_summarize(const rs_reel_result *res, double pressure_limit, rs_lanes_summary *sum)
 {

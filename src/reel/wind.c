@@ -8,6 +8,8 @@
 #include "reel/lanes.h"
 #include "util/cancel.h"
 #include "reelsim/reel.h"
+#include "reel/result_internal.h"
+#include "util/error.h"
 
 /* ---- the driver -------------------------------------------------------------------------- */
 

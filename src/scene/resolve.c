@@ -460,6 +460,6 @@ rs_status rsi_ys_resolve(const yn *root, rs_scene *s)
   if (tension == RS_OK && fatal(st = part(rsi_ys_resolve_speed(root, s), &bad))) return st;
   if (mat == RS_OK && fatal(st = part(rsi_ys_resolve_storage(root, s), &bad))) return st;
   if (fatal(st = part(resolve_output(root, s), &bad))) return st;
-  if (fatal(st = part(ys_resolve_lanes(root, s), &bad))) return st;
+  if (fatal(st = part(rsi_ys_resolve_lanes(root, s), &bad))) return st;
   return bad;
 }

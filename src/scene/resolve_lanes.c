@@ -111,7 +111,7 @@ static rs_status lanes_limits(const yn *root, const rs_scene *s)
   return RS_OK;
 }
 
-rs_status ys_resolve_lanes(const yn *root, rs_scene *s)
+rs_status rsi_ys_resolve_lanes(const yn *root, rs_scene *s)
 {
   rs_lanes_spec *L = &s->problem.lanes;
   memset(L, 0, sizeof *L);

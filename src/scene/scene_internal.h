@@ -74,7 +74,7 @@ void rsi_ys_print_nip_saturation(FILE *out, const rs_scene *scene);
 /* resolve_speed.c: winding.speed and the centrifugal load */
 rs_status rsi_ys_resolve_speed(const yn *root, rs_scene *scene);
 /* resolve_lanes.c: the `lanes` block (docs/lanes.md); count 0 without it */
-rs_status ys_resolve_lanes(const yn *root, rs_scene *scene);
+rs_status rsi_ys_resolve_lanes(const yn *root, rs_scene *scene);
 
 /* Reports an error at a dotted scene path; when the key is absent, at its nearest
  * present parent ("file:line: nip.load: required by ..."). */

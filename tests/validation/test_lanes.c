@@ -16,6 +16,7 @@
 #include "reelsim/recipe.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
+#include "reel/result_internal.h"
 
 #ifndef RS_TESTS_DIR
 #error "RS_TESTS_DIR must name tests/"
