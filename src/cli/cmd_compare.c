@@ -248,6 +248,70 @@ static void free_state(compare_state *c)
   free(c->names);
 }
 
+static int alloc_state(compare_state *c)
+{
+  c->scenes = calloc((size_t)c->n, sizeof *c->scenes);
+  c->jobs = calloc((size_t)c->n, sizeof *c->jobs);
+  c->sums = calloc((size_t)c->n, sizeof *c->sums);
+  c->names = calloc((size_t)c->n, sizeof *c->names);
+  c->defects = calloc((size_t)c->n, sizeof *c->defects);
+  c->storage = calloc((size_t)c->n, sizeof *c->storage);
+  if (!c->scenes || !c->jobs || !c->sums || !c->names || !c->defects || !c->storage)
+    return cli_fail(CLI_EXIT_OTHER, "out of memory");
+  return CLI_EXIT_OK;
+}
+
+/* A missing output directory, or a --csv that cannot be a directory, should not cost the
+ * whole comparison: both are found before the winding. */
+static int check_targets(const cli_args *a, const compare_state *c)
+{
+  rs_status st = rs_output_check_target(c->output);
+  if (st == RS_OK && a->csv_dir) {
+    struct stat sb;
+    if (stat(a->csv_dir, &sb) == 0 && !S_ISDIR(sb.st_mode))
+      st = APP_ERROR(RS_ERR_INPUT, "--csv '%s' is not a directory", a->csv_dir);
+  }
+  return st != RS_OK ? cli_fail_status(st) : CLI_EXIT_OK;
+}
+
+/* Every run wound (in parallel); a signal stops the comparison with nothing written. */
+static int wind_all(compare_state *c, int *threads)
+{
+  for (int i = 0; i < c->n; ++i) {
+    c->jobs[i].problem = rs_scene_problem(c->scenes[i]);
+    c->jobs[i].opts.progress = on_progress;
+    rs_output_run_name(i, c->n, c->runs.run[i].name ? c->runs.run[i].name : rs_scene_path(c->scenes[i]),
+                       c->names[i], sizeof c->names[i]);
+  }
+  rs_status st = rs_reel_wind_many(c->n, c->jobs, 0, threads);
+  if (st != RS_OK) return cli_fail_status(st);
+  int sig = cli_signal_caught();
+  if (sig)
+    return cli_fail(cli_signal_exit_code(sig), "compare: %s (no output written)",
+                    cli_signal_word(sig));
+  return CLI_EXIT_OK;
+}
+
+/* The comparison file (every run under its name) and, with --csv, the CSV files. */
+static int write_compare(const cli_args *a, const compare_state *c)
+{
+  rs_output_run *runs = calloc((size_t)c->n, sizeof *runs);
+  const char **names = calloc((size_t)c->n, sizeof *names);
+  rs_status st = RS_OK;
+  if (!runs || !names) st = APP_ERROR(RS_ERR_MEMORY, "out of memory");
+  for (int i = 0; st == RS_OK && i < c->n; ++i) {
+    runs[i] = (rs_output_run){c->scenes[i], c->jobs[i].result};
+    names[i] = c->runs.run[i].name;
+  }
+  if (st == RS_OK)
+    st = rs_output_write_compare_stored(c->output, c->n, runs,
+                                        (const rs_storage_result *const *)c->storage, names);
+  free(runs);
+  free(names);
+  if (st != RS_OK) return cli_fail_status(st);
+  return a->csv_dir ? write_csv(c, a->csv_dir) : CLI_EXIT_OK;
+}
+
 int cli_compare(const cli_args *a)
 {
   double t0 = rs_clock_wall();
@@ -278,52 +342,14 @@ int cli_compare(const cli_args *a)
     goto done;
   }
   c.n = c.runs.n;
-  code = CLI_EXIT_OK;
-  c.scenes = calloc((size_t)c.n, sizeof *c.scenes);
-  c.jobs = calloc((size_t)c.n, sizeof *c.jobs);
-  c.sums = calloc((size_t)c.n, sizeof *c.sums);
-  c.names = calloc((size_t)c.n, sizeof *c.names);
-  c.defects = calloc((size_t)c.n, sizeof *c.defects);
-  c.storage = calloc((size_t)c.n, sizeof *c.storage);
-  if (!c.scenes || !c.jobs || !c.sums || !c.names || !c.defects || !c.storage) {
-    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
-    goto done;
-  }
-
+  if ((code = alloc_state(&c)) != CLI_EXIT_OK) goto done;
   if ((code = load_all(&c)) != CLI_EXIT_OK) {
     if (code == CLI_EXIT_USAGE) fprintf(stderr, "reelsim: compare: nothing was wound\n");
     goto done;
   }
-  /* a missing output directory should not cost the whole comparison */
-  rs_status st = rs_output_check_target(c.output);
-  if (st == RS_OK && a->csv_dir) {
-    struct stat sb; /* a --csv that cannot be a directory is found before the winding */
-    if (stat(a->csv_dir, &sb) == 0 && !S_ISDIR(sb.st_mode))
-      st = APP_ERROR(RS_ERR_INPUT, "--csv '%s' is not a directory", a->csv_dir);
-  }
-  if (st != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
-
-  for (int i = 0; i < c.n; ++i) {
-    c.jobs[i].problem = rs_scene_problem(c.scenes[i]);
-    c.jobs[i].opts.progress = on_progress;
-    rs_output_run_name(i, c.n, c.runs.run[i].name ? c.runs.run[i].name : rs_scene_path(c.scenes[i]),
-                       c.names[i], sizeof c.names[i]);
-  }
-  if ((st = rs_reel_wind_many(c.n, c.jobs, 0, &threads)) != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
-  if (cli_signal_caught()) {
-    int sig = cli_signal_caught();
-    code = cli_fail(cli_signal_exit_code(sig), "compare: %s (no output written)",
-                    cli_signal_word(sig));
-    goto done;
-  }
-
-  if (!cli_signal_caught()) store_all(&c);
+  if ((code = check_targets(a, &c)) != CLI_EXIT_OK) goto done;
+  if ((code = wind_all(&c, &threads)) != CLI_EXIT_OK) goto done;
+  store_all(&c);
   code = check_jobs(&c);
   int assessed = assess_all(&c);
   if (code == CLI_EXIT_OK) code = assessed;
@@ -333,26 +359,10 @@ int cli_compare(const cli_args *a)
     if (a->json) print_json(&c, rs_clock_wall() - t0, threads, NULL);
     goto done;
   }
-
-  rs_output_run *runs = calloc((size_t)c.n, sizeof *runs);
-  if (!runs) {
-    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
-    goto done;
-  }
-  const char **names = calloc((size_t)c.n, sizeof *names);
-  for (int i = 0; i < c.n; ++i) runs[i] = (rs_output_run){c.scenes[i], c.jobs[i].result};
-  for (int i = 0; names && i < c.n; ++i) names[i] = c.runs.run[i].name;
-  st = names ? rs_output_write_compare_stored(c.output, c.n, runs,
-                                              (const rs_storage_result *const *)c.storage, names)
-             : APP_ERROR(RS_ERR_MEMORY, "out of memory");
-  free(runs);
-  free(names);
-  if (st != RS_OK) code = cli_fail_status(st);
-  else if (a->csv_dir) code = write_csv(&c, a->csv_dir);
-  if (st != RS_OK || code != CLI_EXIT_OK) {
-  } else if (a->json) print_json(&c, rs_clock_wall() - t0, threads, c.output);
+  code = write_compare(a, &c);
+  if (code != CLI_EXIT_OK) goto done;
+  if (a->json) print_json(&c, rs_clock_wall() - t0, threads, c.output);
   else if (!a->quiet) printf("output %s%s%s\n", c.output, a->csv_dir ? " and " : "", a->csv_dir ? a->csv_dir : "");
-
 done:
   free_state(&c);
   free(sets);

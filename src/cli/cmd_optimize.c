@@ -255,6 +255,49 @@ static void print_head(const opt_problem *p)
   printf("\n");
 }
 
+/* Before any winding: the scene as given, then every key at LO and HI; a storage figure
+ * asked of a scene without storage stages (never met) is refused. Returns -1 when all is
+ * well, else the exit code. */
+static int check_before(const cli_args *a, const opt_cli *c, const opt_problem *p)
+{
+  int code = -1;
+  for (int k = 0; k < c->n_vars && code < 0; ++k) {
+    rs_status st = sweep_vary_check(a->scene, a->n_sets, a->sets, &c->vars[k]);
+    if (st != RS_OK) code = cli_fail_status(st);
+  }
+  if (code >= 0) return code;
+  rs_scene *base = NULL;
+  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK &&
+      sweep_figure_count(rs_scene_problem(base)) == SWEEP_N_WIND_FIGURES) {
+    int q[64], nq = 0;
+    q[nq++] = p->objective;
+    for (int j = 0; j < p->n_cons && nq < 64; ++j) q[nq++] = p->cons[j].quantity;
+    for (int k = 0; k < nq && code < 0; ++k)
+      if (q[k] >= SWEEP_N_WIND_FIGURES && q[k] < SWEEP_N_FIGURES)
+        code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
+                        opt_figure_name(q[k]), a->scene);
+  }
+  app_error_clear();
+  rs_scene_destroy(&base);
+  return code;
+}
+
+/* The best run's settings and figures, and the files written. */
+static void print_best(const opt_cli *c, const opt_problem *p, const opt_history *h)
+{
+  int failed = 0;
+  for (int i = 0; i < h->n; ++i) failed += h->figures[(size_t)i * OPT_N_FIGURES + OPT_STATUS] != 0;
+  printf("\nbest: run %d of %d (%d in the start, %d refused or failed; COBYLA: %s)\n", h->best + 1,
+         h->n, h->n_start, failed, opt_result_text(h));
+  for (int k = 0; k < p->n_vars; ++k) print_quantity(p, h, h->best, OPT_N_FIGURES + k);
+  printf("figures:\n");
+  for (int f = 0; f < OPT_N_FIGURES; ++f)
+    if (f != OPT_STATUS && (f != OPT_MISFIT || p->target) &&
+        (f < SWEEP_N_WIND_FIGURES || f >= SWEEP_N_FIGURES || h->storage))
+      print_quantity(p, h, h->best, f);
+  printf("wrote %s (the best scene) and %s (every run)\n", c->output, c->history);
+}
+
 int cli_optimize(const cli_args *a)
 {
   opt_cli c;
@@ -269,27 +312,7 @@ int cli_optimize(const cli_args *a)
   memset(&h, 0, sizeof h);
   int code = parse_all(a, &c, &p);
   if (code < 0) code = name_outputs(a, &c);
-  if (code < 0) { /* the scene as given, then every key at LO and HI */
-    for (int k = 0; k < c.n_vars && code < 0; ++k) {
-      rs_status st = sweep_vary_check(a->scene, a->n_sets, a->sets, &c.vars[k]);
-      if (st != RS_OK) code = cli_fail_status(st);
-    }
-  }
-  if (code < 0) { /* a storage figure asked of a scene without storage stages: never met */
-    rs_scene *base = NULL;
-    if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK &&
-        sweep_figure_count(rs_scene_problem(base)) == SWEEP_N_WIND_FIGURES) {
-      int q[64], nq = 0;
-      q[nq++] = p.objective;
-      for (int j = 0; j < p.n_cons && nq < 64; ++j) q[nq++] = p.cons[j].quantity;
-      for (int k = 0; k < nq && code < 0; ++k)
-        if (q[k] >= SWEEP_N_WIND_FIGURES && q[k] < SWEEP_N_FIGURES)
-          code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
-                          opt_figure_name(q[k]), a->scene);
-    }
-    app_error_clear();
-    rs_scene_destroy(&base);
-  }
+  if (code < 0) code = check_before(a, &c, &p);
   if (code >= 0) goto done;
   rs_scene *base = NULL;
   if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK) cli_scene_warnings(base);
@@ -331,17 +354,7 @@ int cli_optimize(const cli_args *a)
   if (code >= 0) goto done;
   code = CLI_EXIT_OK;
   if (a->quiet) goto done;
-  int failed = 0;
-  for (int i = 0; i < h.n; ++i) failed += h.figures[(size_t)i * OPT_N_FIGURES + OPT_STATUS] != 0;
-  printf("\nbest: run %d of %d (%d in the start, %d refused or failed; COBYLA: %s)\n", h.best + 1,
-         h.n, h.n_start, failed, opt_result_text(&h));
-  for (int k = 0; k < p.n_vars; ++k) print_quantity(&p, &h, h.best, OPT_N_FIGURES + k);
-  printf("figures:\n");
-  for (int f = 0; f < OPT_N_FIGURES; ++f)
-    if (f != OPT_STATUS && (f != OPT_MISFIT || p.target) &&
-        (f < SWEEP_N_WIND_FIGURES || f >= SWEEP_N_FIGURES || h.storage))
-      print_quantity(&p, &h, h.best, f);
-  printf("wrote %s (the best scene) and %s (every run)\n", c.output, c.history);
+  print_best(&c, &p, &h);
 done:
   for (int k = 0; k < c.n_vars; ++k) sweep_vary_clear(&c.vars[k]);
   free(c.vars);

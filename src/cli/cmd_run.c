@@ -141,110 +141,78 @@ static int write_partial(const rs_scene *scene, const rs_reel_result *res)
   return 1;
 }
 
-int cli_run(const cli_args *a)
+/* A winding that did not finish: interrupted (a signal, or the progress callback) or a
+ * solver failure, with --keep-partial's partial file. Returns the exit code. */
+static int wind_failed(const cli_args *a, const rs_scene *scene, rs_reel_result *res,
+                       rs_status st, int done_layers)
 {
-  double t0 = rs_clock_wall();
-  cli_signals sig_saved;
-  cli_signals_install(&sig_saved);
-
-  rs_scene *scene = NULL;
-  rs_reel_result *res = NULL;
-  rs_defect_report *defects = NULL;
-  rs_storage_result *storage = NULL;
-  int code = CLI_EXIT_OK;
-  /* a --csv path that cannot be a directory must not cost a whole winding */
-  if (a->csv_dir && (code = cli_outdir_check("--csv", a->csv_dir)) != CLI_EXIT_OK) goto done;
-  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
-  if (st != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
-  cli_scene_warnings(scene);
-
-  if (cli_same_file(rs_scene_output_file(scene), a->scene)) {
-    code = cli_fail(CLI_EXIT_USAGE, "run: output.file '%s' is the scene file itself (it would be "
-                    "overwritten)", rs_scene_output_file(scene));
-    goto done;
-  }
-  const rs_problem *pb = rs_scene_problem(scene);
-  cli_progress prog;
-  cli_progress_init(&prog, !a->quiet && isatty(STDERR_FILENO), pb->n_layers, pb->core.radius,
-                    pb->material.caliper, rs_clock_wall());
-  rs_reel_options opts = {.progress = on_progress, .user = &prog};
-  st = rs_scene_wind(scene, &opts, &res);
-  cli_progress_clear(&prog);
+  const int N = rs_scene_problem(scene)->n_layers;
   if (st == RS_ERR_INTERRUPTED || (st == RS_OK && cli_signal_caught())) {
-    int k = res ? rs_reel_result_n_layers(res) : prog.done, sig = cli_signal_caught();
+    int k = res ? rs_reel_result_n_layers(res) : done_layers, sig = cli_signal_caught();
     const char *how = cli_signal_word(sig);
     if (a->keep_partial && res && write_partial(scene, res))
       cli_fail(0, "%s at layer %d of %d (partial result written to %s, complete = 0)", how, k,
-               rs_scene_problem(scene)->n_layers, rs_scene_output_file(scene));
+               N, rs_scene_output_file(scene));
     else
-      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, rs_scene_problem(scene)->n_layers);
-    code = cli_signal_exit_code(sig);
-    goto done;
+      cli_fail(0, "%s at layer %d of %d (no output written)", how, k, N);
+    return cli_signal_exit_code(sig);
   }
+  if (st == RS_ERR_INPUT) app_error_wrap("%s", rs_scene_path(scene)); /* e.g. a nip model not built */
+  int code = cli_fail_status(st);
+  if (res && st == RS_ERR_SOLVER) {
+    if (a->keep_partial && write_partial(scene, res))
+      fprintf(stderr,
+              "reelsim:   %d of %d layers were wound; partial result written to %s "
+              "(complete = 0)\n",
+              rs_reel_result_n_layers(res), N, rs_scene_output_file(scene));
+    else
+      fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
+              rs_reel_result_n_layers(res), N);
+  }
+  return code;
+}
+
+/* After the winder: the storage stages (docs/storage.md), only when the scene has them.
+ * The stages are not interruptible from inside (they are short against the winding): a
+ * signal during them is honoured when they return, and nothing is written. */
+static int run_storage(const rs_scene *scene, const rs_reel_result *res,
+                       rs_storage_result **storage)
+{
+  if (!rs_storage_requested(rs_scene_problem(scene))) return CLI_EXIT_OK;
+  rs_status st = rs_storage_run(rs_scene_problem(scene), res, storage);
+  int sig = cli_signal_caught();
+  if (sig)
+    return cli_fail(cli_signal_exit_code(sig), "%s during storage (the roll was wound; no "
+                    "output written)", cli_signal_word(sig));
   if (st != RS_OK) {
-    if (st == RS_ERR_INPUT) app_error_wrap("%s", rs_scene_path(scene)); /* e.g. a nip model not built */
-    code = cli_fail_status(st);
-    if (res && st == RS_ERR_SOLVER) {
-      if (a->keep_partial && write_partial(scene, res))
-        fprintf(stderr,
-                "reelsim:   %d of %d layers were wound; partial result written to %s "
-                "(complete = 0)\n",
-                rs_reel_result_n_layers(res), rs_scene_problem(scene)->n_layers,
-                rs_scene_output_file(scene));
-      else
-        fprintf(stderr, "reelsim:   %d of %d layers were wound; no output written\n",
-                rs_reel_result_n_layers(res), rs_scene_problem(scene)->n_layers);
-    }
-    goto done;
+    app_error_wrap("%s", rs_scene_path(scene));
+    int code = cli_fail_status(st);
+    fprintf(stderr, "reelsim:   the roll was wound; no output written\n");
+    return code;
   }
+  return CLI_EXIT_OK;
+}
 
-  rs_reel_summary sum;
-  const char *what = NULL;
-  rs_reel_summarize(res, &sum);
-  if (!rs_reel_summary_finite(&sum, &what)) {
-    code = cli_fail(CLI_EXIT_SOLVER,
-                    "solver failure: the %s is not a finite number; no output written", what);
-    goto done;
-  }
-
-  rs_defect_limits limits;
-  rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
-  st = rs_defects_assess(res, &limits, &defects);
-  /* after the winder: the storage stages (docs/storage.md), only when the scene has them */
-  if (st == RS_OK && rs_storage_requested(rs_scene_problem(scene))) {
-    st = rs_storage_run(rs_scene_problem(scene), res, &storage);
-    /* the stages are not interruptible from inside (they are short against the winding):
-     * a signal during them is honoured when they return, and nothing is written */
-    int sig = cli_signal_caught();
-    if (sig) {
-      code = cli_fail(cli_signal_exit_code(sig), "%s during storage (the roll was wound; no output written)",
-                      cli_signal_word(sig));
-      goto done;
-    }
-    if (st != RS_OK) {
-      app_error_wrap("%s", rs_scene_path(scene));
-      code = cli_fail_status(st);
-      fprintf(stderr, "reelsim:   the roll was wound; no output written\n");
-      goto done;
-    }
-  }
-  /* With --csv the HDF5 file is staged beside its name and renamed into place only when
-   * the CSV files are written too: a failed run leaves no file of its own. */
+/* The run file and, with --csv, the CSV files. With --csv the HDF5 file is staged beside
+ * its name and renamed into place only when the CSV files are written too: a failed run
+ * leaves no file of its own. */
+static int write_outputs(const cli_args *a, const rs_scene *scene, const rs_reel_result *res,
+                         const rs_storage_result *storage)
+{
   const char *out_path = rs_scene_output_file(scene);
   char staged[RS_PATH_MAX + 64] = "";
+  rs_status st = RS_OK;
   if (a->csv_dir) snprintf(staged, sizeof staged, "%s.tmp.%ld.0", out_path, (long)getpid());
-  if (st == RS_OK && staged[0]) st = rs_output_check_target(out_path);
+  if (staged[0]) st = rs_output_check_target(out_path);
   if (st == RS_OK) st = rs_output_write_stored(staged[0] ? staged : out_path, scene, res, storage);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
     cli_outdir made;
-    if ((code = cli_outdir_make("--csv", a->csv_dir, &made)) != CLI_EXIT_OK) {
+    int code = cli_outdir_make("--csv", a->csv_dir, &made);
+    if (code != CLI_EXIT_OK) {
       unlink(staged);
       cli_outdir_undo(&made);
-      goto done;
+      return code;
     }
     rs_scene_name(scene, stem, sizeof stem);
     st = rs_output_write_csv_stored(a->csv_dir, stem, res, storage);
@@ -260,17 +228,69 @@ int cli_run(const cli_args *a)
   } else if (staged[0]) {
     unlink(staged);
   }
+  return st != RS_OK ? cli_fail_status(st) : CLI_EXIT_OK;
+}
+
+/* The winding's outcome, checked and judged: the summary's figures finite, the defects
+ * assessed, the storage stages run, the files written and the summary printed. */
+static int after_winding(const cli_args *a, const rs_scene *scene, const rs_reel_result *res,
+                         double t0)
+{
+  rs_defect_report *defects = NULL;
+  rs_storage_result *storage = NULL;
+  rs_reel_summary sum;
+  const char *what = NULL;
+  rs_reel_summarize(res, &sum);
+  if (!rs_reel_summary_finite(&sum, &what))
+    return cli_fail(CLI_EXIT_SOLVER,
+                    "solver failure: the %s is not a finite number; no output written", what);
+  rs_defect_limits limits;
+  rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
+  rs_status st = rs_defects_assess(res, &limits, &defects);
+  int code = st == RS_OK ? run_storage(scene, res, &storage) : CLI_EXIT_OK;
+  if (code == CLI_EXIT_OK && st == RS_OK) code = write_outputs(a, scene, res, storage);
+  else if (code == CLI_EXIT_OK) code = cli_fail_status(st);
+  if (code == CLI_EXIT_OK) {
+    if (a->json) print_json(scene, res, defects, storage, a->csv_dir, rs_clock_wall() - t0);
+    else if (!a->quiet)
+      print_summary(scene, res, &sum, defects, storage, a->csv_dir, rs_clock_wall() - t0);
+  }
+  rs_storage_result_destroy(&storage);
+  rs_defect_report_destroy(&defects);
+  return code;
+}
+
+int cli_run(const cli_args *a)
+{
+  double t0 = rs_clock_wall();
+  cli_signals sig_saved;
+  cli_signals_install(&sig_saved);
+  rs_scene *scene = NULL;
+  rs_reel_result *res = NULL;
+  int code = CLI_EXIT_OK;
+  /* a --csv path that cannot be a directory must not cost a whole winding */
+  if (a->csv_dir && (code = cli_outdir_check("--csv", a->csv_dir)) != CLI_EXIT_OK) goto done;
+  rs_status st = rs_scene_load(a->scene, a->n_sets, a->sets, &scene);
   if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
-  if (a->json) print_json(scene, res, defects, storage, a->csv_dir, rs_clock_wall() - t0);
-  else if (!a->quiet)
-    print_summary(scene, res, &sum, defects, storage, a->csv_dir, rs_clock_wall() - t0);
-
+  cli_scene_warnings(scene);
+  if (cli_same_file(rs_scene_output_file(scene), a->scene)) {
+    code = cli_fail(CLI_EXIT_USAGE, "run: output.file '%s' is the scene file itself (it would be "
+                    "overwritten)", rs_scene_output_file(scene));
+    goto done;
+  }
+  const rs_problem *pb = rs_scene_problem(scene);
+  cli_progress prog;
+  cli_progress_init(&prog, !a->quiet && isatty(STDERR_FILENO), pb->n_layers, pb->core.radius,
+                    pb->material.caliper, rs_clock_wall());
+  rs_reel_options opts = {.progress = on_progress, .user = &prog};
+  st = rs_scene_wind(scene, &opts, &res);
+  cli_progress_clear(&prog);
+  if (st != RS_OK || cli_signal_caught()) code = wind_failed(a, scene, res, st, prog.done);
+  else code = after_winding(a, scene, res, t0);
 done:
-  rs_storage_result_destroy(&storage);
-  rs_defect_report_destroy(&defects);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&scene);
   cli_signals_restore(&sig_saved);

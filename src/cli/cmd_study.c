@@ -145,21 +145,126 @@ static void print_summary(const rs_study_plan *plan, const rs_study_report *rep)
  * of a long reel holds hundreds of MB). */
 static void slim(rs_reel_result *res) { rs_reel_result_drop_history(res); }
 
-static int n_runs_of(const rs_study_plan *p) { return p ? p->n_runs : 0; }
+
+/* One study's runs: their scenes, jobs and what the analysis reads of them. */
+typedef struct study_runs {
+  int n;
+  rs_scene **scenes;
+  rs_reel_job *jobs;
+  const rs_reel_result **results;
+  double *wall, *cpu;
+} study_runs;
+
+static void study_runs_free(study_runs *r)
+{
+  for (int i = 0; r->jobs && i < r->n; ++i) rs_reel_result_destroy(&r->jobs[i].result);
+  for (int i = 0; r->scenes && i < r->n; ++i) rs_scene_destroy(&r->scenes[i]);
+  free(r->scenes);
+  free(r->jobs);
+  free(r->results);
+  free(r->wall);
+  free(r->cpu);
+}
+
+/* Every run is the scene with the user's overrides, then the run's own. */
+static int load_runs(const cli_args *a, const rs_study_plan *plan, study_runs *r)
+{
+  const int n = plan->n_runs;
+  r->n = n;
+  r->scenes = calloc((size_t)n, sizeof *r->scenes);
+  r->jobs = calloc((size_t)n, sizeof *r->jobs);
+  r->results = calloc((size_t)n, sizeof *r->results);
+  r->wall = calloc((size_t)n, sizeof *r->wall);
+  r->cpu = calloc((size_t)n, sizeof *r->cpu);
+  const char **sets = calloc((size_t)a->n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
+  int code = CLI_EXIT_OK;
+  if (!r->scenes || !r->jobs || !r->results || !r->wall || !r->cpu || !sets)
+    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
+  for (int i = 0; code == CLI_EXIT_OK && i < n; ++i) {
+    const rs_study_run *run = &plan->runs[i];
+    for (int k = 0; k < a->n_sets; ++k) sets[k] = a->sets[k];
+    for (int k = 0; k < run->n_sets; ++k) sets[a->n_sets + k] = run->sets[k];
+    rs_status st = rs_scene_load(a->scene, a->n_sets + run->n_sets, sets, &r->scenes[i]);
+    if (st != RS_OK) {
+      app_error_wrap("study run '%s'", run->label);
+      code = cli_fail_status(st);
+      fprintf(stderr, "reelsim: study: nothing was wound\n");
+    } else {
+      r->jobs[i].problem = rs_scene_problem(r->scenes[i]);
+      r->jobs[i].opts.progress = on_progress;
+    }
+  }
+  free(sets);
+  return code;
+}
+
+/* The runs wound a->jobs at a time; a signal stops the study, and so does a failure of
+ * one of the first three runs (the reference and the defaults the others are held to). */
+static int wind_runs(const cli_args *a, const rs_study_plan *plan, study_runs *r)
+{
+  const int n = r->n;
+  for (int first = 0; first < n; first += a->jobs) {
+    int m = n - first < a->jobs ? n - first : a->jobs;
+    rs_status st = rs_reel_wind_many(m, r->jobs + first, m, NULL);
+    if (st != RS_OK) return cli_fail_status(st);
+    int sig = cli_signal_caught();
+    if (sig)
+      return cli_fail(cli_signal_exit_code(sig), "study: %s (no output written)",
+                      cli_signal_word(sig));
+    for (int i = first; i < first + m; ++i) {
+      rs_reel_job *job = &r->jobs[i];
+      slim(job->result);
+      r->wall[i] = job->wall_seconds;
+      r->cpu[i] = job->cpu_seconds;
+      r->results[i] = job->status == RS_OK ? job->result : NULL;
+      if (!a->quiet) {
+        printf("  [%2d/%d] %-34s %8.2f s%s%s\n", i + 1, n, plan->runs[i].label, job->wall_seconds,
+               job->status ? "  FAILED: " : "", job->status ? job->message : "");
+        fflush(stdout);
+      }
+      if (job->status != RS_OK && i < 3)
+        return cli_fail(rs_status_exit_code(job->status), "study: the %s run failed: %s",
+                        plan->runs[i].label, job->message);
+    }
+  }
+  return CLI_EXIT_OK;
+}
+
+/* study.h5, study.csv and study.png in dir (made now: a failed study leaves none). */
+static int write_study(const cli_args *a, const rs_scene *base, const rs_study_report *rep,
+                       const char *dir, cli_outdir *made, double t_start)
+{
+  char path[RS_PATH_MAX + 32];
+  int code = cli_outdir_make(DIR_LABEL, dir, made);
+  if (code != CLI_EXIT_OK) return code;
+  snprintf(path, sizeof path, "%s/study.h5", dir);
+  rs_status st = rs_study_write(path, base, rep);
+  if (st == RS_OK) {
+    snprintf(path, sizeof path, "%s/study.csv", dir);
+    st = rs_study_write_csv(path, rep);
+  }
+  if (st != RS_OK) return cli_fail_status(st);
+  snprintf(path, sizeof path, "%s/study.png", dir);
+  st = rs_study_plot(rep, rs_scene_title(base), path, NULL);
+  if (st != RS_OK)
+    return cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
+                    app_error_message());
+  if (!a->quiet)
+    printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
+           rs_clock_wall() - t_start);
+  return CLI_EXIT_OK;
+}
 
 int cli_study(const cli_args *a)
 {
   int code = CLI_EXIT_OK;
   double t_start = rs_clock_wall();
-  rs_scene *base = NULL, **scenes = NULL;
+  rs_scene *base = NULL;
   rs_study_plan *plan = NULL;
-  rs_reel_job *jobs = NULL;
-  const rs_reel_result **results = NULL;
-  double *wall = NULL, *cpu = NULL;
-  const char **sets = NULL;
+  study_runs runs = {0};
   rs_study_report rep = {0};
   cli_outdir made = {NULL, NULL};
-  char name[256], dir[RS_PATH_MAX], path[RS_PATH_MAX + 32];
+  char name[256], dir[RS_PATH_MAX];
   cli_signals sig_saved;
   cli_signals_install(&sig_saved);
 
@@ -170,119 +275,36 @@ int cli_study(const cli_args *a)
     code = cli_fail_status(st);
     goto done;
   }
-  const int n = plan->n_runs;
-  scenes = calloc((size_t)n, sizeof *scenes);
-  jobs = calloc((size_t)n, sizeof *jobs);
-  results = calloc((size_t)n, sizeof *results);
-  wall = calloc((size_t)n, sizeof *wall);
-  cpu = calloc((size_t)n, sizeof *cpu);
-  sets = calloc((size_t)a->n_sets + RS_STUDY_MAX_SETS, sizeof *sets);
-  if (!scenes || !jobs || !results || !wall || !cpu || !sets) {
-    code = cli_fail(CLI_EXIT_OTHER, "out of memory");
-    goto done;
-  }
-  /* every run is the scene with the user's overrides, then the run's own */
-  for (int i = 0; i < n; ++i) {
-    const rs_study_run *r = &plan->runs[i];
-    for (int k = 0; k < a->n_sets; ++k) sets[k] = a->sets[k];
-    for (int k = 0; k < r->n_sets; ++k) sets[a->n_sets + k] = r->sets[k];
-    if ((st = rs_scene_load(a->scene, a->n_sets + r->n_sets, sets, &scenes[i])) != RS_OK) {
-      app_error_wrap("study run '%s'", r->label);
-      code = cli_fail_status(st);
-      fprintf(stderr, "reelsim: study: nothing was wound\n");
-      goto done;
-    }
-  }
+  if ((code = load_runs(a, plan, &runs)) != CLI_EXIT_OK) goto done;
   rs_scene_name(base, name, sizeof name);
   if (a->output) snprintf(dir, sizeof dir, "%s", a->output);
   else snprintf(dir, sizeof dir, "study-%s", name);
   /* checked now, made when there is something to write: an interrupted or failed study
    * leaves no empty directory */
   if ((code = cli_outdir_check(DIR_LABEL, dir)) != CLI_EXIT_OK) goto done;
-
   if (!a->quiet) {
     printf("study: %s (%s), %d layers: %d runs%s, %d at a time\n", a->scene, rs_scene_title(base),
-           rs_scene_problem(base)->n_layers, n, a->quick ? " (quick)" : "", a->jobs);
+           rs_scene_problem(base)->n_layers, runs.n, a->quick ? " (quick)" : "", a->jobs);
     fflush(stdout);
   }
-  for (int i = 0; i < n; ++i) {
-    jobs[i].problem = rs_scene_problem(scenes[i]);
-    jobs[i].opts.progress = on_progress;
-  }
-  for (int first = 0; first < n; first += a->jobs) {
-    int m = n - first < a->jobs ? n - first : a->jobs;
-    if ((st = rs_reel_wind_many(m, jobs + first, m, NULL)) != RS_OK) {
-      code = cli_fail_status(st);
-      goto done;
-    }
-    int sig = cli_signal_caught();
-    if (sig) {
-      code = cli_fail(cli_signal_exit_code(sig), "study: %s (no output written)",
-                      cli_signal_word(sig));
-      goto done;
-    }
-    for (int i = first; i < first + m; ++i) {
-      rs_reel_job *job = &jobs[i];
-      slim(job->result);
-      wall[i] = job->wall_seconds;
-      cpu[i] = job->cpu_seconds;
-      results[i] = job->status == RS_OK ? job->result : NULL;
-      if (!a->quiet) {
-        printf("  [%2d/%d] %-34s %8.2f s%s%s\n", i + 1, n, plan->runs[i].label, job->wall_seconds,
-               job->status ? "  FAILED: " : "", job->status ? job->message : "");
-        fflush(stdout);
-      }
-      if (job->status != RS_OK && i < 3) {
-        code = cli_fail(rs_status_exit_code(job->status), "study: the %s run failed: %s",
-                        plan->runs[i].label, job->message);
-        goto done;
-      }
-    }
-  }
-
-  if ((st = rs_study_analyze(plan, results, wall, cpu, rs_scene_problem(base)->material.caliper, &rep)) != RS_OK) {
+  if ((code = wind_runs(a, plan, &runs)) != CLI_EXIT_OK) goto done;
+  st = rs_study_analyze(plan, runs.results, runs.wall, runs.cpu,
+                        rs_scene_problem(base)->material.caliper, &rep);
+  if (st != RS_OK) {
     code = cli_fail_status(st);
     goto done;
   }
   if (!a->quiet) {
-    print_report(plan, &rep, jobs);
+    print_report(plan, &rep, runs.jobs);
     print_summary(plan, &rep);
   }
-  if ((code = cli_outdir_make(DIR_LABEL, dir, &made)) != CLI_EXIT_OK) goto done;
-  snprintf(path, sizeof path, "%s/study.h5", dir);
-  st = rs_study_write(path, base, &rep);
-  if (st == RS_OK) {
-    snprintf(path, sizeof path, "%s/study.csv", dir);
-    st = rs_study_write_csv(path, &rep);
-  }
-  if (st != RS_OK) {
-    code = cli_fail_status(st);
-    goto done;
-  }
-  snprintf(path, sizeof path, "%s/study.png", dir);
-  st = rs_study_plot(&rep, rs_scene_title(base), path, NULL);
-  if (st != RS_OK) {
-    code = cli_fail(CLI_EXIT_OTHER, "study: the plot: %s (study.h5 and study.csv are written)",
-                    app_error_message());
-    goto done;
-  }
-  if (!a->quiet)
-    printf("output %s/study.h5, %s/study.csv, %s/study.png (%.1f s in all)\n", dir, dir, dir,
-           rs_clock_wall() - t_start);
-
+  code = write_study(a, base, &rep, dir, &made, t_start);
 done:
   /* the directories made for a study that then failed go again when they are empty */
   if (code != CLI_EXIT_OK) cli_outdir_undo(&made);
   else cli_outdir_free(&made);
   rs_study_report_free(&rep);
-  for (int i = 0; jobs && i < n_runs_of(plan); ++i) rs_reel_result_destroy(&jobs[i].result);
-  for (int i = 0; scenes && i < n_runs_of(plan); ++i) rs_scene_destroy(&scenes[i]);
-  free(scenes);
-  free(jobs);
-  free(results);
-  free(wall);
-  free(cpu);
-  free(sets);
+  study_runs_free(&runs);
   rs_study_plan_destroy(&plan);
   rs_scene_destroy(&base);
   cli_signals_restore(&sig_saved);
