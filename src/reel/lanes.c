@@ -1,8 +1,9 @@
 /* Lanes across the width: the driver (lanes.h; the model and its sources: docs/lanes.md).
  *
  * Per layer k, every lane at k layers:
- *   1. each lane's deformed outer radius R_i (worker threads, O(k) per lane: the whole stack's
- *      compression integrated again on its current state, rs_reel_deformed_radius);
+ *   1. each lane's deformed outer radius R_i (worker threads; lanes_radius.c: the top of the
+ *      stack summed on its current state, the deep part carried from full-stack sums taken
+ *      at geometrically spaced layers);
  *   2. (thread 0) Tbar = the tension recipe at the lanes' mean radius; the shared strain e
  *      from sum w_i max(0, E_theta t_i (e + R_i/Rbar - 1) + (f_i - 1) Tbar) = Tbar W; T_i;
  *      slack where T_i = 0; the nip load N_i (uniform Nbar or the roller's split);
@@ -45,13 +46,26 @@ typedef struct lanes_run {
   char msg[1200];
 } lanes_run;
 
-static rs_recipe constant_recipe(double v, const rs_recipe *like)
+/* The lanes' coupling as the lane's tension phase (effect.h): the loop and the nip take
+ * the lane's web tension T_i and nip load N_i from it, set by lanes_couple before each
+ * layer (the same for every radius asked: the layer's). */
+static double lane_web_tension(const rs_reel_effect *e, const rs_reel_state *s, double r)
 {
-  rs_recipe rc = {.law = RS_RECIPE_CONSTANT, .start = v, .end = v, .k = 0.0};
-  rc.r0 = like->r0;
-  rc.r1 = like->r1;
-  return rc;
+  (void)s, (void)r;
+  return ((const rs_lane *)e->content)->T;
 }
+
+static double lane_nip_load(const rs_reel_effect *e, const rs_reel_state *s, double r)
+{
+  (void)s, (void)r;
+  return ((const rs_lane *)e->content)->load;
+}
+
+static const rs_reel_effect_ops lane_coupling = {
+    .name = "lanes",
+    .web_tension = lane_web_tension,
+    .nip_load = lane_nip_load,
+};
 
 /* lane i's problem: the caliper its factor times material.caliper, no lanes, the nip solved
  * every nip.update_every layers (adaptive: every layer) */
@@ -66,19 +80,12 @@ static void lane_problem(const rs_problem *pb, int i, rs_problem *lp)
   }
 }
 
-/* the lane's deformed outer radius on its current state (r_c with nothing wound) */
+/* the lane's deformed outer radius on its current state (lanes_radius.c: r_c with nothing
+ * wound) */
 static rs_status lane_radius(rs_lane *L)
 {
-  const rs_roll *roll = L->s->roll;
-  const int n = rs_roll_layers(roll);
-  if (n == 0) {
-    L->R = L->pb.core.radius;
-    return RS_OK;
-  }
-  rs_status st = rs_reel_deformed_radius(&L->pb, rs_roll_core_pressure(roll), rs_roll_sigma_r(roll),
-                                         L->s->film, n, L->scratch);
-  L->R = L->scratch[n - 1];
-  return st;
+  return rs_lane_radius_update(&L->radius, &L->pb, L->s->roll, L->s->film,
+                               L->s->res->wound_on_tension, &L->R);
 }
 
 /* one layer on the lane: steps until a layer is wound (a step may only plan the nip again) */
@@ -164,8 +171,8 @@ static rs_status lanes_couple(lanes_run *r, int k)
   r->lr->strain[k] = e;
   for (int i = 0; i < n; ++i) {
     rs_lane *L = &r->lane[i];
-    L->pb.tension = constant_recipe(r->T[i], &pb->tension);
-    if (pb->nip.model != RS_NIP_NONE) L->pb.nip.load = constant_recipe(r->load[i], &pb->nip.load);
+    L->T = r->T[i];
+    L->load = r->load[i];
     r->lr->web_tension[(size_t)k * n + i] = r->T[i];
     r->lr->slack[(size_t)k * n + i] = !(r->T[i] > 0.0);
     if (r->lr->nip_load) r->lr->nip_load[(size_t)k * n + i] = r->load[i];
@@ -244,9 +251,9 @@ static rs_status lanes_setup(lanes_run *r)
   for (int i = 0; i < n; ++i) {
     rs_lane *L = &r->lane[i];
     lane_problem(pb, i, &L->pb);
-    L->scratch = malloc((size_t)r->N * sizeof(double));
-    if (!L->scratch) return RS_ERROR(RS_ERR_MEMORY, "cannot allocate lane %d", i + 1);
-    rs_status st = rs_reel_state_create(&L->pb, NULL, 0, &L->s);
+    if (rs_lane_radius_init(&L->radius, r->N)) return rs_error_wrap("lane %d", i + 1);
+    const rs_reel_effect coupling = {&lane_coupling, L};
+    rs_status st = rs_reel_state_create(&L->pb, &coupling, 1, &L->s);
     if (st) return rs_error_wrap("lane %d (x = %.6g m)", i + 1, pb->lanes.x[i]);
   }
   return RS_OK;
@@ -312,7 +319,7 @@ static void lanes_free(lanes_run *r)
   for (int i = 0; r->lane && i < r->n; ++i) {
     rs_reel_state_destroy(&r->lane[i].s);
     rs_reel_result_destroy(&r->lane[i].res);
-    free(r->lane[i].scratch);
+    rs_lane_radius_free(&r->lane[i].radius);
   }
   free(r->lane);
   free(r->w), free(r->a), free(r->b), free(r->q), free(r->T), free(r->load), free(r->k);
