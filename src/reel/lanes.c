@@ -35,6 +35,7 @@ typedef struct lanes_run {
   double W;                       /* m, the width */
   double *w, *a, *b, *q, *T, *load, *k;
   int *order;
+  int drum;                       /* a drum drives the roll (lanes_drum_driven) */
   rs_lanes_result *lr;
   pthread_barrier_t bar;
   pthread_mutex_t gate;           /* the workers wait here until the thread count is known */
@@ -135,6 +136,54 @@ static rs_status lanes_nip(lanes_run *r, double Nbar, int k)
   return RS_OK;
 }
 
+/* Whether a drum drives the roll at its surface (docs/lanes.md, "Surface and two-drum
+ * winders"): a surface or two-drum winder, or the one nip's drum driven (surface or
+ * center-surface) */
+static int lanes_drum_driven(const rs_problem *pb)
+{
+  if (pb->winder.type == RS_WINDER_TYPE_SURFACE || pb->winder.type == RS_WINDER_TYPE_TWO_DRUM)
+    return 1;
+  return pb->nip.model != RS_NIP_NONE &&
+         (pb->nip.winder == RS_WINDER_SURFACE || pb->nip.winder == RS_WINDER_CENTER_SURFACE);
+}
+
+/* The lanes' web tensions T_i (r->T) and the shared strain *e, a_i = E_theta t_i, g_i the
+ * tension profile's factor:
+ *   center winder: sum w_i max(0, a_i (e + R_i/Rbar - 1) + (g_i - 1) Tbar) = Tbar W (the
+ *     tension controller holds the mean of the web entering the roll);
+ *   drum-driven: the web reaches the drum at the strain e its upstream tension sets, flat,
+ *     sum w_i max(0, a_i e + (g_i - 1) Tbar) = Tbar W; the drum turns the roll so that the
+ *     lanes it touches, the largest radius R_d = max R_i, take the web up at the drum's
+ *     speed, so lane i takes it up at R_i/R_d of it and, the web's flow conserved (v/(1 + e)
+ *     the same along it), T_i = max(0, a_i (e + R_i/R_d - 1) + (g_i - 1) Tbar).
+ * Tbar <= 0: every lane slack. Records the misfit of the sum the machine holds. */
+static rs_status lanes_web(lanes_run *r, double Tbar, double Rbar, double *e)
+{
+  const rs_problem *pb = r->pb;
+  const int n = r->n, drum = r->drum;
+  double Rd = -INFINITY, sum = 0.0;
+  for (int i = 0; i < n; ++i) Rd = fmax(Rd, r->lane[i].R);
+  for (int i = 0; i < n; ++i) {
+    const rs_lane *L = &r->lane[i];
+    r->a[i] = L->pb.material.E_theta * L->pb.material.caliper;
+    r->b[i] = drum ? (pb->lanes.tension[i] - 1.0) * Tbar
+                   : r->a[i] * (L->R / Rbar - 1.0) + (pb->lanes.tension[i] - 1.0) * Tbar;
+  }
+  *e = 0.0;
+  if (!(Tbar > 0.0)) {
+    for (int i = 0; i < n; ++i) r->T[i] = 0.0;
+    return RS_OK;
+  }
+  rs_status st = rsi_lanes_share(n, r->w, r->a, r->b, Tbar * r->W, r->order, e, r->T);
+  if (st) return st;
+  for (int i = 0; i < n; ++i) sum += r->w[i] * r->T[i];
+  r->lr->Tbar_W_misfit = fmax(r->lr->Tbar_W_misfit, fabs(sum - Tbar * r->W) / (Tbar * r->W));
+  if (drum)
+    for (int i = 0; i < n; ++i)
+      r->T[i] = fmax(0.0, r->a[i] * (*e + (r->lane[i].R / Rd - 1.0)) + r->b[i]);
+  return RS_OK;
+}
+
 /* Layer k's web tensions, slack flags and nip loads, set into the lanes' problems */
 static rs_status lanes_couple(lanes_run *r, int k)
 {
@@ -150,24 +199,10 @@ static rs_status lanes_couple(lanes_run *r, int k)
   rnom /= r->W;
   rbeneath /= r->W;
   const double Tbar = rs_recipe_eval(&pb->tension, rnom);
-  for (int i = 0; i < n; ++i) {
-    const rs_lane *L = &r->lane[i];
-    r->a[i] = L->pb.material.E_theta * L->pb.material.caliper;
-    r->b[i] = r->a[i] * (L->R / Rbar - 1.0) + (pb->lanes.tension[i] - 1.0) * Tbar;
-  }
-  if (Tbar > 0.0) {
-    rs_status st = rsi_lanes_share(n, r->w, r->a, r->b, Tbar * r->W, r->order, &e, r->T);
-    if (st) return rs_error_wrap("the web's tension across the lanes at layer %d", k + 1);
-  } else {
-    for (int i = 0; i < n; ++i) r->T[i] = 0.0;
-  }
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) sum += r->w[i] * r->T[i];
-  if (Tbar > 0.0)
-    r->lr->Tbar_W_misfit = fmax(r->lr->Tbar_W_misfit, fabs(sum - Tbar * r->W) / (Tbar * r->W));
+  rs_status st = lanes_web(r, Tbar, Rbar, &e);
+  if (st) return rs_error_wrap("the web's tension across the lanes at layer %d", k + 1);
   const double Nbar = pb->nip.model != RS_NIP_NONE ? rs_recipe_eval(&pb->nip.load, rbeneath) : 0.0;
-  rs_status st = lanes_nip(r, Nbar, k);
-  if (st) return st;
+  if ((st = lanes_nip(r, Nbar, k))) return st;
   r->lr->strain[k] = e;
   for (int i = 0; i < n; ++i) {
     rs_lane *L = &r->lane[i];
@@ -330,7 +365,8 @@ static void lanes_free(lanes_run *r)
 rs_status rs_lanes_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
   *out = NULL;
-  lanes_run r = {.pb = pb, .opts = opts, .n = pb->lanes.count, .N = pb->n_layers};
+  lanes_run r = {.pb = pb, .opts = opts, .n = pb->lanes.count, .N = pb->n_layers,
+                 .drum = lanes_drum_driven(pb)};
   if (r.n < 1 || r.n > RS_LANES_MAX)
     return RS_ERROR(RS_ERR_INPUT, "lanes: %d lanes (1 to %d)", r.n, RS_LANES_MAX);
   if (pb->numerics.layers_per_step != 1 || pb->air.on)
