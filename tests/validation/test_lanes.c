@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "lanes_helpers.h"
 #include "reelsim/recipe.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
@@ -43,28 +44,6 @@ static rs_problem *problem(int n_sets, const char **sets)
   *pb = *rs_scene_problem(sc);
   rs_scene_destroy(&sc);
   return pb;
-}
-
-/* n equal lanes over width W with the caliper factors f (NULL: 1) */
-static void set_lanes(rs_problem *pb, int n, double W, const double *f)
-{
-  memset(&pb->lanes, 0, sizeof pb->lanes);
-  pb->lanes.count = n;
-  for (int i = 0; i < n; ++i) {
-    pb->lanes.width[i] = W / n;
-    pb->lanes.x[i] = W * (i + 0.5) / n;
-    pb->lanes.caliper[i] = f ? f[i] : 1.0;
-    pb->lanes.tension[i] = 1.0;
-  }
-}
-
-static rs_reel_result *wind(const rs_problem *pb)
-{
-  rs_reel_result *res = NULL;
-  rs_status st = rs_reel_wind(pb, NULL, &res);
-  if (st) printf("  error: %s\n", rs_error_message());
-  CHECK(st == RS_OK && res);
-  return st ? (rs_reel_result_destroy(&res), NULL) : res;
 }
 
 static void uniform_equals_1d(void)

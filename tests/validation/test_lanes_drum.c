@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "lanes_helpers.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reel/result_internal.h"
@@ -38,36 +39,13 @@ static rs_problem *problem(int n_more, const char **more)
   return pb;
 }
 
-static void set_lanes(rs_problem *pb, int n, const double *w, const double *f)
-{
-  memset(&pb->lanes, 0, sizeof pb->lanes);
-  pb->lanes.count = n;
-  double x = 0.0;
-  for (int i = 0; i < n; ++i) {
-    pb->lanes.width[i] = w[i];
-    pb->lanes.x[i] = x + 0.5 * w[i];
-    x += w[i];
-    pb->lanes.caliper[i] = f[i];
-    pb->lanes.tension[i] = 1.0;
-  }
-}
-
-static rs_reel_result *wind(const rs_problem *pb)
-{
-  rs_reel_result *res = NULL;
-  rs_status st = rs_reel_wind(pb, NULL, &res);
-  if (st) printf("  error: %s\n", rs_error_message());
-  CHECK(st == RS_OK && res);
-  return st ? (rs_reel_result_destroy(&res), NULL) : res;
-}
-
 static void drum_drives_largest(void)
 {
   const char *more[] = {"material.radial.E_r=1e13"};
   rs_problem *pb = problem(1, more);
   if (!pb) return;
   const double w[] = {0.3, 0.7}, f[] = {1.01, 1.0};
-  set_lanes(pb, 2, w, f);
+  set_lanes_widths(pb, 2, 1.0, w, f);
   rs_reel_result *res = wind(pb);
   if (res) {
     const rs_lanes_result *lr = res->lanes;
@@ -104,7 +82,7 @@ static void drum_uniform_equals_1d(void)
   if (!pb) return;
   rs_reel_result *one = wind(pb);
   const double w[] = {0.25, 0.25, 0.25, 0.25}, f[] = {1.0, 1.0, 1.0, 1.0};
-  set_lanes(pb, 4, w, f);
+  set_lanes_widths(pb, 4, 1.0, w, f);
   rs_reel_result *lanes = wind(pb);
   if (one && lanes) {
     double worst = 0.0;
