@@ -153,6 +153,9 @@ static inline double rs_reel_nip_load(const rs_reel_state *s, double r)
 /* The effects (each in its own file). */
 extern const rs_reel_effect_ops rs_reel_history_effect; /* effect_history.c */
 extern const rs_reel_effect_ops rs_reel_air_effect;     /* effect_air.c */
+/* whether the next layer at web tension Ti and nip load w ends the reel at its size (its
+ * air films; 0 without air): a driver of several reels ends them together (lanes.c) */
+int rs_reel_air_ends(const rs_reel_state *s, double Ti, double w);
 extern const rs_reel_effect_ops rs_reel_nip_effect;     /* effect_nip.c */
 extern const rs_reel_effect_ops rs_reel_spin_effect;    /* effect_spin.c */
 extern const rs_reel_effect_ops rs_reel_gauge_effect;   /* effect_gauge.c */

@@ -10,7 +10,8 @@
  *   3. each lane winds layer k at web tension T_i and nip load N_i (worker threads).
  * Two barriers per layer. The nip with lanes is solved every nip.update_every layers (an
  * adaptive policy's rewinds would put the lanes at different layers: with lanes `adaptive`
- * runs as every 1). */
+ * runs as every 1). With entrained air the sheet ends, for every lane, before the first
+ * layer that would end one lane's reel at the roll's size (rs_reel_air_ends). */
 #include "reel/lanes.h"
 
 #include <math.h>
@@ -241,6 +242,16 @@ static void lanes_between(lanes_run *r)
   if ((r->st = lanes_couple(r, k))) {
     snprintf(r->msg, sizeof r->msg, "%s", rs_error_message());
     r->stop = 1;
+    return;
+  }
+  /* entrained air: the sheet ends where the first lane (the highest) reaches the roll's
+   * size, before any lane winds the layer, so that every lane has the same layers */
+  for (int i = 0; r->pb->air.on && i < r->n; ++i) {
+    const rs_lane *L = &r->lane[i];
+    if (rs_reel_air_ends(L->s, L->T, r->pb->nip.model != RS_NIP_NONE ? L->load : 0.0)) {
+      r->stop = 1;
+      return;
+    }
   }
 }
 
@@ -369,8 +380,8 @@ rs_status rs_lanes_wind(const rs_problem *pb, const rs_reel_options *opts, rs_re
                  .drum = lanes_drum_driven(pb)};
   if (r.n < 1 || r.n > RS_LANES_MAX)
     return RS_ERROR(RS_ERR_INPUT, "lanes: %d lanes (1 to %d)", r.n, RS_LANES_MAX);
-  if (pb->numerics.layers_per_step != 1 || pb->air.on)
-    return RS_ERROR(RS_ERR_INPUT, "lanes wind one layer per increment and without entrained air");
+  if (pb->numerics.layers_per_step != 1)
+    return RS_ERROR(RS_ERR_INPUT, "lanes wind one layer per increment");
   rs_status st = lanes_setup(&r);
   if (!st) st = lanes_run_threads(&r);
   if (!st && r.st) {

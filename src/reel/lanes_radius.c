@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "reelsim/material.h"
 #include "reelsim/reel.h"
 #include "util/error.h"
 
@@ -71,7 +72,7 @@ static rs_status radius_full(rs_lane_radius *g, const rs_problem *pb, const rs_r
   const int last = g->k_p;
   g->k_p = k;
   if (k == g->next - 1) return RS_OK; /* kept for the next interval's rate */
-  const int h = film ? 0 : (int)(RS_LANE_RADIUS_STEP * k);
+  const int h = (int)(RS_LANE_RADIUS_STEP * k);
   g->k_r = k;
   g->next = h < 2 ? k + 1 : k + h;
   g->j0 = k - h - RS_LANE_RADIUS_MARGIN > 0 ? k - h - RS_LANE_RADIUS_MARGIN : 0;
@@ -90,7 +91,7 @@ rs_status rs_lane_radius_update(rs_lane_radius *g, const rs_problem *pb, const r
   }
   /* a full sum at the interval's ends, and at two layers in a row after a slack layer
    * before k_r (no rate to carry the deep part with: it holds while the lane stays slack) */
-  if (k >= g->next - 1 || k <= g->k_r || film || (!(g->rate > 0.0) && T0[k - 1] > 0.0))
+  if (k >= g->next - 1 || k <= g->k_r || (!(g->rate > 0.0) && T0[k - 1] > 0.0))
     return radius_full(g, pb, roll, film, T0, k, R);
   /* the deep part: layer k - 1 compressed the layers below j0, now d = k - 1 - k_r layers
    * deeper than at k_r, as the layer before k_r compressed those below j0 - d */
@@ -101,15 +102,17 @@ rs_status rs_lane_radius_update(rs_lane_radius *g, const rs_problem *pb, const r
   double P_in = g->j0 == 0 ? Pc : -rs_roll_layer_sigma_r(roll, g->j0 - 1), top = 0.0;
   rs_status st = strain_cover(g, pb, P_in);
   if (st) return st;
-  double e_in = rs_reel_strain_eval(g->eps, P_in);
+  double e_in = rs_reel_strain_eval(g->eps, P_in), films = 0.0;
   for (int j = g->j0; j < k; ++j) {
     const double P_out = j + 1 < k ? -rs_roll_layer_sigma_r(roll, j) : 0.0;
     if (P_out > rs_reel_strain_max(g->eps) && (st = strain_cover(g, pb, P_out))) return st;
     const double e_out = rs_reel_strain_eval(g->eps, P_out);
     top += e_in + e_out;
+    if (film) films += rs_air_compressed_film(film[j], P_in, pb->air.pressure);
     e_in = e_out;
+    P_in = P_out;
   }
   g->top_layers += k - g->j0;
-  *R = pb->core.radius + core_shift(pb, Pc) + k * cal - g->deep - 0.5 * cal * top;
+  *R = pb->core.radius + core_shift(pb, Pc) + k * cal - g->deep - 0.5 * cal * top + films;
   return RS_OK;
 }

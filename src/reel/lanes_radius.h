@@ -2,7 +2,9 @@
  * src/reel/; docs/lanes.md, "The lanes' radii").
  *
  * The contract (docs/lanes.md): before layer k goes on, lane i's outer radius is
- *     R(k) = r_c + u_c + k t - sum_{j<k} c_j,   c_j = t (eps(P_j) + eps(P_{j+1})) / 2,
+ *     R(k) = r_c + u_c + k t - sum_{j<k} c_j,   c_j = t (eps(P_j) + eps(P_{j+1})) / 2
+ * (less, with entrained air, the film under each layer compressed by the pressure at its
+ * node, h_j(P_j): c_j then counts -h_j(P_j) too),
  * u_c = -r_c P_c / E_c the core's displacement, P_j the pressure at node j (node 0 the
  * core's face, node k the free surface), eps(P) the stack law's strain from zero
  * (rs_reel_deformed_radius, the full-stack sum: O(k)). Summing it at every layer costs
@@ -59,7 +61,8 @@ typedef struct rs_lane_radius {
 rs_status rs_lane_radius_init(rs_lane_radius *g, int N);
 void rs_lane_radius_free(rs_lane_radius *g);
 /* *R (m): the roll's deformed outer radius now (rs_roll_layers(roll) layers, the lane's
- * problem pb; film: its entrained films or NULL, which takes the full sum every layer).
+ * problem pb; film: its entrained films, each compressed by the pressure at its node as
+ * rs_reel_deformed_radius has it, or NULL).
  * T0: the wound-on tensions of its layers 0..k-1. Called once per layer, the layers
  * increasing by one (a roll that went back is summed in full). */
 rs_status rs_lane_radius_update(rs_lane_radius *g, const rs_problem *pb, const rs_roll *roll,
