@@ -22,15 +22,7 @@
 static rs_problem *problem(void)
 {
   const char *sets[] = {"winding.speed=8", "air=true", "air.roughness=1e-6"};
-  rs_scene *sc = NULL;
-  if (rs_scene_load(RS_TESTS_DIR "/cli/scenes/small.yaml", 3, sets, &sc) != RS_OK)
-    printf("  error: %s\n", rs_error_message());
-  CHECK(sc != NULL);
-  if (!sc) return NULL;
-  rs_problem *pb = malloc(sizeof *pb);
-  *pb = *rs_scene_problem(sc);
-  rs_scene_destroy(&sc);
-  return pb;
+  return load_problem(RS_TESTS_DIR "/cli/scenes/small.yaml", 3, sets);
 }
 
 static void uniform_air_equals_1d(void)
@@ -65,8 +57,7 @@ static void band_ends_together(void)
 {
   rs_problem *pb = problem();
   if (!pb) return;
-  const double f[] = {1.0, 1.0, 1.02, 1.0, 1.0};
-  set_lanes(pb, 5, 1.0, f);
+  set_band(pb);
   rs_reel_result *res = wind(pb);
   if (res) {
     const rs_lanes_result *lr = res->lanes;

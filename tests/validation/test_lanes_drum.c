@@ -27,15 +27,8 @@ static rs_problem *problem(int n_more, const char **more)
   const char *sets[8] = {"nip.model=friction", "nip.load=400", "nip.friction.roll=0.2",
                          "nip.update=every", "nip.update_every=1"};
   for (int i = 0; i < n_more; ++i) sets[5 + i] = more[i];
-  rs_scene *sc = NULL;
-  if (rs_scene_load(RS_TESTS_DIR "/cli/scenes/small.yaml", 5 + n_more, sets, &sc) != RS_OK)
-    printf("  error: %s\n", rs_error_message());
-  CHECK(sc != NULL);
-  if (!sc) return NULL;
-  rs_problem *pb = malloc(sizeof *pb);
-  *pb = *rs_scene_problem(sc);
-  rs_scene_destroy(&sc);
-  pb->winder.type = RS_WINDER_TYPE_SURFACE;
+  rs_problem *pb = load_problem(RS_TESTS_DIR "/cli/scenes/small.yaml", 5 + n_more, sets);
+  if (pb) pb->winder.type = RS_WINDER_TYPE_SURFACE;
   return pb;
 }
 
