@@ -164,7 +164,8 @@ static int evaluate(const opt_problem *p, opt_history *h, const double *x, int p
   rs_status st = rs_scene_load(p->scene, n_sets, (const char *const *)sets, &scene);
   free(sets);
   if (st == RS_OK) {
-    h->storage |= sweep_figure_count(rs_scene_problem(scene)) > SWEEP_N_WIND_FIGURES;
+    for (int j = 0; j < SWEEP_N_FIGURES; ++j)
+      h->recorded[j] |= !sweep_figure_lacks(rs_scene_problem(scene), j);
     st = rs_scene_wind(scene, p->wind, &res);
   }
   if (st == RS_ERR_INTERRUPTED) h->stopped = 1;
