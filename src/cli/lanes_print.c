@@ -17,9 +17,8 @@ void cli_print_lanes(FILE *out, const rs_scene *scene, const rs_reel_result *res
   rs_lanes_summary s;
   char a[64];
   if (!lanes_summary(scene, res, &s)) return;
-  int nl = 0, cols = 0;
-  const double *x = rs_lanes_result_array(res, "x", &nl, &cols);
-  const double *w = rs_lanes_result_array(res, "width", &nl, &cols);
+  const double *x = rs_lanes_result_x(res, NULL, NULL);
+  const double *w = rs_lanes_result_width(res, NULL, NULL);
   const double t = rs_scene_problem(scene)->material.caliper;
   fprintf(out, "lanes (%d across %.4g m; docs/lanes.md):\n", s.count,
           x[s.count - 1] + 0.5 * w[s.count - 1] - (x[0] - 0.5 * w[0]));
@@ -52,8 +51,7 @@ void cli_json_lanes(cli_json *j, const rs_scene *scene, const rs_reel_result *re
     cli_json_null(j, "lanes");
     return;
   }
-  int nl = 0, cols = 0;
-  const double *x = rs_lanes_result_array(res, "x", &nl, &cols);
+  const double *x = rs_lanes_result_x(res, NULL, NULL);
   cli_json_object(j, "lanes");
   cli_json_int(j, "count", s.count);
   cli_json_number(j, "ridge_height", s.ridge_height);
