@@ -68,7 +68,8 @@ rs_status rs_h5_write_lanes(hid_t loc, const rs_reel_result *res)
   if (st == RS_OK) st = write_slack(g, lr);
   if (st == RS_OK)
     st = rs_h5_write_1d(g, "strain", lr->strain, N, "",
-                        "the web's mean machine-direction strain e as each layer went on");
+                        "the web's machine-direction strain e as each layer went on (on a "
+                        "drum-driven winder e_d, its strain on the drum)");
   if (st == RS_OK) st = rs_h5_attr_int64(g, "count", lr->count);
   if (st == RS_OK) st = rs_h5_attr_int64(g, "threads", lr->threads);
   if (st == RS_OK) st = rs_h5_attr_double(g, "tension_misfit", lr->Tbar_W_misfit);
