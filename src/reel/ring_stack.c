@@ -31,14 +31,27 @@ static void assemble(const rs_ring_stack *s, double m, double lambda, double *a,
   }
 }
 
-/* 1 when the form at (m, lambda) is positive definite (every LDL^T pivot > 0). */
-static int definite(const rs_ring_stack *s, double m, double lambda, double *a, double *b)
+/* a_j of assemble, alone (the same operations in the same order: the same bits) */
+static inline double diagonal(const rs_ring_stack *s, int j, double x, double lambda)
 {
-  assemble(s, m, lambda, a, b);
-  double d = a[0];
+  const double r2 = s->rho[j] * s->rho[j];
+  double a = s->rho[j] * (s->D[j] * x * x / (r2 * r2) - lambda * s->N[j] * x / r2) +
+             s->r_spring[j] * s->k[j];
+  if (j + 1 < s->n) a += s->r_spring[j + 1] * s->k[j + 1];
+  return a;
+}
+
+/* 1 when the form at (m, lambda) is positive definite (every LDL^T pivot > 0). The form is
+ * built as the pivots go, so that a form found indefinite at layer j costs j layers, not n
+ * (most of the bisections' tests, and most of the whole reel's defect assessment). */
+static int definite(const rs_ring_stack *s, double m, double lambda)
+{
+  const double x = m * m - 1.0;
+  double d = diagonal(s, 0, x, lambda);
   if (!(d > 0.0)) return 0;
   for (int j = 1; j < s->n; ++j) {
-    d = a[j] - b[j - 1] * b[j - 1] / d;
+    const double b = -s->r_spring[j] * s->k[j]; /* b_(j-1) of assemble */
+    d = diagonal(s, j, x, lambda) - b * b / d;
     if (!(d > 0.0)) return 0;
   }
   return 1;
@@ -46,14 +59,13 @@ static int definite(const rs_ring_stack *s, double m, double lambda, double *a, 
 
 /* The critical load factor of mode m, below `cap` (returns cap when none below it), to
  * the relative tolerance rtol. */
-static double mode_factor(const rs_ring_stack *s, double m, double cap, double rtol, double *a,
-                          double *b)
+static double mode_factor(const rs_ring_stack *s, double m, double cap, double rtol)
 {
-  if (definite(s, m, cap, a, b)) return cap;
+  if (definite(s, m, cap)) return cap;
   double lo = 0.0, hi = cap;
   for (int it = 0; it < 200 && hi - lo > rtol * hi; ++it) {
     double mid = 0.5 * (lo + hi);
-    if (definite(s, m, mid, a, b)) lo = mid;
+    if (definite(s, m, mid)) lo = mid;
     else hi = mid;
   }
   return 0.5 * (lo + hi);
@@ -105,7 +117,7 @@ double rs_defect_ring_stack_critical(const rs_ring_stack *s, int *mode, int *pea
    * look at the integers between its grid neighbours, then bisect the best to 1e-12 */
   double best = cap, prev = 2.0, bm = 0.0, lo_m = 2.0, hi_m = 2.0;
   for (double m = 2.0; m < 2e6; m = m < 32.0 ? m + 1.0 : floor(m * 1.04)) {
-    double f = mode_factor(s, m, best, 1e-4, a, b);
+    double f = mode_factor(s, m, best, 1e-4);
     if (f < best) {
       best = f;
       bm = m;
@@ -116,10 +128,10 @@ double rs_defect_ring_stack_critical(const rs_ring_stack *s, int *mode, int *pea
   }
   if (hi_m < bm) hi_m = bm;
   for (double m = lo_m; bm > 0.0 && m <= hi_m; m += 1.0) {
-    double f = mode_factor(s, m, best, 1e-4, a, b);
+    double f = mode_factor(s, m, best, 1e-4);
     if (f < best) best = f, bm = m;
   }
-  if (bm > 0.0) best = mode_factor(s, bm, best * (1.0 + 1e-3), 1e-13, a, b);
+  if (bm > 0.0) best = mode_factor(s, bm, best * (1.0 + 1e-3), 1e-13);
   if (bm > 0.0) {
     if (mode) *mode = (int)bm;
     if (peak) *peak = mode_peak(s, bm, best, a, b);
