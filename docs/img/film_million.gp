@@ -15,15 +15,17 @@ set y2label 'peak resident memory (MB)'
 set logscale y2
 set ytics nomirror
 set y2tics
-set key top left
+set key bottom right box opaque
 set grid
+set title 'cases/pet-jumbo.yaml, reelsim run (scripts/setup.sh build): CPU time and peak memory'
 stats data using 1:4 nooutput
 n0 = STATS_min_x
 t0 = STATS_min_y
 f(x) = t0 * (x / n0) ** 1.1
-plot data using 1:4 with linespoints pt 7 lw 2 title 'process CPU time (s)', \
-     data using 1:3 with linespoints pt 5 title 'solver wall time (s)', \
+set label 1 'target 12 s' at first 949200, first 12 right offset -1, 0.6 tc rgb 'red'
+set label 2 'target 300 MB' at first 949200, second 300 right offset -1, 0.6 tc rgb 'dark-green'
+plot data using 1:4 with linespoints pt 7 lw 2 lc rgb 'blue' title 'process CPU time (s, left)', \
      f(x) with lines dt 2 lc rgb 'gray' title 'N^{1.1} from the first point (target slope)', \
-     12 with lines dt 3 lc rgb 'red' title 'target at 949,200 layers: 12 s', \
-     data using 1:($5 / 1024) axes x1y2 with linespoints pt 9 lc rgb 'dark-green' title 'peak memory (MB, right)', \
-     300 axes x1y2 with lines dt 4 lc rgb 'dark-green' title 'target: 300 MB (right)'
+     '+' every ::0::0 using (949200):(12) with points pt 6 ps 2 lc rgb 'red' title 'target at 949,200 layers: 12 s', \
+     data using 1:($5 / 1024) axes x1y2 with linespoints pt 9 lw 2 lc rgb 'dark-green' title 'peak resident memory (MB, right)', \
+     '+' every ::0::0 using (949200):(300) axes x1y2 with points pt 8 ps 2 lc rgb 'dark-green' title 'target: 300 MB'
