@@ -20,6 +20,13 @@ rs_status rs_output_write(const char *path, const rs_scene *scene, const rs_reel
  * storage NULL: exactly rs_output_write. */
 rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
                                  const rs_reel_result *res, const rs_storage_result *storage);
+/* The same with the defect report the caller already has (rs_scene_assess_defects, or
+ * rs_defects_assess with rs_defect_limits_from_problem of the scene's problem) written
+ * under /defects instead of assessing the reel again (O(N x modes) on a long reel);
+ * defects NULL: exactly rs_output_write_stored. */
+rs_status rs_output_write_assessed(const char *path, const rs_scene *scene,
+                                   const rs_reel_result *res, const rs_storage_result *storage,
+                                   const rs_defect_report *defects);
 
 /* CSV export (docs/output.md): writes DIR/<name>-profile.csv (layer, radius_m, sigma_r_Pa,
  * sigma_theta_Pa, pressure_Pa, wound_on_tension_N_per_m) and DIR/<name>-wot.csv (radius_m,

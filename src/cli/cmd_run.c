@@ -197,14 +197,15 @@ static int run_storage(const rs_scene *scene, const rs_reel_result *res,
  * its name and renamed into place only when the CSV files are written too: a failed run
  * leaves no file of its own. */
 static int write_outputs(const cli_args *a, const rs_scene *scene, const rs_reel_result *res,
-                         const rs_storage_result *storage)
+                         const rs_storage_result *storage, const rs_defect_report *defects)
 {
   const char *out_path = rs_scene_output_file(scene);
   char staged[RS_PATH_MAX + 64] = "";
   rs_status st = RS_OK;
   if (a->csv_dir) snprintf(staged, sizeof staged, "%s.tmp.%ld.0", out_path, (long)getpid());
   if (staged[0]) st = rs_output_check_target(out_path);
-  if (st == RS_OK) st = rs_output_write_stored(staged[0] ? staged : out_path, scene, res, storage);
+  if (st == RS_OK)
+    st = rs_output_write_assessed(staged[0] ? staged : out_path, scene, res, storage, defects);
   if (st == RS_OK && a->csv_dir) {
     char stem[RS_PATH_MAX];
     cli_outdir made;
@@ -248,7 +249,7 @@ static int after_winding(const cli_args *a, const rs_scene *scene, const rs_reel
   rs_defect_limits_from_problem(rs_scene_problem(scene), &limits);
   rs_status st = rs_defects_assess(res, &limits, &defects);
   int code = st == RS_OK ? run_storage(scene, res, &storage) : CLI_EXIT_OK;
-  if (code == CLI_EXIT_OK && st == RS_OK) code = write_outputs(a, scene, res, storage);
+  if (code == CLI_EXIT_OK && st == RS_OK) code = write_outputs(a, scene, res, storage, defects);
   else if (code == CLI_EXIT_OK) code = cli_fail_status(st);
   if (code == CLI_EXIT_OK) {
     if (a->json) print_json(scene, res, defects, storage, a->csv_dir, rs_clock_wall() - t0);

@@ -114,52 +114,78 @@ done:
 /* P(a) is monotone (about a^2, Hertz): Brent's method on f(a) = ln P(a) - ln P, which is
  * nearly linear in ln a, after a bracket found by doubling/halving from the Hertz guess
  * a^2 = 4 P R* / (pi E*), E* from the half-plane limits of both bodies. */
-rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double P, int M,
-                                       const rs_series_opts *opts, double a_max, double rtol,
-                                       rs_contact_result *out)
+
+/* One evaluation of f(a) = ln P(a) - ln P: the bodies, the grid and the wanted load. */
+typedef struct load_search {
+  rs_cylinder *c1, *c2;
+  int M;
+  const rs_series_opts *opts;
+  double P, lnP;
+  rs_contact_result *out;
+} load_search;
+
+static rs_status load_eval(const load_search *ls, double a, double *f)
 {
-  if (!c1 || !c2 || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
-  if (!(P > 0) || !isfinite(P)) return RS_ERROR(RS_ERR_INPUT, "load P = %g N/m must be positive", P);
-  if (rtol <= 0) rtol = 1e-10;
-  if (a_max <= 0) a_max = 0.2 * fmin(c1->R, c2->R);
+  rs_status st = rs_contact_frictionless(ls->c1, ls->c2, a, ls->M, ls->opts, ls->out);
+  if (st) return rs_error_wrap("load %g N/m", ls->P);
+  if (!(ls->out->P > 0))
+    return RS_ERROR(RS_ERR_SOLVER, "P(a = %g) = %g <= 0", a, ls->out->P);
+  *f = log(ls->out->P) - ls->lnP;
+  return RS_OK;
+}
+
+/* The Hertz half-width a^2 = 4 P R* / (pi E*), 1/E* = (H1 + H2)/2 from the half-plane
+ * compliances of both bodies; at most a_max / 2. */
+static rs_status hertz_guess(rs_cylinder *c1, rs_cylinder *c2, double P, double a_max, double *a)
+{
   double H1[2][2], H2[2][2];
   rs_status st = rs_ortho_halfplane(&c1->c, H1);
   if (st) return st;
   st = rs_ortho_halfplane(&c2->c, H2);
   if (st) return st;
-  double Estar = 2.0 / (H1[0][0] + H2[0][0]); /* 1/E* = (H1 + H2)/2 */
+  double Estar = 2.0 / (H1[0][0] + H2[0][0]);
   double Rs = 1.0 / (1.0 / c1->R + 1.0 / c2->R);
-  double a = fmin(sqrt(4 * P * Rs / (RS_PI * Estar)), 0.5 * a_max);
-  const double lnP = log(P);
-#define EVAL(aa, fv)                                                                   \
-  do {                                                                                 \
-    st = rs_contact_frictionless(c1, c2, (aa), M, opts, out);                          \
-    if (st) return rs_error_wrap("load %g N/m", P);                                   \
-    if (!(out->P > 0)) return RS_ERROR(RS_ERR_SOLVER, "P(a = %g) = %g <= 0", (aa), out->P); \
-    (fv) = log(out->P) - lnP;                                                          \
-  } while (0)
-  double lo = a, hi = a, flo, fhi;
-  EVAL(a, flo);
-  fhi = flo;
+  *a = fmin(sqrt(4 * P * Rs / (RS_PI * Estar)), 0.5 * a_max);
+  return RS_OK;
+}
+
+/* [lo, hi] with f(lo) <= 0 <= f(hi), by halving from a (too wide) or doubling up to a_max
+ * (too narrow). */
+static rs_status bracket_load(const load_search *ls, double a, double a_max, double *lo,
+                              double *hi, double *flo, double *fhi)
+{
+  rs_status st = load_eval(ls, a, flo);
+  if (st) return st;
+  *lo = *hi = a;
+  *fhi = *flo;
   int it = 0;
-  while (flo > 0 && it++ < 60) { /* too wide: shrink */
-    hi = lo;
-    fhi = flo;
-    lo *= 0.5;
-    EVAL(lo, flo);
+  while (*flo > 0 && it++ < 60) { /* too wide: shrink */
+    *hi = *lo;
+    *fhi = *flo;
+    *lo *= 0.5;
+    if ((st = load_eval(ls, *lo, flo))) return st;
   }
-  while (fhi < 0 && it++ < 60) { /* too narrow: widen, up to a_max */
-    if (hi >= a_max)
+  while (*fhi < 0 && it++ < 60) { /* too narrow: widen, up to a_max */
+    if (*hi >= a_max)
       return RS_ERROR(RS_ERR_INPUT, "load %g N/m needs a contact half-width beyond a_max = %g m "
-                      "(P(a_max) = %g N/m)", P, a_max, out->P);
-    lo = hi;
-    flo = fhi;
-    hi = fmin(2 * hi, a_max);
-    EVAL(hi, fhi);
+                      "(P(a_max) = %g N/m)", ls->P, a_max, ls->out->P);
+    *lo = *hi;
+    *flo = *fhi;
+    *hi = fmin(2 * *hi, a_max);
+    if ((st = load_eval(ls, *hi, fhi))) return st;
   }
-  if (!(flo <= 0 && fhi >= 0)) return RS_ERROR(RS_ERR_SOLVER, "could not bracket P = %g N/m", P);
-  /* Brent (1973) on [lo, hi] in the variable ln a */
+  if (!(*flo <= 0 && *fhi >= 0))
+    return RS_ERROR(RS_ERR_SOLVER, "could not bracket P = %g N/m", ls->P);
+  return RS_OK;
+}
+
+/* Brent (1973) on [lo, hi] in the variable ln a, to rtol in ln a; the result is left in
+ * ls->out, solved at the root found. */
+static rs_status brent_ln_a(const load_search *ls, double lo, double hi, double flo, double fhi,
+                            double rtol)
+{
   double xa = log(lo), xb = log(hi), fa = flo, fb = fhi, xc = xa, fc = fa, dd = xb - xa, e = dd;
+  rs_status st;
   for (int iter = 0; iter < 100; ++iter) {
     if ((fb > 0) == (fc > 0)) {
       xc = xa;
@@ -173,9 +199,7 @@ rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double 
     double tol = 0.5 * rtol, xm = 0.5 * (xc - xb);
     if (fabs(xm) <= tol || fb == 0) {
       double af;
-      EVAL(exp(xb), af);
-      (void)af;
-      return RS_OK;
+      return load_eval(ls, exp(xb), &af);
     }
     if (fabs(e) >= tol && fabs(fa) > fabs(fb)) {
       double s = fb / fa, p, q;
@@ -202,8 +226,23 @@ rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double 
     xa = xb;
     fa = fb;
     xb += fabs(dd) > tol ? dd : copysign(tol, xm);
-    EVAL(exp(xb), fb);
+    if ((st = load_eval(ls, exp(xb), &fb))) return st;
   }
-#undef EVAL
-  return RS_ERROR(RS_ERR_SOLVER, "Brent did not converge for P = %g N/m in 100 iterations", P);
+  return RS_ERROR(RS_ERR_SOLVER, "Brent did not converge for P = %g N/m in 100 iterations", ls->P);
+}
+
+rs_status rs_contact_frictionless_load(rs_cylinder *c1, rs_cylinder *c2, double P, int M,
+                                       const rs_series_opts *opts, double a_max, double rtol,
+                                       rs_contact_result *out)
+{
+  if (!c1 || !c2 || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  if (!(P > 0) || !isfinite(P)) return RS_ERROR(RS_ERR_INPUT, "load P = %g N/m must be positive", P);
+  if (rtol <= 0) rtol = 1e-10;
+  if (a_max <= 0) a_max = 0.2 * fmin(c1->R, c2->R);
+  double a, lo, hi, flo, fhi;
+  rs_status st = hertz_guess(c1, c2, P, a_max, &a);
+  if (st) return st;
+  const load_search ls = {c1, c2, M, opts, P, log(P), out};
+  if ((st = bracket_load(&ls, a, a_max, &lo, &hi, &flo, &fhi))) return st;
+  return brent_ln_a(&ls, lo, hi, flo, fhi, rtol);
 }

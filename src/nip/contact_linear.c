@@ -126,6 +126,12 @@ static double norm2(int n, const double *x)
   return sqrt(s);
 }
 
+/* fmax(a, b) without the library call (the same result, NaN included: a NaN is ignored) */
+static inline double max_of(double a, double b)
+{
+  return b > a || isnan(a) ? b : a;
+}
+
 /* A new factorization of the current matrix: scales, equilibration, dgetrf. */
 rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
 {
@@ -140,7 +146,7 @@ rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
   double *er = L->rs, *ec = L->cs;
   for (int r = 0; r < n; ++r) er[r] = 0;
   for (int c = 0; c < n; ++c)
-    for (int r = 0; r < n; ++r) er[r] = fmax(er[r], fabs(B[(size_t)c * n + r]));
+    for (int r = 0; r < n; ++r) er[r] = max_of(er[r], fabs(B[(size_t)c * n + r]));
   for (int r = 0; r < n; ++r) {
     if (!(er[r] > 0) || !isfinite(er[r])) {
       L->valid = 0;
@@ -151,7 +157,7 @@ rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
   double anorm = 0;
   for (int c = 0; c < n; ++c) {
     double *Bc = B + (size_t)c * n, m = 0;
-    for (int r = 0; r < n; ++r) m = fmax(m, fabs(Bc[r]) * er[r]);
+    for (int r = 0; r < n; ++r) m = max_of(m, fabs(Bc[r]) * er[r]);
     if (!(m > 0) || !isfinite(m)) {
       L->valid = 0;
       return RS_ERROR(RS_ERR_SOLVER, "nip system has an empty or non-finite column %d", c + 1);
@@ -228,7 +234,7 @@ static int krylov(rs_nip_contact *nc, int changed_rows)
       if (nc->state[k] == L->state[k]) continue;
       int row = M + k;
       double mx = 0;
-      for (int c = 0; c < n; ++c) mx = fmax(mx, fabs(nc->A[(size_t)c * n + row] * L->cs[c]));
+      for (int c = 0; c < n; ++c) mx = max_of(mx, fabs(nc->A[(size_t)c * n + row] * L->cs[c]));
       if (!(mx > 0)) return 0;
       rsc[row] = 1 / mx;
     }

@@ -185,13 +185,18 @@ static rs_status write_core(hid_t parent, const rs_defect_report *rep)
   return st;
 }
 
-rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_result *res)
+rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_result *res,
+                              const rs_defect_report *given)
 {
   rs_defect_limits lim;
-  rs_defect_report *rep = NULL;
-  rs_defect_limits_from_problem(rs_scene_problem(scene), &lim);
-  rs_status st = rs_defects_assess(res, &lim, &rep);
-  if (st != RS_OK) return st;
+  rs_defect_report *own = NULL;
+  const rs_defect_report *rep = given;
+  rs_status st = RS_OK;
+  if (!rep) { /* assessed here unless the caller has the report */
+    rs_defect_limits_from_problem(rs_scene_problem(scene), &lim);
+    if ((st = rs_defects_assess(res, &lim, &own)) != RS_OK) return st;
+    rep = own;
+  }
   hid_t g;
   st = rs_h5_group_create(file, "defects", &g);
   if (st == RS_OK) {
@@ -203,6 +208,6 @@ rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_r
     if (st == RS_OK) st = write_core(g, rep);
     H5Gclose(g);
   }
-  rs_defect_report_destroy(&rep);
+  rs_defect_report_destroy(&own);
   return st;
 }

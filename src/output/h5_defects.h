@@ -4,12 +4,15 @@
 
 #include <hdf5.h>
 
+#include "reelsim/defects.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/status.h"
 
-/* Assesses the defect-risk rules (reelsim/defects.h) on the result and writes their
- * verdicts, figures and flagged ranges under /defects. */
-rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_result *res);
+/* Assesses the defect-risk rules (reelsim/defects.h) on the result, unless `given` has
+ * the report already, and writes their verdicts, figures and flagged ranges under
+ * /defects. */
+rs_status rs_h5_write_defects(hid_t file, const rs_scene *scene, const rs_reel_result *res,
+                              const rs_defect_report *given);
 
 #endif

@@ -17,6 +17,9 @@ rs_status rs_h5_write_file_attributes(hid_t file);
  * its attributes (title, scene_file, scene, layers, ..., wall_seconds) and the groups
  * layers/ and final/ (and whatever a run gains later) under it. */
 rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result *res);
+/* The same with the defect report already assessed (NULL: assessed here). */
+rs_status rs_h5_write_run_assessed(hid_t loc, const rs_scene *scene, const rs_reel_result *res,
+                                   const rs_defect_report *defects);
 
 /* RS_ERR_INTERNAL when a result lacks an array it claims to have. */
 rs_status rs_h5_check_result(const rs_reel_result *res);

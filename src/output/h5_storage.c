@@ -55,12 +55,13 @@ typedef struct stored_run {
   const rs_scene *scene;
   const rs_reel_result *res;
   const rs_storage_result *storage;
+  const rs_defect_report *defects; /* NULL: assessed while writing */
 } stored_run;
 
 static rs_status build_stored(hid_t file, const void *ctx)
 {
   const stored_run *run = ctx;
-  rs_status st = rs_h5_write_run(file, run->scene, run->res);
+  rs_status st = rs_h5_write_run_assessed(file, run->scene, run->res, run->defects);
   if (st == RS_OK && run->storage) st = rs_h5_write_storage(file, run->storage);
   return st;
 }
@@ -68,11 +69,18 @@ static rs_status build_stored(hid_t file, const void *ctx)
 rs_status rs_output_write_stored(const char *path, const rs_scene *scene,
                                  const rs_reel_result *res, const rs_storage_result *storage)
 {
+  return rs_output_write_assessed(path, scene, res, storage, NULL);
+}
+
+rs_status rs_output_write_assessed(const char *path, const rs_scene *scene,
+                                   const rs_reel_result *res, const rs_storage_result *storage,
+                                   const rs_defect_report *defects)
+{
   if (!path || !path[0]) return RS_ERROR(RS_ERR_INPUT, "no output file name given");
   if (!scene || !res) return RS_ERROR(RS_ERR_INTERNAL, "no scene or no result to write");
   rs_status st = rs_h5_check_result(res);
   if (st != RS_OK) return st;
   if ((st = rs_h5_check_storage(storage, res)) != RS_OK) return st;
-  stored_run run = {scene, res, storage};
+  stored_run run = {scene, res, storage, defects};
   return rs_h5_write_staged(path, build_stored, &run);
 }

@@ -218,12 +218,18 @@ rs_status rs_h5_check_result(const rs_reel_result *res)
 
 rs_status rs_h5_write_run(hid_t loc, const rs_scene *scene, const rs_reel_result *res)
 {
+  return rs_h5_write_run_assessed(loc, scene, res, NULL);
+}
+
+rs_status rs_h5_write_run_assessed(hid_t loc, const rs_scene *scene, const rs_reel_result *res,
+                                   const rs_defect_report *defects)
+{
   rs_status st = write_run_attributes(loc, scene, res);
   if (st == RS_OK) st = write_layers(loc, res);
   if (st == RS_OK) st = write_final(loc, res);
   if (st == RS_OK) st = write_final_at_speed(loc, res);
   if (st == RS_OK && rs_scene_problem(scene)->record.history_every > 0) st = write_history(loc, scene, res);
-  if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res);
+  if (st == RS_OK) st = rs_h5_write_defects(loc, scene, res, defects);
   if (st == RS_OK) st = rs_h5_write_nip(loc, scene, res);
   if (st == RS_OK) st = rs_h5_write_lanes(loc, res);
   return st;

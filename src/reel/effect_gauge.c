@@ -19,6 +19,9 @@ static rs_status gauge_setup(rs_reel_effect *e, rs_reel_state *s, rs_roll_params
 
 static rs_status gauge_after(rs_reel_effect *e, const rs_reel_state *s)
 {
+  /* the radial stresses in full only when a state is recorded (ln(N)/RS_GAUGE_STEP of the
+   * increments): reading them is O(N) */
+  if (!rs_reel_gauge_due(e->content, s->first)) return RS_OK;
   return rs_reel_gauge_record(e->content, s->pb, s->first, rs_roll_core_pressure(s->roll),
                               rs_roll_sigma_r(s->roll), s->film, 0);
 }

@@ -84,7 +84,10 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
   if (!tb) return RS_ERROR(RS_ERR_MEMORY, "deformed radius: out of memory");
   const double t = pb->material.caliper, pa = pb->air.pressure;
   double Pmax = core_pressure;
-  for (int j = 0; j < n; ++j) Pmax = fmax(Pmax, -sigma_r[j]);
+  for (int j = 0; j < n; ++j) { /* fmax without the call */
+    const double P = -sigma_r[j];
+    if (P > Pmax || isnan(Pmax)) Pmax = P;
+  }
   strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
   const double Ec = rs_core_stiffness(&pb->core);
   double r = pb->core.radius, P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
@@ -145,10 +148,15 @@ void rs_reel_gauge_free(rs_reel_gauge *g)
   g->shortfall = g->radius = NULL;
 }
 
+int rs_reel_gauge_due(const rs_reel_gauge *g, int n)
+{
+  return n > g->layers[g->n - 1] && n >= gauge_next(g->layers[g->n - 1]);
+}
+
 rs_status rs_reel_gauge_record(rs_reel_gauge *g, const rs_problem *pb, int n, double core_pressure,
                                const double *sigma_r, const double *film, int force)
 {
-  if (n <= g->layers[g->n - 1] || (!force && n < gauge_next(g->layers[g->n - 1]))) return RS_OK;
+  if (n <= g->layers[g->n - 1] || (!force && !rs_reel_gauge_due(g, n))) return RS_OK;
   while (g->n > 1 && g->layers[g->n - 1] >= n) g->n--; /* a rewind (adaptive nip) */
   if (g->n == g->cap) return RS_OK;
   rs_status st = rs_reel_deformed_radius(pb, core_pressure, sigma_r, film, n, g->radius);

@@ -20,6 +20,8 @@ typedef struct rs_reel_gauge {
 
 rs_status rs_reel_gauge_init(rs_reel_gauge *g, int N);
 void rs_reel_gauge_free(rs_reel_gauge *g);
+/* 1 when a state is due at n layers (rs_reel_gauge_record without force records it). */
+int rs_reel_gauge_due(const rs_reel_gauge *g, int n);
 /* Records the roll of n layers (its core pressure, radial stresses, entrained films or
  * NULL) when `every` layers have gone on since the last state, or when force is set. */
 rs_status rs_reel_gauge_record(rs_reel_gauge *g, const rs_problem *pb, int n, double core_pressure,

@@ -31,14 +31,27 @@ static void assemble(const rs_ring_stack *s, double m, double lambda, double *a,
   }
 }
 
-/* 1 when the form at (m, lambda) is positive definite (every LDL^T pivot > 0). */
-static int definite(const rs_ring_stack *s, double m, double lambda, double *a, double *b)
+/* a_j of assemble, alone (the same operations in the same order: the same bits) */
+static inline double diagonal(const rs_ring_stack *s, int j, double x, double lambda)
 {
-  assemble(s, m, lambda, a, b);
-  double d = a[0];
+  const double r2 = s->rho[j] * s->rho[j];
+  double a = s->rho[j] * (s->D[j] * x * x / (r2 * r2) - lambda * s->N[j] * x / r2) +
+             s->r_spring[j] * s->k[j];
+  if (j + 1 < s->n) a += s->r_spring[j + 1] * s->k[j + 1];
+  return a;
+}
+
+/* 1 when the form at (m, lambda) is positive definite (every LDL^T pivot > 0). The form is
+ * built as the pivots go, so that a form found indefinite at layer j costs j layers, not n
+ * (most of the bisections' tests, and most of the whole reel's defect assessment). */
+static int definite(const rs_ring_stack *s, double m, double lambda)
+{
+  const double x = m * m - 1.0;
+  double d = diagonal(s, 0, x, lambda);
   if (!(d > 0.0)) return 0;
   for (int j = 1; j < s->n; ++j) {
-    d = a[j] - b[j - 1] * b[j - 1] / d;
+    const double b = -s->r_spring[j] * s->k[j]; /* b_(j-1) of assemble */
+    d = diagonal(s, j, x, lambda) - b * b / d;
     if (!(d > 0.0)) return 0;
   }
   return 1;
@@ -46,14 +59,13 @@ static int definite(const rs_ring_stack *s, double m, double lambda, double *a, 
 
 /* The critical load factor of mode m, below `cap` (returns cap when none below it), to
  * the relative tolerance rtol. */
-static double mode_factor(const rs_ring_stack *s, double m, double cap, double rtol, double *a,
-                          double *b)
+static double mode_factor(const rs_ring_stack *s, double m, double cap, double rtol)
 {
-  if (definite(s, m, cap, a, b)) return cap;
+  if (definite(s, m, cap)) return cap;
   double lo = 0.0, hi = cap;
   for (int it = 0; it < 200 && hi - lo > rtol * hi; ++it) {
     double mid = 0.5 * (lo + hi);
-    if (definite(s, m, mid, a, b)) lo = mid;
+    if (definite(s, m, mid)) lo = mid;
     else hi = mid;
   }
   return 0.5 * (lo + hi);
@@ -89,6 +101,54 @@ done:
   return peak;
 }
 
+/* A bound X(lambda) on x = m^2 - 1 above which the form is positive definite at every
+ * load factor up to lambda, so that the scan need not test those modes (a mode of short
+ * wavelength is held by its rings' bending alone; most of the scan's grid). Row j's
+ * diagonal exceeds the sum of its off-diagonals by its ring term
+ *   rho_j x (D_j x / rho_j^4 - lambda N_j / rho_j^2)
+ * (the springs' terms cancel; the core's spring only adds to row 0); a form whose every
+ * row has that margin positive is diagonally dominant, hence positive definite, and its
+ * LDL^T pivots computed in floating point stay above the off-diagonals as long as the
+ * margin is well above rounding: here at least 1e-6 of the row's terms,
+ *   A_j x^2 - B_j x - C_j > 0,  A_j = (1 - eps) D_j / rho_j^3,
+ *   B_j = lambda max(N_j + eps |N_j|, 0) / rho_j,  C_j = eps (r_j k_j + r_(j+1) k_(j+1)),
+ * true for x above the larger root (a layer in tension counted as unloaded: X then grows
+ * with lambda, and a bound made at a larger lambda still holds). So a skipped mode is one
+ * definite() would pass: the same scan, the same bits. Infinity when some row has no
+ * bending to rely on. */
+static double bending_bound(const rs_ring_stack *s, double lambda)
+{
+  const double eps = 1e-6;
+  double X = 0.0;
+  for (int j = 0; j < s->n; ++j) {
+    const double rho = s->rho[j], A = (1.0 - eps) * s->D[j] / (rho * rho * rho);
+    const double B = lambda * fmax(s->N[j] + eps * fabs(s->N[j]), 0.0) / rho;
+    double C = s->r_spring[j] * s->k[j];
+    if (j + 1 < s->n) C += s->r_spring[j + 1] * s->k[j + 1];
+    C *= eps;
+    const double x = (B + sqrt(B * B + 4.0 * A * C)) / (2.0 * A);
+    if (!(A > 0.0 && rho > 0.0 && C >= 0.0 && isfinite(x))) return INFINITY;
+    if (x > X) X = x;
+  }
+  return X;
+}
+
+/* mode_factor on the scan's grid, below the least factor found so far: `best` itself
+ * when the mode is above the bending bound (*X, made at *X_at >= best: made again at best
+ * only when the older one does not settle the mode) */
+static double scan_factor(const rs_ring_stack *s, double m, double best, double *X,
+                          double *X_at)
+{
+  const double x = m * m - 1.0;
+  if (x > *X) return best;
+  if (*X_at != best) {
+    *X = bending_bound(s, best);
+    *X_at = best;
+    if (x > *X) return best;
+  }
+  return mode_factor(s, m, best, 1e-4);
+}
+
 double rs_defect_ring_stack_critical(const rs_ring_stack *s, int *mode, int *peak)
 {
   const double cap = 1e12;
@@ -103,9 +163,9 @@ double rs_defect_ring_stack_critical(const rs_ring_stack *s, int *mode, int *pea
   }
   /* scan m on a grid (every integer to 32, then 4 % steps) to 1e-4, keep the least,
    * look at the integers between its grid neighbours, then bisect the best to 1e-12 */
-  double best = cap, prev = 2.0, bm = 0.0, lo_m = 2.0, hi_m = 2.0;
+  double best = cap, prev = 2.0, bm = 0.0, lo_m = 2.0, hi_m = 2.0, X = INFINITY, X_at = NAN;
   for (double m = 2.0; m < 2e6; m = m < 32.0 ? m + 1.0 : floor(m * 1.04)) {
-    double f = mode_factor(s, m, best, 1e-4, a, b);
+    double f = scan_factor(s, m, best, &X, &X_at);
     if (f < best) {
       best = f;
       bm = m;
@@ -116,10 +176,10 @@ double rs_defect_ring_stack_critical(const rs_ring_stack *s, int *mode, int *pea
   }
   if (hi_m < bm) hi_m = bm;
   for (double m = lo_m; bm > 0.0 && m <= hi_m; m += 1.0) {
-    double f = mode_factor(s, m, best, 1e-4, a, b);
+    double f = scan_factor(s, m, best, &X, &X_at);
     if (f < best) best = f, bm = m;
   }
-  if (bm > 0.0) best = mode_factor(s, bm, best * (1.0 + 1e-3), 1e-13, a, b);
+  if (bm > 0.0) best = mode_factor(s, bm, best * (1.0 + 1e-3), 1e-13);
   if (bm > 0.0) {
     if (mode) *mode = (int)bm;
     if (peak) *peak = mode_peak(s, bm, best, a, b);

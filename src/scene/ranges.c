@@ -17,7 +17,7 @@
 #define NONE NAN
 /* key, unit, hard low, hard high, plant low, plant high, likely slips */
 static const ys_range table[] = {
-    {"material.caliper", "m", 1e-9, 1e-2, 3e-6, 2e-3, "um mm mil"},
+    {"material.caliper", "m", 1e-9, 1e-2, 0.5e-6, 2e-3, "um mm mil"}, /* capacitor films: 0.5 um */
     {"material.E_theta", "Pa", 1, 1e13, 1e7, 5e11, "kPa MPa GPa psi"},
     {"material.nu_rtheta", "", -1, 1, NONE, NONE, ""},
     {"material.G_rtheta", "Pa", 1, 1e13, 1e4, 5e11, "kPa MPa GPa"},

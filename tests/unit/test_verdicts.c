@@ -124,6 +124,89 @@ static void ring_stack_rigid_packet(void)
   CHECK_LT(fabs(err[4]), 1e-5);
 }
 
+/* The scan's shortcut (modes above the bending bound are not tested) is exact: the least
+ * factor and its mode, bit for bit, as a scan that tests every mode in full (the form
+ * assembled, every LDL^T pivot; written out here) on wound-like stacks: compression near
+ * the core and tension above it, soft and stiff springs, thin and thick webs. */
+static int ref_definite(const rs_ring_stack *s, double m, double lambda)
+{
+  const double x = m * m - 1.0;
+  double d = 0.0;
+  for (int j = 0; j < s->n; ++j) {
+    const double r2 = s->rho[j] * s->rho[j];
+    double a = s->rho[j] * (s->D[j] * x * x / (r2 * r2) - lambda * s->N[j] * x / r2) +
+               s->r_spring[j] * s->k[j];
+    if (j + 1 < s->n) a += s->r_spring[j + 1] * s->k[j + 1];
+    if (j > 0) {
+      const double b = -s->r_spring[j] * s->k[j];
+      a -= b * b / d;
+    }
+    d = a;
+    if (!(d > 0.0)) return 0;
+  }
+  return 1;
+}
+
+static double ref_factor(const rs_ring_stack *s, double m, double cap, double rtol)
+{
+  if (ref_definite(s, m, cap)) return cap;
+  double lo = 0.0, hi = cap;
+  for (int it = 0; it < 200 && hi - lo > rtol * hi; ++it) {
+    double mid = 0.5 * (lo + hi);
+    if (ref_definite(s, m, mid)) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+static double ref_critical(const rs_ring_stack *s, int *mode)
+{
+  double best = 1e12, prev = 2.0, bm = 0.0, lo_m = 2.0, hi_m = 2.0;
+  for (double m = 2.0; m < 2e6; m = m < 32.0 ? m + 1.0 : floor(m * 1.04)) {
+    double f = ref_factor(s, m, best, 1e-4);
+    if (f < best) best = f, bm = m, lo_m = prev;
+    if (bm == prev) hi_m = m;
+    prev = m;
+  }
+  if (hi_m < bm) hi_m = bm;
+  for (double m = lo_m; bm > 0.0 && m <= hi_m; m += 1.0) {
+    double f = ref_factor(s, m, best, 1e-4);
+    if (f < best) best = f, bm = m;
+  }
+  if (bm > 0.0) best = ref_factor(s, bm, best * (1.0 + 1e-3), 1e-13);
+  *mode = (int)bm;
+  return best;
+}
+
+static void ring_stack_scan_exact(void)
+{
+  enum { n = 400 };
+  static const double calipers[] = {70e-6, 1.5e-6, 1e-3}, E_r[] = {3e5, 2e7, 1e9};
+  double D[n], rho[n], N[n], k[n], rs[n];
+  for (int c = 0; c < 3; ++c)
+    for (int e = 0; e < 3; ++e) {
+      const double t = calipers[c], Et = 4e9, Dl = Et * t * t * t / 12.0;
+      for (int j = 0; j < n; ++j) {
+        rho[j] = 0.0762 + (j + 0.5) * t;
+        rs[j] = 0.0762 + j * t;
+        D[j] = Dl * (1.0 + 0.3 * sin(0.1 * j));
+        k[j] = (j ? E_r[e] : 0.5 * E_r[e]) * (1.0 + 0.5 * cos(0.07 * j)) / t;
+        /* compressed at the core, in tension beyond a third of the stack */
+        N[j] = 2e6 * t * (1.0 - 3.0 * j / n) * (1.0 + 0.2 * sin(0.3 * j));
+      }
+      rs_ring_stack s = {.n = n, .D = D, .rho = rho, .N = N, .k = k, .r_spring = rs};
+      int m = 0, mref = 0;
+      const double f = rs_defect_ring_stack_critical(&s, &m, NULL);
+      const double fref = ref_critical(&s, &mref);
+      CHECK_LOG("caliper (m)", t);
+      CHECK_LOG("E_r (Pa)", E_r[e]);
+      CHECK_LOG("least factor", f);
+      CHECK_LOG("reference", fref);
+      CHECK_LOG("mode", m);
+      CHECK(f == fref && m == mref);
+    }
+}
+
 /* (a) A hoop strength: the layers over it flagged, the margin strength / compression, the
  * criterion named; (c) the zone's extent from the core. */
 static void starring_strength_and_zone(void)
@@ -347,6 +430,7 @@ static const check_case cases[] = {
     {"ring_single_layer_limit", ring_single_layer_limit},
     {"ring_stack_one_ring", ring_stack_one_ring},
     {"ring_stack_rigid_packet", ring_stack_rigid_packet},
+    {"ring_stack_scan_exact", ring_stack_scan_exact},
     {"starring_strength_and_zone", starring_strength_and_zone},
     {"starring_bonded_and_slipping", starring_bonded_and_slipping},
     {"slip_uniform_pressure", slip_uniform_pressure},
