@@ -34,10 +34,10 @@
  * give is each layer's own modulus (Hakiel: the pressures just before that layer), so it is
  * a predictor-corrector: integrate with the modulus frozen before the block, take from those
  * sub-increments the mean pressure each node would have carried before each of the layers
- * that reach it, integrate again with the modulus there (RS_LUMP_CORRECTED). Error first
- * order in m - 1, ~60x below the first scheme's (frozen modulus, the whole block's load at
- * the outer radius: RS_LUMP_FROZEN, kept for comparison; docs/accuracy.md). For m = 1 both
- * are exact Hakiel accretion, bit for bit.
+ * that reach it, integrate again with the modulus there. Error first order in m - 1, ~60x
+ * below that of a block integrated once with its whole load at its outer radius (the
+ * tests' reference, tests/roll_frozen.h; docs/accuracy.md). For m = 1 it is exact Hakiel
+ * accretion.
  *
  * An increment need not be integrated from the core: below the newest layers the modulus
  * barely changes, so it keeps the deep part of the last integration from the core and
@@ -61,7 +61,7 @@ void rs_roll_destroy(rs_roll **rollp)
   rsi_roll_lazy_free(roll);
   rsi_roll_air_free(roll);
   double *arrays[] = {roll->sigma_r, roll->sigma_theta, roll->w,   roll->L,
-                      roll->xnode,   roll->block_share, roll->P_mean, roll->dsr,
+                      roll->xnode,   roll->P_mean, roll->dsr,
                       roll->dsh,     roll->scratch.u,   roll->scratch.d, roll->scratch.q,
                       roll->scratch.c, roll->scratch.a, roll->scratch.b};
   for (size_t i = 0; i < sizeof arrays / sizeof *arrays; ++i) free(arrays[i]);
@@ -87,8 +87,6 @@ static rs_status roll_check_params(const rs_roll_params *p)
                     p->max_layers);
   if (!(p->rtol > 0.0 && p->rtol < 1.0))
     return RS_ERROR(RS_ERR_INPUT, "rtol must lie in (0, 1) (got %g)", p->rtol);
-  if (p->lumping != RS_LUMP_CORRECTED && p->lumping != RS_LUMP_FROZEN)
-    return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
   if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF && p->reuse != RS_REUSE_FIRST_ORDER)
     return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
   if (p->placement != RS_LOAD_BENEATH && p->placement != RS_LOAD_HAKIEL)
@@ -102,7 +100,7 @@ static rs_status roll_check_params(const rs_roll_params *p)
  * zeroed; 0 when one could not be allocated */
 static int roll_alloc_arrays(rs_roll *roll, size_t cap)
 {
-  double **const node_arrays[] = {&roll->w,   &roll->L,   &roll->xnode,     &roll->block_share,
+  double **const node_arrays[] = {&roll->w,   &roll->L,   &roll->xnode,
                                   &roll->P_mean, &roll->dsr, &roll->dsh,    &roll->scratch.u,
                                   &roll->scratch.d, &roll->scratch.q, &roll->scratch.c,
                                   &roll->scratch.a, &roll->scratch.b};
@@ -156,13 +154,10 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   if (roll->n + m > roll->p.max_layers)
     return RS_ERROR(RS_ERR_INPUT, "the roll holds %d layers; cannot wind %d more onto %d",
                     roll->p.max_layers, m, roll->n);
-  double total = 0.0;
-  for (int i = 0; i < m; ++i) {
+  for (int i = 0; i < m; ++i)
     if (!(T0[i] >= 0.0) || !isfinite(T0[i]))
       return RS_ERROR(RS_ERR_INPUT, "wound-on tension of layer %d must be finite and >= 0 (got %g N/m)",
                       roll->n + i + 1, T0[i]);
-    total += T0[i];
-  }
   const int k_old = roll->n, k = roll->n + m;
   const int top = k - roll->shift; /* the highest node the increment loads */
   /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
@@ -184,10 +179,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     return st;
   }
 
-  /* for one layer the two schemes are the same increment: one code path, bit for bit */
-  if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
-    st = rsi_roll_commit_frozen(roll, m, T0, total);
-  } else if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
+  if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
     st = rsi_roll_add_one(roll, T0[0]);
   } else {
     rsi_roll_block_increment(roll, k_old, m, T0, roll->P_mean);

@@ -1,6 +1,6 @@
 /* The stress increment of a block of layers from one integration's (w, ln y), by the
- * one-layer decays down the roll, and its commit to the roll's stresses (both lumping
- * schemes, both load placements; docs/roll-model.md). */
+ * one-layer decays down the roll, and its commit to the roll's stresses (both load
+ * placements; docs/roll-model.md). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -260,61 +260,6 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
                                roll_node_radius(roll, k))
                     : RS_ERROR(RS_ERR_SOLVER, "non-finite stress increment at r = %.9g m (layer %d)",
                                roll_node_radius(roll, j), j);
-  return RS_OK;
-}
-
-/* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
- * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
- * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
-rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
-{
-  const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
-  const double t = roll->p.caliper, s = roll_node_radius(roll, top);
-  double above = 0.0;
-  for (int i = m - 1; i >= 0; --i) {
-    above += T0[i];
-    roll->block_share[i] = total > 0.0 ? above / total : 0.0;
-  }
-  const double scale = -total / s;
-  /* First every node's increment (ds, and ds + r ds'), then the state: an increment that
-   * fails leaves the roll exactly as it was, every finished layer intact. From the top
-   * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
-   * (rsi_roll_block_increment). */
-  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
-  dsr[top] = 1.0;
-  for (int j = 0; j <= top; ++j) {
-    const double ds = scale * dsr[j];
-    dsr[j] = ds;
-    dsh[j] = ds * (1.0 + roll->w[j]);
-  }
-  if (shift) { /* the outermost layer's outer face: traction free */
-    dsr[k] = 0.0;
-    dsh[k] = 0.0;
-  }
-  roll->deep_lo = 0;
-  roll->c_deep = roll->c2_deep = 0.0;
-  rs_status st = roll_check_increment(roll, dsr, dsh, k);
-  if (st) return st;
-  /* node by node on the nodes that held the reference's values: no longer c x shape */
-  rsi_roll_profile_drop(roll);
-  roll->core_sigma += dsr[0];
-  for (int j = 1; j <= k; ++j) {
-    double ds = dsr[j], hoop = dsh[j];
-    if (j <= k_old) {
-      roll->sigma_r[j - 1] += ds;
-      roll->sigma_theta[j - 1] += hoop;
-    } else {
-      int b = j - k_old - 1; /* position in the block, 0 = innermost */
-      /* the tension wound at or above the node's radius: with the load beneath a layer,
-       * a block layer's own tension is not on its outer face */
-      double share_above = b + 1 < m ? roll->block_share[b + 1] : 0.0;
-      double share_at = shift ? share_above : roll->block_share[b];
-      roll->sigma_r[j - 1] = share_at * ds;
-      roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
-    }
-  }
-  if (shift) roll->hoop_stale = 1;
   return RS_OK;
 }
 

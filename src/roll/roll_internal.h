@@ -213,7 +213,6 @@ struct rs_roll {
   int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
   double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
   /* the last increment (roll_increment.c, fused for one layer in roll_layer.c) */
-  double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
   double *P_mean;       /* [cap + 1] corrected lumping: mean pressure increment seen, Pa */
   double *dsr, *dsh;    /* [cap + 1] the increment's ds and ds + r ds' at the nodes */
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h), plus, with the
@@ -355,7 +354,6 @@ void rsi_roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_
 double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
-rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
 
 /* roll_reference.c */
 int rsi_roll_reuse_start(rs_roll *roll, double *C);
