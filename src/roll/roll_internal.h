@@ -313,6 +313,8 @@ int rsi_roll_ode_alloc(rs_roll *roll, size_t cap);
 int rsi_roll_ode_create(rs_roll *roll);
 void rsi_roll_ode_free(rs_roll *roll);
 int rsi_roll_ode_restart(rs_roll *roll, double x0, double w0, double L0);
+void rsi_roll_modulus_probe(const rs_roll *roll, const double *P, double *Pp, double *Ep, int lo,
+                            int hi);
 
 /* roll_profile.c */
 int rsi_roll_profile_build(rs_roll *roll, int from, int top);

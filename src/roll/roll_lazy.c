@@ -105,10 +105,8 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
    * not three times) */
   for (int b0 = F; b0 < to; b0 += RS_FREEZE_BLOCK) {
     const int b1 = to - b0 > RS_FREEZE_BLOCK ? b0 + RS_FREEZE_BLOCK : to;
-    /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
-    for (int j = b0; j < b1; ++j) Pp[j] = P[j] * 1.001 + 1.0;
-    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, b1 - b0);
-    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b1);
+    /* d ln E_r / dP by a forward difference (the drift profile's: roll_ode.c) */
+    rsi_roll_modulus_probe(roll, P, Pp, Ep, b0, b1);
     /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
      * the three running maxima side by side */
     roll_lazy_bounds(b0, b1, aC, P, Pp, E, Ep, Eref, e, la, lb);

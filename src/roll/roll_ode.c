@@ -309,6 +309,18 @@ rs_status rsi_roll_set_modulus(rs_roll *roll, int k)
   return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy.top, k + 1));
 }
 
+/* The moduli Ep (with entrained air its film in series) at the pressures Pp = 1.001 P + 1 Pa,
+ * a little above the pressures P, at the nodes [lo, hi): d ln E_r / dP by the forward
+ * difference (Ep - E) / (E (Pp - P)), to ~1e-3. One formula for the lazy zone's drift
+ * bound (roll_lazy.c) and the drift profile's forcing (roll_profile.c). */
+void rsi_roll_modulus_probe(const rs_roll *roll, const double *restrict P, double *restrict Pp,
+                            double *restrict Ep, int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) Pp[j] = P[j] * 1.001 + 1.0;
+  rs_radial_modulus_n(&roll->p.radial, Pp + lo, Ep + lo, hi - lo);
+  if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, lo, hi);
+}
+
 /* ---- the workspace's life ---------------------------------------------------------------- */
 
 /* The workspace's arrays for a roll of cap layers (nodes 0..cap), zeroed; 0 when one could

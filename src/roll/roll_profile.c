@@ -55,28 +55,19 @@ static inline void roll_profile_weights(double z, int series, double *q, double 
 }
 
 /* Layer j's coefficients of the recurrence (rsi_roll_profile_build): over the layer
- * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B. d holds the differences of
- * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where
- * they hold (the weights' by z, the exponential's by its argument), else the closed forms,
- * exp(). */
-static inline void roll_profile_layer(int j, int top, const double *restrict d,
-                                      const double *restrict u, const double *restrict E,
-                                      const double *restrict w, const double *restrict x,
-                                      double Eth, double *Q, double *Cf, double *A, double *B)
+ * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B, from its length h in x
+ * and z = (2 + w_j + w_j+1) h, g^2 at its ends (g0, g1) and e^(v - ln g^2_j) at its middle
+ * (ex), d ln g^2 / dC at its ends (u0, u1) and the slopes of that cubic there (um, up).
+ * The one formula of every layer (the inner layers' vectorised pass and the others alike);
+ * the Taylor sums of the weights when series != 0 (|z| < 0.03), else the closed forms. */
+static inline void roll_profile_coef(double h, double z, int series, double g0, double g1,
+                                     double ex, double u0, double u1, double um, double up,
+                                     double *Q, double *Cf, double *A, double *B)
 {
-  /* the cubics at the middle: v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference
-   * m0 - m1 = (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes) */
-  const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
-  const double um = j > 0 ? 0.5 * (u[j + 1] - u[j - 1]) : u[j + 1] - u[j];
-  const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
-  const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
-  const double g0 = Eth / E[j], g1 = Eth / E[j + 1];
-  const double gm = g0 * roll_exp_step(dv);
-  const double b0 = g0 * u[j], b1 = g1 * u[j + 1];
-  const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.125 * (um - up));
+  const double gm = g0 * ex;
+  const double b0 = g0 * u0, b1 = g1 * u1;
+  const double bm = gm * (0.5 * (u0 + u1) + 0.125 * (um - up));
   const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
-  const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
-  const int series = fabs(z) < 0.03; /* the closed forms lose z^-2 .. z^-3 below */
   double phi[3], psi[3];
   roll_profile_weights(z, series, Q, phi, psi);
   *Cf = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
@@ -84,9 +75,28 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   *B = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
 }
 
-/* roll_profile_layer's Taylor sums for the layers in..top-2 (in >= 1: both neighbours' slopes
- * centred), written out in a loop over arrays passed as such, that vectorises; returns
- * nonzero when some layer's sums do not hold (the caller does those again) */
+/* Layer j's coefficients (roll_profile_coef) at any layer: d holds the differences of
+ * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top; the cubics at the
+ * middle, v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference m0 - m1 =
+ * (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes); exp() where
+ * the Taylor sums do not hold */
+static inline void roll_profile_layer(int j, int top, const double *restrict d,
+                                      const double *restrict u, const double *restrict E,
+                                      const double *restrict w, const double *restrict x,
+                                      double Eth, double *Q, double *Cf, double *A, double *B)
+{
+  const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
+  const double um = j > 0 ? 0.5 * (u[j + 1] - u[j - 1]) : u[j + 1] - u[j];
+  const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
+  const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
+  const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
+  roll_profile_coef(h, z, fabs(z) < 0.03, Eth / E[j], Eth / E[j + 1], roll_exp_step(dv), u[j],
+                    u[j + 1], um, up, Q, Cf, A, B);
+}
+
+/* roll_profile_layer for the layers in..top-2 (in >= 1: both neighbours' slopes centred)
+ * where the Taylor sums hold, in a loop over arrays passed as such, that vectorises;
+ * returns nonzero when some layer's sums do not hold (the caller does those again) */
 static int64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
@@ -96,17 +106,14 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
   for (int j = in; j + 1 < top; ++j) {
     const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
     const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
-    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof_top -1 */
-    const double g0 = Eth / E[j], gm = g0 * roll_exp_small(dv);
-    const double b0 = g0 * u[j], b1 = Eth / E[j + 1] * u[j + 1];
-    const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.0625 * (u[j + 1] - u[j - 1] - u[j + 2] + u[j]));
-    const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
-    double q, phi[3], psi[3];
-    roll_profile_weights(z, 1, &q, phi, psi);
+    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof.top -1 */
+    double q, cf, a, b; /* locals, stored after: the loop vectorises */
+    roll_profile_coef(h, z, 1, Eth / E[j], Eth / E[j + 1], roll_exp_small(dv), u[j], u[j + 1],
+                      0.5 * (u[j + 1] - u[j - 1]), 0.5 * (u[j + 2] - u[j]), &q, &cf, &a, &b);
     Q[j] = q;
-    Cf[j] = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
-    A[j] = h * phi[0];
-    B[j] = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
+    Cf[j] = cf;
+    A[j] = a;
+    B[j] = b;
   }
   return wide;
 }
@@ -142,10 +149,8 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   for (int b0 = lo; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
     double *Pp = Cf, *Ep = Q;
-    /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
-    for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
-    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
-    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b0 + nb);
+    /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_ode.c) */
+    rsi_roll_modulus_probe(roll, P, Pp, Ep, b0, b0 + nb);
     for (int j = b0; j < b0 + nb; ++j) u[j] = (Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])) * e[j];
   }
   /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
