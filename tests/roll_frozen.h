@@ -23,10 +23,7 @@ static rs_status roll_frozen_increment(rs_roll *roll, int k, int top, double tot
   roll_segments seg;
   rsi_roll_decays_raw(roll->L, dsr, 0, top, &seg);
   for (int g = seg.count - 1; g >= 0; --g)
-    for (int j = seg.b[g]; j < seg.b[g + 1]; ++j) {
-      const double v = dsr[j] * seg.s[g];
-      dsr[j] = v > 1e-290 ? v : 0.0;
-    }
+    for (int j = seg.b[g]; j < seg.b[g + 1]; ++j) dsr[j] = roll_decay_clear(dsr[j] * seg.s[g]);
   dsr[top] = 1.0;
   const double scale = -total / roll_node_radius(roll, top);
   for (int j = 0; j <= top; ++j) {

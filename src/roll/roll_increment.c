@@ -17,10 +17,7 @@
 /* e[lo..hi) *= s, what falls below 1e-290 cleared (a plain loop: it vectorises) */
 static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s)
 {
-  for (int j = lo; j < hi; ++j) {
-    const double v = e[j] * s;
-    e[j] = v > 1e-290 ? v : 0.0;
-  }
+  for (int j = lo; j < hi; ++j) e[j] = roll_decay_clear(e[j] * s);
 }
 
 /* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
@@ -233,8 +230,7 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
    * is (a tension near the largest double overflows there: the node is looked for) */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
-  if (lo > 0 && !(fabs(c) * roll->ref.shape_max < INFINITY &&
-                  (c2 == 0.0 || fabs(c2) * roll->ref.shape_max * roll->prof.max < INFINITY)))
+  if (lo > 0 && !roll_deep_bounded(roll, c, c2))
     for (int j = 0; j < lo; ++j)
       if (!isfinite(c * roll->ref.shape_e[j]) || (!roll->shift && !isfinite(c * roll->ref.shape_h[j])) ||
           (c2 != 0.0 && !isfinite(roll->ref.shape_e[j] * (c + c2 * roll->prof.L[j]))))

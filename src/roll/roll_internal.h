@@ -249,6 +249,19 @@ static inline double roll_node_radius(const rs_roll *roll, int j)
   return roll->air.geom ? roll->air.node_r[j] : roll->p.core_radius + j * roll->p.caliper;
 }
 
+/* a decay's product v scaled into place, 0 below 1e-290 (no subnormals): the one rule of
+ * the block path (roll_increment.c) and the fused one-layer pass (roll_layer.c) */
+static inline double roll_decay_clear(double v) { return v > 1e-290 ? v : 0.0; }
+
+/* whether an increment's deep part, c x shape + c2 x shape x profile L below its start, is
+ * finite by the bounds of the shape and the profile (else the nodes are looked at one by
+ * one: rsi_roll_commit) */
+static inline int roll_deep_bounded(const rs_roll *roll, double c, double c2)
+{
+  return fabs(c) * roll->ref.shape_max < INFINITY &&
+         (c2 == 0.0 || fabs(c2) * roll->ref.shape_max * roll->prof.max < INFINITY);
+}
+
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
 static inline double roll_exp_small(double d)
 {
@@ -384,13 +397,13 @@ static inline void rsi_roll_shape_segment(const double *restrict e, double *rest
 {
   if (se)
     for (int j = lo; j < hi; ++j) {
-      const double v = e[j] * s, ev = v > 1e-290 ? v : 0.0;
+      const double ev = roll_decay_clear(e[j] * s);
       se[j] = scale * ev;
       sr[j - 1] += ev * mS;
     }
   else
     for (int j = lo; j < hi; ++j) {
-      const double v = e[j] * s, ev = v > 1e-290 ? v : 0.0;
+      const double ev = roll_decay_clear(e[j] * s);
       sr[j - 1] += ev * mS;
     }
 }

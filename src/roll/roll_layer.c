@@ -28,12 +28,10 @@ rs_status rsi_roll_add_one(rs_roll *roll, double T0)
   double *restrict e = roll->dsr, *restrict se = roll->ref.shape_e, *restrict sr = roll->sigma_r;
   roll_segments seg;
   rsi_roll_decays_raw(roll->L, e, lo, bottom, &seg);
-  const double v_lo = e[lo] * seg.s[0], e_lo = v_lo > 1e-290 ? v_lo : 0.0;
+  const double e_lo = roll_decay_clear(e[lo] * seg.s[0]);
   double c2;
   const double c = rsi_roll_deep_scales(roll, lo, -S * e_lo / se[lo], &c2);
-  int finite = isfinite(c) && isfinite(c2) && seg.count == 4 &&
-               fabs(c) * roll->ref.shape_max < INFINITY &&
-               (c2 == 0.0 || fabs(c2) * roll->ref.shape_max * roll->prof.max < INFINITY);
+  int finite = isfinite(c) && isfinite(c2) && seg.count == 4 && roll_deep_bounded(roll, c, c2);
   for (int g = 0; finite && g < seg.count; ++g) finite = seg.M[g] * seg.s[g] * S < INFINITY;
   if (!finite) { /* the two-step path: its check names the node */
     rsi_roll_block_increment(roll, k_old, 1, &T0, NULL);
