@@ -35,7 +35,7 @@ void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, i
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
    * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
-   * operations, not five) and the pass that follows at the sums, as it always did. The flag
+   * operations, not five) and the pass that follows at the sums. The flag
    * is a compare mask as wide as a double, so that the OR stays in the vector registers */
   int64_t bad = 0;
   for (int j = lo; j < top; ++j) {

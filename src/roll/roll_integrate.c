@@ -24,7 +24,7 @@ static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
 /* (w, L) inside the step [a, b] by the quintic Hermite interpolant of the values and first
  * two derivatives at its ends (error h^6 y^(6) / 46080 at most: far below the step's own
  * local error, of order h^6 y^(6) / 6 for BDF5), instead of asking CVODE for its
- * interpolant node by node (CVodeGetDky was a tenth of the engine's time). The quintic is
+ * interpolant node by node (CVodeGetDky would cost a tenth of the engine's time). The quintic is
  * kept as its monomial coefficients in s = (x - a)/h, so a node costs two Horner sums. */
 typedef struct roll_quintic {
   double a, inv_h, cw[6], cL[6];
@@ -138,7 +138,7 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
  *     e_L(b) = e_L(a) + e_w(a) h (1 - e^-A)/A + (8/15) h d_L(1/2) + m h (1 - e^-A/2)/A.
  * Measured against integrations at rtol 1e-11 (a standalone CVODE run and the reels of
  * docs/roll-model.md), this estimate is the global error of L to 0.02 - 0.3 %, for BDF and
- * Adams alike: CVODE's own local error estimates, which the correction used before, account
+ * Adams alike: CVODE's own local error estimates account
  * for a third to two thirds of it (steps of a fifth of the depth put the higher terms of the
  * local error at the order of the leading one they estimate). Inside the step the
  * estimate is the quintic Hermite of (e_L, e_w) with their own first two derivatives at the
@@ -187,9 +187,9 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
    * defect's w part exceeds the step's own change of w (measured on that web: A >= 11 and
    * |m| >= 5 |dw| in every such step). A large defect in a step that is neither is an
    * error (a step CVODE accepted past its tolerance, where the modulus' curvature changes
-   * inside it): corrected, whatever rtol is. Dropping those too made the error of a very
-   * soft web (Pfeiffer K1 = 50 Pa) grow as rtol tightened, the step's defect crossing 100
-   * tolerances at rtol 1e-4 (docs/roll-model.md, "A very soft web"). */
+   * inside it): corrected, whatever rtol is; dropping those too would make the error of a
+   * very soft web (Pfeiffer K1 = 50 Pa) grow as rtol tightens, the step's defect crossing
+   * 100 tolerances at rtol 1e-4 (docs/roll-model.md, "A very soft web"). */
   double m = 8.0 / 15.0 * h * dw, dLs = 8.0 / 15.0 * h * dL;
   const double tw = roll->p.rtol * fabs(jb->w) + roll->p.atol;
   const double tL = roll->p.rtol * fabs(jb->L) + roll->p.atol;

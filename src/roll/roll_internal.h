@@ -1,7 +1,8 @@
 /* The roll engine's private state and the interface between its parts (src/roll):
  *   roll.c            the roll: parameters, create/destroy, rs_roll_add_layers, queries
- *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
- *                     Jacobian, error weights, the modulus an increment sees
+ *   roll_ode.c        the ODE workspace: CVODE, the increment ODE (g^2(x) between the
+ *                     nodes, right-hand side, Jacobian, error weights), the modulus an
+ *                     increment sees
  *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
  *                     interpolation inside each step, the integration's error corrected)
  *   roll_reference.c  the reference solution: where an integration may start, its books,
@@ -12,8 +13,10 @@
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
  *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
- *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
+ *   vector2.c         CVODE's vector operations and the exact corrector for the 2-component
+ *                     state
  *   roll_corrector.c  which corrector CVODE gets: the exact one after its self-test passed
+ *   roll_check.c      the components' invariants, checked
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
 #define REELSIM_ROLL_INTERNAL_H

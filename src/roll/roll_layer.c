@@ -1,7 +1,7 @@
 /* One layer's increment, built and committed in one pass over the nodes above a reused
  * start (the common case of a long roll: every increment but the references', load
  * beneath the layer). The same operations as rsi_roll_block_increment followed by rsi_roll_commit,
- * node for node, so the same numbers bit for bit; what they did in five passes over the
+ * node for node, so the same numbers bit for bit; what they do in five passes over the
  * nodes (the decays' scaling, the shape's update, ds = -S e, the finiteness check, the
  * commit) is one here. An increment is checked before anything is written: the largest
  * decay of each segment bounds |ds| there, and where that bound is not finite (or c_deep

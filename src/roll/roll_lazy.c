@@ -20,7 +20,7 @@
 #include "roll/roll_internal.h"
 
 /* sr[j - 1] += e_j (c + c2 p_L,j) for the nodes [lo, hi), lo >= 1 (c e_j alone where c2 is
- * 0, as an uncorrected deep part always was): arrays passed as such, so that it vectorises */
+ * 0: an uncorrected deep part): arrays passed as such, so that it vectorises */
 static void roll_shape_add_n(double *restrict sr, const double *restrict e,
                              const double *restrict pL, int lo, int hi, double c, double c2)
 {

@@ -364,7 +364,7 @@ int rsi_roll_ode_create(rs_roll *roll)
   /* CVODE keeps its step (and its order) while the step it could take is within a band of
    * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
    * test. Near the surface, where every step must be ~10 % shorter than the last, one step
-   * in five failed. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
+   * in five would fail. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
    * on the way up from a restart in the smooth interior, where a partial integration starts
    * (docs/performance.md has the measurements). */
   if (CVodeSetEtaFixedStepBounds(o->cvode, 0.8, 1.05) != CV_SUCCESS) return -1;

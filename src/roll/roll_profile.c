@@ -132,7 +132,7 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
  *     p_L(j+1) = p_L(j) + h phi_0 p_w(j) + h^2 (beta_0 psi_0 + a_1 psi_1 + a_2 psi_2),
  * beta(s) = beta_0 + a_1 s/h + a_2 (s/h)^2, p_L the exact integral of that p_w. Near the
  * surface, where P and so ln g^2 change by tens of per cent over a layer, a forcing linear
- * between the nodes was 2 % off. Each layer's coefficients in a pass that vectorises (the
+ * between the nodes would be 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
 int rsi_roll_profile_build(rs_roll *roll, int from, int top)

@@ -86,9 +86,10 @@ int rsi_roll_reuse_start(rs_roll *roll, double *C)
    * for the drift for good and the drift restarts from 0 there, so what the correction
    * leaves, second order, stays: the node is found with the second-order bound at a
    * hundredth of the tolerance, and after RS_REF_DEEP_MAX (4) such references one is
-   * from the core, so that the remainders left add up to at most 4 % of it (measured:
-   * at a quarter of the tolerance the 1500-layer newsprint roll's core pressure error
-   * grew from 4.0e-6 to 1.5e-5 at rtol 1e-5, at a hundredth 4.4e-6; test_roll_profile).
+   * from the core, so that the remainders left add up to at most 4 % of it (at a quarter
+   * of the tolerance the 1500-layer newsprint roll's core pressure error at rtol 1e-5 is
+   * 1.5e-5, at a hundredth 4.4e-6, against 4.0e-6 with every reference from the core;
+   * test_roll_profile).
    * And no higher than the last such reference's node: every such reference starts from
    * values the last one from the core left (rebased), not from those of a chain of
    * restarts, each of which adds CVODE's start-up error at its node (measured on

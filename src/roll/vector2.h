@@ -7,7 +7,7 @@
 #include <sundials/sundials_nonlinearsolver.h>
 
 /* Replaces, in the ops table of v (a serial vector of length 2), the operations CVODE's
- * BDF/Newton step calls most with straight-line 2-component versions. Vectors CVODE
+ * BDF step calls most with straight-line 2-component versions. Vectors CVODE
  * clones from v inherit them. Returns 0, or -1 if v is not a serial vector of length 2. */
 int rsi_roll_vector2_specialise(N_Vector v);
 
