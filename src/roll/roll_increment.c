@@ -185,6 +185,7 @@ void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0,
   const double e_bound = roll_decays(roll->L, dsr, lo, bottom);
   if (j0 == 0) { /* a reference's increment: its shape, and its profile for the drift to come */
     rsi_roll_shape_reference(roll, dsr, bottom, e_bound);
+    if (roll->prof.on && !mean) rsi_roll_wstep_store(roll, bottom); /* the profile reads w */
     rsi_roll_profile_reference(roll, bottom, S, mean != NULL);
   }
   roll->deep_lo = lo;

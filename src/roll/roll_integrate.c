@@ -338,6 +338,20 @@ static void roll_count(rs_roll *roll, long steps)
   roll->stats.rhs_evals += nfe;
 }
 
+/* The start node's (w, L) back to the reference's once the increment corrected there is
+ * built and committed (st RS_OK) or has failed (rsi_roll_start_restore). A reference from a
+ * node above the core (rsi_roll_reuse_start) that was committed becomes the reference: its
+ * profile continued from that node (rsi_roll_reference_extend), which reads w at every
+ * node. */
+void rsi_roll_start_release(rs_roll *roll, rs_status st)
+{
+  if (roll->ref.from > 0 && st == RS_OK) {
+    rsi_roll_wstep_store(roll, roll->ref.top);
+    rsi_roll_reference_extend(roll);
+  }
+  rsi_roll_start_restore(roll);
+}
+
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
  * rsi_roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
  * keeping the reference's values below it (roll_reference.c keeps the reference's books).

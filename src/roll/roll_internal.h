@@ -319,7 +319,6 @@ double rsi_roll_g2_probe(rs_roll *roll, double x);
 void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi);
 double rsi_roll_layer_coord_at(rs_roll *roll, double x);
 int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
-int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user);
 int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status rsi_roll_set_modulus(rs_roll *roll, int k);
@@ -355,6 +354,7 @@ double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch);
 /* roll_integrate.c */
 rs_status rsi_roll_integrate(rs_roll *roll, int k);
 void rsi_roll_wstep_store(rs_roll *roll, int hi);
+void rsi_roll_start_release(rs_roll *roll, rs_status st);
 
 
 /* roll_increment.c */
@@ -382,7 +382,7 @@ void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);
 void rsi_roll_reference_restored(rs_roll *roll);
 void rsi_roll_start_set(rs_roll *roll, int first, double C);
-void rsi_roll_start_release(rs_roll *roll, rs_status st);
+void rsi_roll_start_restore(rs_roll *roll);
 void rsi_roll_shape_reference(rs_roll *roll, const double *e, int bottom, double e_bound);
 void rsi_roll_shape_follow(rs_roll *roll, const double *e, int lo, int bottom, double e_bound);
 void rsi_roll_shape_followed(rs_roll *roll, int bottom, double scale, const roll_segments *seg);

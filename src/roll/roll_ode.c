@@ -1,7 +1,9 @@
 /* The increment ODE of the roll engine (docs/roll-model.md): in x = ln r,
  *     w' = g^2 - 1 - 2 w - w^2,   L' = w,     g^2(x) = E_theta / E_r(P(x)),
  * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
- * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
+ * before the increment. The right-hand side and CVODE's error weights (the exact Jacobian,
+ * which only CVODE's own Newton iteration needs, is the fallback corrector's:
+ * roll_corrector.c). */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -172,18 +174,6 @@ int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
   f[0] = g2 - 1.0 - 2.0 * w - w * w;
   f[1] = w;
   return isfinite(f[0]) ? 0 : 1; /* recoverable: CVODE retries with a smaller step */
-}
-
-/* J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
-int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user)
-{
-  (void)x;
-  (void)user;
-  J[0][0] = -(2.0 + 2.0 * y[0]);
-  J[0][1] = 0.0;
-  J[1][0] = 1.0;
-  J[1][1] = 0.0;
-  return 0;
 }
 
 /* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in

@@ -234,13 +234,12 @@ void rsi_roll_profile_clip(rs_roll *roll, int top)
 /* A reference's increment (an integration from the core, its shape just kept, the
  * increment below its block -S times it): its profile built for the drift to come, in use
  * once the increment is committed (rsi_roll_profile_commit); not for a lumped block's
- * predictor */
+ * predictor. w stored up to node bottom: the caller (rsi_roll_block_increment). */
 void rsi_roll_profile_reference(rs_roll *roll, int bottom, double S, int block)
 {
   roll->prof.top = -1;
   roll->prof.next = -1;
   if (roll->prof.on && !block) {
-    rsi_roll_wstep_store(roll, bottom);
     roll->prof.next = rsi_roll_profile_build(roll, 0, bottom);
     roll->prof.c_next = -S;
   }

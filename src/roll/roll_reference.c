@@ -231,15 +231,10 @@ void rsi_roll_start_set(rs_roll *roll, int first, double C)
 }
 
 /* The start node's (w, L) back to the reference's once the increment corrected there is
- * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
- * A reference from a node above the core (rsi_roll_reuse_start) that was committed becomes
- * the reference: its profile continued from that node (rsi_roll_reference_extend). */
-void rsi_roll_start_release(rs_roll *roll, rs_status st)
+ * built and committed or has failed (rsi_roll_start_release): a later start there is
+ * corrected afresh; no reference is being rebased any more */
+void rsi_roll_start_restore(rs_roll *roll)
 {
-  if (roll->ref.from > 0 && st == RS_OK) {
-    rsi_roll_wstep_store(roll, roll->ref.top); /* the profile reads w at every node */
-    rsi_roll_reference_extend(roll);
-  }
   roll->ref.from = -1;
   if (roll->ref.start_C == 0.0) return;
   roll->w[roll->ref.start] = roll->ref.start_ref[0];
