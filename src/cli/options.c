@@ -170,8 +170,8 @@ const cli_command cli_commands[] = {
      "Pareto front",
      "Winds SCENE at many numerical settings and shows what accuracy costs in time\n"
      "(docs/accuracy.md). First a reference with every knob at its tightest (rtol 1e-9,\n"
-     "1 layer per step; with a nip: solved at every layer, 96 contact nodes, 512 series\n"
-     "terms) and a tighter second one (rtol 1e-10, 128 nodes, 1024 terms) that measures how\n"
+     "1 layer per step; with a nip: solved at every layer, 128 contact nodes, 512 series\n"
+     "terms) and a tighter second one (rtol 1e-10, 160 nodes, 1024 terms) that measures how\n"
      "far the reference has converged; then the shipped defaults; then one knob at a time\n"
      "(numerics.rtol, numerics.layers_per_step, nip.nodes, nip.terms, nip.T0_rtol,\n"
      "nip.update_every, output.history_every; knobs the scene does not use are skipped)\n"
