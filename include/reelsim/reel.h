@@ -14,7 +14,7 @@ RS_BEGIN_DECLS
 typedef struct rs_reel_result rs_reel_result;
 
 /* The lanes' record of a result wound with lanes (docs/lanes.md), opaque: read it with
- * rs_lanes_result_array and rs_lanes_summarize below. */
+ * the rs_lanes_result_<field> accessors and rs_lanes_summarize below. */
 typedef struct rs_lanes_result rs_lanes_result;
 
 /* Optional observer: called after each increment with the layers wound so far.
@@ -65,14 +65,34 @@ typedef struct rs_lanes_summary {
 } rs_lanes_summary;
 /* 0 for a result without lanes (sum->count 0), else 1. */
 int rs_lanes_summarize(const rs_reel_result *res, double pressure_limit, rs_lanes_summary *sum);
-/* The lanes' array `name` by name, for a foreign-function interface: per lane ("x",
- * "width", "caliper", "core_pressure", "outer_radius": *rows = lanes, *cols = 0), per layer
- * ("strain": *rows = layers, *cols = 0), layers x lanes row-major ("wound_on_tension",
- * "web_tension", "nip_load", "final/sigma_r", "final/sigma_theta", "final/radius"; *rows =
- * layers, *cols = lanes). NULL (and 0, 0) for a result without lanes, an unknown name or
- * nip_load without a nip. Owned by the result. */
-const double *rs_lanes_result_array(const rs_reel_result *res, const char *name, int *rows,
-                                    int *cols);
+/* The lanes' record, one accessor per array, named after it (src/reel/lanes_access.c; the
+ * run file's /lanes/<name>, final_* its /lanes/final/<name>), the one way to read it from C
+ * and from a foreign-function interface alike:
+ *   const T *rs_lanes_result_<field>(const rs_reel_result *res, int *rows, int *cols)
+ * the array (owned by the result, valid until it is destroyed) with *rows x *cols values,
+ * row-major: per lane, *rows = lanes and *cols = 0; per layer, *rows = layers and *cols =
+ * 0; layers x lanes, *rows = layers and *cols = lanes (row k = layer k). rows and cols may
+ * be NULL. NULL and 0, 0 for NULL, a result without lanes, or nip_load without a nip. */
+int rs_lanes_result_count(const rs_reel_result *res); /* lanes; 0 without */
+const double *rs_lanes_result_x(const rs_reel_result *res, int *rows, int *cols);       /* m, centres */
+const double *rs_lanes_result_width(const rs_reel_result *res, int *rows, int *cols);   /* m */
+const double *rs_lanes_result_caliper(const rs_reel_result *res, int *rows, int *cols); /* m */
+const double *rs_lanes_result_core_pressure(const rs_reel_result *res, int *rows, int *cols); /* Pa */
+/* m, each lane's deformed outer radius at the end (the diameter profile a gauge reads) */
+const double *rs_lanes_result_outer_radius(const rs_reel_result *res, int *rows, int *cols);
+/* per layer: the web's mean machine-direction strain e */
+const double *rs_lanes_result_strain(const rs_reel_result *res, int *rows, int *cols);
+/* layers x lanes: N/m, T_i plus the lane's nip-induced part; T_i, the web's share (0:
+ * slack); 1 where the lane went on slack; N/m, the lane's nip load */
+const double *rs_lanes_result_wound_on_tension(const rs_reel_result *res, int *rows, int *cols);
+const double *rs_lanes_result_web_tension(const rs_reel_result *res, int *rows, int *cols);
+const unsigned char *rs_lanes_result_slack(const rs_reel_result *res, int *rows, int *cols);
+const double *rs_lanes_result_nip_load(const rs_reel_result *res, int *rows, int *cols);
+/* layers x lanes, the final state: Pa (compression negative); m, each layer's deformed
+ * outer radius */
+const double *rs_lanes_result_final_sigma_r(const rs_reel_result *res, int *rows, int *cols);
+const double *rs_lanes_result_final_sigma_theta(const rs_reel_result *res, int *rows, int *cols);
+const double *rs_lanes_result_final_radius(const rs_reel_result *res, int *rows, int *cols);
 
 /* Summary figures a user reads first. */
 typedef struct rs_reel_summary {

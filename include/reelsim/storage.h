@@ -70,12 +70,19 @@ typedef struct rs_storage_summary {
 } rs_storage_summary;
 void rs_storage_summarize(const rs_storage_result *res, rs_storage_summary *sum);
 
-/* By name, for a foreign-function interface (Python's ctypes) that does not mirror the
- * structs (storage/access.c). rs_storage_result_array: "hours", "temperature",
- * "humidity", "core_pressure" (S values) or "sigma_r", "sigma_theta" (S x N, row-major);
- * NULL and *n = 0 for another name. rs_storage_result_defects: stage s's defect report. */
-int rs_storage_result_stages(const rs_storage_result *res);
-const double *rs_storage_result_array(const rs_storage_result *res, const char *name, int *n);
+/* One accessor per field, named after it (storage/access.c), as the reel result's: what a
+ * foreign-function interface (Python's ctypes) calls instead of mirroring the struct. Each
+ * accepts NULL (0, or NULL and *n = 0). An array is owned by the result; its length goes to
+ * *n (n may be NULL): S values, or S x N row-major (row s = stage s) for the stresses.
+ * rs_storage_result_defects: stage s's defect report (NULL outside 0 .. S-1). */
+int rs_storage_result_stages(const rs_storage_result *res);   /* S */
+int rs_storage_result_n_layers(const rs_storage_result *res); /* N */
+const double *rs_storage_result_hours(const rs_storage_result *res, int *n);         /* h, cumulative */
+const double *rs_storage_result_temperature(const rs_storage_result *res, int *n);   /* C */
+const double *rs_storage_result_humidity(const rs_storage_result *res, int *n);      /* % RH */
+const double *rs_storage_result_core_pressure(const rs_storage_result *res, int *n); /* Pa */
+const double *rs_storage_result_sigma_r(const rs_storage_result *res, int *n);     /* Pa, S x N */
+const double *rs_storage_result_sigma_theta(const rs_storage_result *res, int *n); /* Pa, S x N */
 const rs_defect_report *rs_storage_result_defects(const rs_storage_result *res, int s);
 /* rs_defects_assess with the problem's limits (rs_defect_limits_from_problem). */
 rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result *res,

@@ -48,8 +48,9 @@ class Sweep:
     parameters  the K keys varied
     values      R x K: each run's values (a word-valued key: the index of its word)
     words       {key: [words]} for the word-valued keys
-    figures     {name: R values}: core_pressure, ..., status, and with storage stages
-                storage_core_pressure, ... (NaN where a run failed)
+    figures     {name: R values}: core_pressure, ..., status, with storage stages
+                storage_core_pressure, ..., with lanes ridge_height, max_lane_pressure,
+                slack_lanes (NaN where a run failed)
     profiles    per run (with --profiles) {"radius", "sigma_r", "sigma_theta"}, else []
     scene_file  the scene swept
     """

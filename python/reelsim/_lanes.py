@@ -1,5 +1,6 @@
 """Result.lanes: the lanes across the width (docs/lanes.md) as numpy arrays, from a run in
-this process (rs_lanes_result_array) or from a run file's /lanes (the library's reader).
+this process (the rs_lanes_result_<field> accessors, reel.h) or from a run file's /lanes
+(the library's reader).
 
 A dict: per lane "x", "width", "caliper" (m), "core_pressure" (Pa), "outer_radius" (m);
 per layer "strain"; layers x lanes (row k = layer k) "wound_on_tension", "web_tension",
@@ -12,16 +13,18 @@ import numpy as np
 
 from . import _lib
 
-_array = _lib._fn("rs_lanes_result_array", _c.POINTER(_c.c_double), _c.c_void_p, _c.c_char_p,
-                  _c.POINTER(_c.c_int), _c.POINTER(_c.c_int))
-
-# (Result.lanes key, the C name and the file's /lanes dataset)
+# (Result.lanes key, which is also the C accessor's rs_lanes_result_<key>, and the file's
+# /lanes dataset)
 _NAMES = (("x", "x"), ("width", "width"), ("caliper", "caliper"),
           ("core_pressure", "core_pressure"), ("outer_radius", "outer_radius"),
           ("strain", "strain"), ("wound_on_tension", "wound_on_tension"),
           ("web_tension", "web_tension"), ("nip_load", "nip_load"),
           ("final_sigma_r", "final/sigma_r"), ("final_sigma_theta", "final/sigma_theta"),
           ("final_radius", "final/radius"))
+
+# const double *rs_lanes_result_<key>(res, &rows, &cols)
+_array = {key: _lib._fn("rs_lanes_result_" + key, _c.POINTER(_c.c_double), _c.c_void_p,
+                        _c.POINTER(_c.c_int), _c.POINTER(_c.c_int)) for key, _ in _NAMES}
 
 
 def _finish(d):
@@ -33,9 +36,9 @@ def _finish(d):
 def of_result(res):
     """The lanes of a C result (a ctypes pointer), None without lanes."""
     d = {}
-    for key, name in _NAMES:
+    for key, _ in _NAMES:
         rows, cols = _c.c_int(0), _c.c_int(0)
-        p = _array(res, name.encode(), _c.byref(rows), _c.byref(cols))
+        p = _array[key](res, _c.byref(rows), _c.byref(cols))
         if not p:
             continue
         n = rows.value * (cols.value or 1)

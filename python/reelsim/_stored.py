@@ -17,7 +17,10 @@ _storage_requested = _lib._fn("rs_storage_requested", _c.c_int, _VP)
 _storage_run = _lib._fn("rs_storage_run", _c.c_int, _VP, _VP, _c.POINTER(_VP))
 _storage_destroy = _lib._fn("rs_storage_result_destroy", None, _c.POINTER(_VP))
 _storage_stages = _lib._fn("rs_storage_result_stages", _c.c_int, _VP)
-_storage_array = _lib._fn("rs_storage_result_array", _DP, _VP, _c.c_char_p, _c.POINTER(_c.c_int))
+# const double *rs_storage_result_<field>(sr, &n), one accessor per array (storage.h)
+_storage_array = {k: _lib._fn("rs_storage_result_" + k, _DP, _VP, _c.POINTER(_c.c_int))
+                  for k in ("hours", "temperature", "humidity", "core_pressure", "sigma_r",
+                            "sigma_theta")}
 _storage_defects = _lib._fn("rs_storage_result_defects", _VP, _VP, _c.c_int)
 _defect_destroy = _lib._fn("rs_defect_report_destroy", None, _c.POINTER(_VP))
 _scene_problem = _lib._fn("rs_scene_problem", _VP, _VP)
@@ -128,7 +131,7 @@ def _storage_of(sr, n_layers):
     n = _c.c_int(0)
 
     def arr(name, two_d=False):
-        p = _storage_array(sr, name.encode(), _c.byref(n))
+        p = _storage_array[name](sr, _c.byref(n))
         return _copy(p, n.value, (S, n_layers) if two_d else None)
 
     return Storage(hours=arr("hours"), temperature=arr("temperature"), humidity=arr("humidity"),

@@ -42,6 +42,10 @@ void cli_fmt_stress(char *buf, size_t size, double pa);
 void cli_print_defects(FILE *out, const rs_defect_report *rep);
 /* The lanes' block and defect lines (nothing without lanes; lanes_print.c) */
 void cli_print_lanes(FILE *out, const rs_scene *scene, const rs_reel_result *res);
+/* compare's table of the lanes' figures (ridge_height, max_lane_pressure, slack_lanes; "-"
+ * for a run without lanes or that failed): nothing when no run has lanes (lanes_print.c). */
+void cli_print_compare_lanes(FILE *out, int n, const char (*names)[256],
+                             const rs_scene *const *scenes, const rs_reel_job *jobs);
 /* The storage stages and the stage where each defect rule reads worst (summary_storage.c). */
 void cli_print_storage(FILE *out, const rs_storage_result *sr);
 /* compare's table of its runs after storage (summary_storage.c): nothing when no run has

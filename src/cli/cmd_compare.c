@@ -110,6 +110,8 @@ static void print_table(const compare_state *c, double wall, int threads)
            rs_defect_verdict_name(d->pressure.verdict), rs_defect_verdict_name(d->slip.verdict),
            rs_defect_verdict_name(d->core.verdict));
   }
+  cli_print_compare_lanes(stdout, c->n, (const char(*)[256])c->names,
+                          (const rs_scene *const *)c->scenes, c->jobs);
   cli_print_compare_storage(stdout, c->n, (const char(*)[256])c->names,
                             (const rs_storage_result *const *)c->storage);
   printf("\nwall time %.2f s in all\n", wall);

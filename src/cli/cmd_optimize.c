@@ -255,9 +255,9 @@ static void print_head(const opt_problem *p)
   printf("\n");
 }
 
-/* Before any winding: the scene as given, then every key at LO and HI; a storage figure
- * asked of a scene without storage stages (never met) is refused. Returns -1 when all is
- * well, else the exit code. */
+/* Before any winding: the scene as given, then every key at LO and HI; a figure the scene
+ * does not have (a storage figure without storage stages, a lanes' figure without lanes:
+ * never met) is refused. Returns -1 when all is well, else the exit code. */
 static int check_before(const cli_args *a, const opt_cli *c, const opt_problem *p)
 {
   int code = -1;
@@ -267,15 +267,15 @@ static int check_before(const cli_args *a, const opt_cli *c, const opt_problem *
   }
   if (code >= 0) return code;
   rs_scene *base = NULL;
-  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK &&
-      sweep_figure_count(rs_scene_problem(base)) == SWEEP_N_WIND_FIGURES) {
+  if (rs_scene_load(a->scene, a->n_sets, a->sets, &base) == RS_OK) {
     int q[64], nq = 0;
     q[nq++] = p->objective;
     for (int j = 0; j < p->n_cons && nq < 64; ++j) q[nq++] = p->cons[j].quantity;
-    for (int k = 0; k < nq && code < 0; ++k)
-      if (q[k] >= SWEEP_N_WIND_FIGURES && q[k] < SWEEP_N_FIGURES)
-        code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has no storage stages (docs/storage.md)",
-                        opt_figure_name(q[k]), a->scene);
+    for (int k = 0; k < nq && code < 0; ++k) {
+      const char *lacks = q[k] < SWEEP_N_FIGURES ? sweep_figure_lacks(rs_scene_problem(base), q[k]) : NULL;
+      if (lacks)
+        code = cli_fail(CLI_EXIT_USAGE, "optimize: %s: %s has %s", opt_figure_name(q[k]), a->scene, lacks);
+    }
   }
   app_error_clear();
   rs_scene_destroy(&base);
@@ -292,9 +292,7 @@ static void print_best(const opt_cli *c, const opt_problem *p, const opt_history
   for (int k = 0; k < p->n_vars; ++k) print_quantity(p, h, h->best, OPT_N_FIGURES + k);
   printf("figures:\n");
   for (int f = 0; f < OPT_N_FIGURES; ++f)
-    if (f != OPT_STATUS && (f != OPT_MISFIT || p->target) &&
-        (f < SWEEP_N_WIND_FIGURES || f >= SWEEP_N_FIGURES || h->storage))
-      print_quantity(p, h, h->best, f);
+    if (f != OPT_STATUS && opt_figure_recorded(p, h, f)) print_quantity(p, h, h->best, f);
   printf("wrote %s (the best scene) and %s (every run)\n", c->output, c->history);
 }
 

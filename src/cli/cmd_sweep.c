@@ -83,6 +83,26 @@ static int prepare(sweep_state *s, const cli_args *a)
   return CLI_EXIT_OK;
 }
 
+/* The figures a run of the scene has (sweep_figure_list: the storage_* ones with storage
+ * stages, the lanes' with lanes), in table order: their names and units, and their rows of
+ * the result copied into *rows (malloc'd, n_figures x runs). Returns the count, -1 when out
+ * of memory. */
+static int figures_kept(const sweep_state *s, const char **names, const char **units,
+                        const char **help, double **rows)
+{
+  int idx[SWEEP_N_FIGURES], nf = sweep_figure_list(rs_scene_problem(s->base), idx);
+  size_t n = (size_t)s->plan.n_runs, total = (size_t)nf * n;
+  *rows = malloc((total ? total : 1) * sizeof **rows);
+  if (!*rows) return -1;
+  for (int k = 0; k < nf; ++k) {
+    names[k] = sweep_figures[idx[k]].name;
+    units[k] = sweep_figures[idx[k]].unit;
+    help[k] = sweep_figures[idx[k]].help;
+    memcpy(*rows + (size_t)k * n, s->result.figures + (size_t)idx[k] * n, n * sizeof **rows);
+  }
+  return nf;
+}
+
 static int write_files(const sweep_state *s, const cli_args *a)
 {
   int n = s->plan.n_runs, nk = s->n_vary;
@@ -90,7 +110,9 @@ static int write_files(const sweep_state *s, const cli_args *a)
   int *n_words = calloc((size_t)nk, sizeof *n_words);
   const char *const **words = calloc((size_t)nk, sizeof *words);
   const char *names[SWEEP_N_FIGURES], *units[SWEEP_N_FIGURES], *help[SWEEP_N_FIGURES];
-  if (!keys || !n_words || !words) {
+  double *figures = NULL;
+  int n_figures = keys && n_words && words ? figures_kept(s, names, units, help, &figures) : -1;
+  if (n_figures < 0) {
     free(keys);
     free(n_words);
     free(words);
@@ -102,11 +124,6 @@ static int write_files(const sweep_state *s, const cli_args *a)
       n_words[k] = s->vary[k].n;
       words[k] = (const char *const *)s->vary[k].words;
     }
-  }
-  for (int f = 0; f < SWEEP_N_FIGURES; ++f) {
-    names[f] = sweep_figures[f].name;
-    units[f] = sweep_figures[f].unit;
-    help[f] = sweep_figures[f].help;
   }
   char sample[64];
   sweep_sample_name(&s->sample, sample, sizeof sample);
@@ -121,11 +138,11 @@ static int write_files(const sweep_state *s, const cli_args *a)
       .words = words,
       .n_runs = n,
       .values = s->plan.points,
-      .n_figures = sweep_figure_count(rs_scene_problem(s->base)),
+      .n_figures = n_figures,
       .figure_names = names,
       .figure_units = units,
       .figure_help = help,
-      .figures = s->result.figures,
+      .figures = figures,
       .profiles = s->result.profiles,
   };
   int code = CLI_EXIT_OK;
@@ -135,6 +152,7 @@ static int write_files(const sweep_state *s, const cli_args *a)
   free(keys);
   free(n_words);
   free(words);
+  free(figures);
   return code;
 }
 

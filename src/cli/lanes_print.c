@@ -17,9 +17,8 @@ void cli_print_lanes(FILE *out, const rs_scene *scene, const rs_reel_result *res
   rs_lanes_summary s;
   char a[64];
   if (!lanes_summary(scene, res, &s)) return;
-  int nl = 0, cols = 0;
-  const double *x = rs_lanes_result_array(res, "x", &nl, &cols);
-  const double *w = rs_lanes_result_array(res, "width", &nl, &cols);
+  const double *x = rs_lanes_result_x(res, NULL, NULL);
+  const double *w = rs_lanes_result_width(res, NULL, NULL);
   const double t = rs_scene_problem(scene)->material.caliper;
   fprintf(out, "lanes (%d across %.4g m; docs/lanes.md):\n", s.count,
           x[s.count - 1] + 0.5 * w[s.count - 1] - (x[0] - 0.5 * w[0]));
@@ -52,8 +51,7 @@ void cli_json_lanes(cli_json *j, const rs_scene *scene, const rs_reel_result *re
     cli_json_null(j, "lanes");
     return;
   }
-  int nl = 0, cols = 0;
-  const double *x = rs_lanes_result_array(res, "x", &nl, &cols);
+  const double *x = rs_lanes_result_x(res, NULL, NULL);
   cli_json_object(j, "lanes");
   cli_json_int(j, "count", s.count);
   cli_json_number(j, "ridge_height", s.ridge_height);
@@ -62,6 +60,8 @@ void cli_json_lanes(cli_json *j, const rs_scene *scene, const rs_reel_result *re
   cli_json_number(j, "x", s.hardest_x);
   cli_json_number(j, "peak_pressure", s.hardest_pressure);
   cli_json_end(j);
+  cli_json_number(j, "max_lane_pressure", s.hardest_pressure);
+  cli_json_int(j, "slack_lanes", s.slack_lanes);
   cli_json_number(j, "tension_min", s.tension_min);
   cli_json_number(j, "tension_max", s.tension_max);
   cli_json_int(j, "hard_lanes", s.hard_lanes);
@@ -76,4 +76,25 @@ void cli_json_lanes(cli_json *j, const rs_scene *scene, const rs_reel_result *re
     }
   cli_json_end(j);
   cli_json_end(j);
+}
+
+void cli_print_compare_lanes(FILE *out, int n, const char (*names)[256],
+                             const rs_scene *const *scenes, const rs_reel_job *jobs)
+{
+  rs_lanes_summary s;
+  int any = 0;
+  for (int i = 0; i < n; ++i)
+    any |= jobs[i].status == RS_OK && lanes_summary(scenes[i], jobs[i].result, &s);
+  if (!any) return;
+  fprintf(out, "\n%-24s %6s %12s %17s %11s\n", "lanes", "count", "ridge height",
+          "max lane pressure", "slack lanes");
+  fprintf(out, "%-24s %6s %12s %17s %11s\n", "", "", "mm", "kPa", "");
+  for (int i = 0; i < n; ++i) {
+    if (jobs[i].status != RS_OK || !lanes_summary(scenes[i], jobs[i].result, &s)) {
+      fprintf(out, "%-24s -\n", names[i]);
+      continue;
+    }
+    fprintf(out, "%-24s %6d %12.3f %17.2f %11d\n", names[i], s.count, s.ridge_height * 1e3,
+            s.hardest_pressure / 1e3, s.slack_lanes);
+  }
 }

@@ -1,6 +1,7 @@
 /* rs_output_write_compare: several runs in one file. Each run gets exactly the layout of a
  * run file (rs_h5_write_run) under /runs/<name>, and /summary holds one entry per run in
  * parallel 1-D datasets, which h5dump, h5py and MATLAB all read without compound types. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -96,6 +97,34 @@ static rs_status write_storage_summary(hid_t g, const compare_ctx *c, double *co
   return st;
 }
 
+/* The lanes' figures (rs_lanes_summarize, as sweep's and optimize's: ridge_height,
+ * max_lane_pressure, slack_lanes), when any run has lanes; NaN for a run without. col: room
+ * for 3 x n doubles. */
+static rs_status write_lanes_summary(hid_t g, const compare_ctx *c, double *col)
+{
+  static const struct {
+    const char *name, *units, *description;
+  } lfig[3] = {
+      {"ridge_height", "m", "max - min of the lanes' final outer radii (docs/lanes.md)"},
+      {"max_lane_pressure", "Pa", "the hardest lane's peak pressure, core or -sigma_r"},
+      {"slack_lanes", "", "lanes that went slack while winding"},
+  };
+  size_t n = (size_t)c->n;
+  int any = 0;
+  for (size_t i = 0; i < n; ++i) {
+    rs_lanes_summary s;
+    const rs_problem *p = rs_scene_problem(c->runs[i].scene);
+    int has = rs_lanes_summarize(c->runs[i].result, p->material.pressure_limit, &s);
+    double v[3] = {s.ridge_height, s.hardest_pressure, s.slack_lanes};
+    for (int f = 0; f < 3; ++f) col[f * n + i] = has ? v[f] : NAN;
+    any |= has;
+  }
+  rs_status st = RS_OK;
+  for (int f = 0; any && st == RS_OK && f < 3; ++f)
+    st = rs_h5_write_1d(g, lfig[f].name, col + f * n, n, lfig[f].units, lfig[f].description);
+  return st;
+}
+
 static rs_status write_summary(hid_t file, const compare_ctx *c)
 {
   size_t n = (size_t)c->n;
@@ -131,6 +160,7 @@ static rs_status write_summary(hid_t file, const compare_ctx *c)
     st = rs_h5_write_1d(g, figures[f].name, col + f * n, n, figures[f].units,
                         figures[f].description);
   if (st == RS_OK) st = write_storage_summary(g, c, col);
+  if (st == RS_OK) st = write_lanes_summary(g, c, col);
 done:
   if (g >= 0) H5Gclose(g);
   free(col);

@@ -33,6 +33,9 @@ static const struct {
     {"slip_margin", "least interlayer slip margin", 1},
     {"buckling_layers", "layers at hoop-buckling risk (older files)", 1},
     {"wall_seconds", "wall time of the run (s)", 1},
+    {"ridge_height", "ridge height across the lanes (mm)", 1e3},
+    {"max_lane_pressure", "the hardest lane's peak pressure (kPa)", 1e-3},
+    {"slack_lanes", "lanes that went slack", 1},
 };
 
 typedef struct sweep_data {

@@ -10,7 +10,9 @@
  *              when due (it may wind a stretch again: step.rewind)
  *     per layer j:
  *       place    where the layer goes on (an effect's `place`, else the roll's radii)
- *       tension  the recipes: Ti(r), the nip load w(r); T0 = Ti
+ *       tension  the tension phase: the web tension Ti and the nip load w of the layer
+ *                (the recipes Ti(r), w(r); a driver's `web` effect, e.g. a lane's share
+ *                of the web's tension and of the roller's load); T0 = Ti
  *       effects  each effect's `tension` (the air film, which may end the reel; the nip's T0,
  *                which may ask to solve first: step.again), then the check T0 >= 0, then
  *                each effect's `wound` (the air's records, the centrifugal part of the load)
@@ -88,6 +90,12 @@ typedef struct rs_reel_effect_ops {
   void (*rewind)(rs_reel_effect *e, const rs_reel_state *s, int layers);
   /* after the loop, the roll's state copied into s->res; st: the run's status so far */
   rs_status (*collect)(rs_reel_effect *e, const rs_reel_state *s, rs_status st);
+  /* the tension phase (one effect at most has them, a driver's: the lanes' coupling): the
+   * web tension (N/m) of a layer whose outer radius is r, and the nip load (N/m) at radius
+   * r; both read by the loop and by the nip effect when it solves (rs_reel_web_tension,
+   * rs_reel_nip_load). Without them, the problem's recipes. */
+  double (*web_tension)(const rs_reel_effect *e, const rs_reel_state *s, double r);
+  double (*nip_load)(const rs_reel_effect *e, const rs_reel_state *s, double r);
   /* after every collect */
   rs_status (*finish)(rs_reel_effect *e, const rs_reel_state *s, rs_status st);
   /* frees e->content (also after a failed setup) */
@@ -113,6 +121,7 @@ struct rs_reel_state {
   int n_effects;
   rs_reel_effect effects[RS_REEL_MAX_EFFECTS];
   const rs_reel_effect *placer; /* the effect with `place`, or NULL */
+  const rs_reel_effect *web;    /* the effect with `web_tension` and `nip_load`, or NULL */
 };
 
 /* Where layer L->j goes on: the placing effect's radii (the air films), else the roll's. */
@@ -126,9 +135,27 @@ static inline void rs_reel_place(const rs_reel_state *s, rs_reel_layer *L)
   L->r = rs_roll_layer_radius(s->roll, L->j);
 }
 
+/* The tension phase: the web tension of a layer whose outer radius is r (the web effect's,
+ * else the tension recipe at r) and the nip load at radius r (the web effect's, else the
+ * load recipe at r). */
+static inline double rs_reel_web_tension(const rs_reel_state *s, double r)
+{
+  if (s->web) return s->web->ops->web_tension(s->web, s, r);
+  return rs_recipe_eval(&s->pb->tension, r);
+}
+
+static inline double rs_reel_nip_load(const rs_reel_state *s, double r)
+{
+  if (s->web) return s->web->ops->nip_load(s->web, s, r);
+  return rs_recipe_eval(&s->pb->nip.load, r);
+}
+
 /* The effects (each in its own file). */
 extern const rs_reel_effect_ops rs_reel_history_effect; /* effect_history.c */
 extern const rs_reel_effect_ops rs_reel_air_effect;     /* effect_air.c */
+/* whether the next layer at web tension Ti and nip load w ends the reel at its size (its
+ * air films; 0 without air): a driver of several reels ends them together (lanes.c) */
+int rs_reel_air_ends(const rs_reel_state *s, double Ti, double w);
 extern const rs_reel_effect_ops rs_reel_nip_effect;     /* effect_nip.c */
 extern const rs_reel_effect_ops rs_reel_spin_effect;    /* effect_spin.c */
 extern const rs_reel_effect_ops rs_reel_gauge_effect;   /* effect_gauge.c */

@@ -119,3 +119,21 @@ const rs_reel_effect_ops rs_reel_air_effect = {
     .finish = air_finish,
     .destroy = air_destroy,
 };
+
+/* For a driver that winds several reels as one sheet (the lanes, lanes.c): whether the next
+ * layer (s->first) at web tension Ti and nip load w ends this reel at its size, found as
+ * air_tension finds it (the radius begin gives, the film, rs_reel_air_stop); 0 without
+ * air. */
+int rs_reel_air_ends(const rs_reel_state *s, double Ti, double w)
+{
+  for (int k = 0; k < s->n_effects; ++k) {
+    if (s->effects[k].ops != &rs_reel_air_effect) continue;
+    air_effect *a = s->effects[k].content;
+    const rs_problem *pb = s->pb;
+    const double R = rs_reel_air_begin(&a->air, pb, s->roll, s->first);
+    const double V = rs_recipe_eval(&pb->speed, R + pb->material.caliper);
+    const double film = rs_reel_air_film(pb, R, Ti, V, w);
+    return rs_reel_air_stop(&a->air, pb, s->first, R, isfinite(film) ? film : 0.0);
+  }
+  return 0;
+}

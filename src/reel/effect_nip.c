@@ -95,8 +95,8 @@ static rs_status nip_solve(nip_effect *n, const rs_reel_state *s, const rs_reel_
   const int layers = rs_roll_layers(s->roll), first = at->j;
   rs_nip_state ns = {.roll_radius = at->R,
                      .core_radius = pb->core.radius,
-                     .web_tension = rs_recipe_eval(&pb->tension, at->r),
-                     .nip_load = rs_recipe_eval(&pb->nip.load, at->R),
+                     .web_tension = rs_reel_web_tension(s, at->r),
+                     .nip_load = rs_reel_nip_load(s, at->R),
                      .surface_modulus = rs_roll_surface_modulus(s->roll),
                      .surface_pressure = layers > 0 ? -rs_roll_layer_sigma_r(s->roll, layers - 1) : 0.0};
   rs_status st;

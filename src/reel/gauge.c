@@ -55,6 +55,27 @@ static double strain_table_eval(const strain_table *tb, double P)
   return h00 * tb->eps[i] + h10 * h * tb->inv[i] + h01 * tb->eps[i + 1] + h11 * h * tb->inv[i + 1];
 }
 
+struct rs_reel_strain {
+  strain_table tb;
+};
+
+rs_reel_strain *rs_reel_strain_new(const rs_radial_law *law, double Pmax)
+{
+  rs_reel_strain *s = malloc(sizeof *s);
+  if (s) strain_table_fill(&s->tb, law, Pmax > 0.0 ? Pmax : 0.0);
+  return s;
+}
+
+double rs_reel_strain_eval(const rs_reel_strain *s, double P) { return strain_table_eval(&s->tb, P); }
+double rs_reel_strain_max(const rs_reel_strain *s) { return s->tb.Pmax; }
+
+void rs_reel_strain_free(rs_reel_strain **s)
+{
+  if (!s) return;
+  free(*s);
+  *s = NULL;
+}
+
 rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, const double *sigma_r,
                                   const double *film, int n, double *out)
 {

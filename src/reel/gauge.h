@@ -29,4 +29,13 @@ void rs_reel_gauge_rewind(rs_reel_gauge *g, int layers);
 /* wound[0..n-1]: the deformed outer radius of the roll as each layer went on. */
 void rs_reel_gauge_finish(const rs_reel_gauge *g, const rs_problem *pb, int n, double *wound);
 
+/* eps(P) of the stack law tabulated on [0, Pmax] (the table rs_reel_deformed_radius sums
+ * with; beyond Pmax extrapolated by its last cubic), for a caller that sums a stretch of
+ * the stack itself (lanes_radius.c). NULL when out of memory. */
+typedef struct rs_reel_strain rs_reel_strain;
+rs_reel_strain *rs_reel_strain_new(const rs_radial_law *law, double Pmax);
+double rs_reel_strain_eval(const rs_reel_strain *s, double P);
+double rs_reel_strain_max(const rs_reel_strain *s);
+void rs_reel_strain_free(rs_reel_strain **s);
+
 #endif

@@ -1,15 +1,17 @@
 /* Lanes across the width: the driver (lanes.h; the model and its sources: docs/lanes.md).
  *
  * Per layer k, every lane at k layers:
- *   1. each lane's deformed outer radius R_i (worker threads, O(k) per lane: the whole stack's
- *      compression integrated again on its current state, rs_reel_deformed_radius);
+ *   1. each lane's deformed outer radius R_i (worker threads; lanes_radius.c: the top of the
+ *      stack summed on its current state, the deep part carried from full-stack sums taken
+ *      at geometrically spaced layers);
  *   2. (thread 0) Tbar = the tension recipe at the lanes' mean radius; the shared strain e
  *      from sum w_i max(0, E_theta t_i (e + R_i/Rbar - 1) + (f_i - 1) Tbar) = Tbar W; T_i;
  *      slack where T_i = 0; the nip load N_i (uniform Nbar or the roller's split);
  *   3. each lane winds layer k at web tension T_i and nip load N_i (worker threads).
  * Two barriers per layer. The nip with lanes is solved every nip.update_every layers (an
  * adaptive policy's rewinds would put the lanes at different layers: with lanes `adaptive`
- * runs as every 1). */
+ * runs as every 1). With entrained air the sheet ends, for every lane, before the first
+ * layer that would end one lane's reel at the roll's size (rs_reel_air_ends). */
 #include "reel/lanes.h"
 
 #include <math.h>
@@ -34,6 +36,7 @@ typedef struct lanes_run {
   double W;                       /* m, the width */
   double *w, *a, *b, *q, *T, *load, *k;
   int *order;
+  int drum;                       /* a drum drives the roll (lanes_drum_driven) */
   rs_lanes_result *lr;
   pthread_barrier_t bar;
   pthread_mutex_t gate;           /* the workers wait here until the thread count is known */
@@ -45,13 +48,26 @@ typedef struct lanes_run {
   char msg[1200];
 } lanes_run;
 
-static rs_recipe constant_recipe(double v, const rs_recipe *like)
+/* The lanes' coupling as the lane's tension phase (effect.h): the loop and the nip take
+ * the lane's web tension T_i and nip load N_i from it, set by lanes_couple before each
+ * layer (the same for every radius asked: the layer's). */
+static double lane_web_tension(const rs_reel_effect *e, const rs_reel_state *s, double r)
 {
-  rs_recipe rc = {.law = RS_RECIPE_CONSTANT, .start = v, .end = v, .k = 0.0};
-  rc.r0 = like->r0;
-  rc.r1 = like->r1;
-  return rc;
+  (void)s, (void)r;
+  return ((const rs_lane *)e->content)->T;
 }
+
+static double lane_nip_load(const rs_reel_effect *e, const rs_reel_state *s, double r)
+{
+  (void)s, (void)r;
+  return ((const rs_lane *)e->content)->load;
+}
+
+static const rs_reel_effect_ops lane_coupling = {
+    .name = "lanes",
+    .web_tension = lane_web_tension,
+    .nip_load = lane_nip_load,
+};
 
 /* lane i's problem: the caliper its factor times material.caliper, no lanes, the nip solved
  * every nip.update_every layers (adaptive: every layer) */
@@ -66,19 +82,12 @@ static void lane_problem(const rs_problem *pb, int i, rs_problem *lp)
   }
 }
 
-/* the lane's deformed outer radius on its current state (r_c with nothing wound) */
+/* the lane's deformed outer radius on its current state (lanes_radius.c: r_c with nothing
+ * wound) */
 static rs_status lane_radius(rs_lane *L)
 {
-  const rs_roll *roll = L->s->roll;
-  const int n = rs_roll_layers(roll);
-  if (n == 0) {
-    L->R = L->pb.core.radius;
-    return RS_OK;
-  }
-  rs_status st = rs_reel_deformed_radius(&L->pb, rs_roll_core_pressure(roll), rs_roll_sigma_r(roll),
-                                         L->s->film, n, L->scratch);
-  L->R = L->scratch[n - 1];
-  return st;
+  return rs_lane_radius_update(&L->radius, &L->pb, L->s->roll, L->s->film,
+                               L->s->res->wound_on_tension, &L->R);
 }
 
 /* one layer on the lane: steps until a layer is wound (a step may only plan the nip again) */
@@ -128,6 +137,54 @@ static rs_status lanes_nip(lanes_run *r, double Nbar, int k)
   return RS_OK;
 }
 
+/* Whether a drum drives the roll at its surface (docs/lanes.md, "Surface and two-drum
+ * winders"): a surface or two-drum winder, or the one nip's drum driven (surface or
+ * center-surface) */
+static int lanes_drum_driven(const rs_problem *pb)
+{
+  if (pb->winder.type == RS_WINDER_TYPE_SURFACE || pb->winder.type == RS_WINDER_TYPE_TWO_DRUM)
+    return 1;
+  return pb->nip.model != RS_NIP_NONE &&
+         (pb->nip.winder == RS_WINDER_SURFACE || pb->nip.winder == RS_WINDER_CENTER_SURFACE);
+}
+
+/* The lanes' web tensions T_i (r->T) and the shared strain *e, a_i = E_theta t_i, g_i the
+ * tension profile's factor:
+ *   center winder: sum w_i max(0, a_i (e + R_i/Rbar - 1) + (g_i - 1) Tbar) = Tbar W (the
+ *     tension controller holds the mean of the web entering the roll);
+ *   drum-driven: the web reaches the drum at the strain e its upstream tension sets, flat,
+ *     sum w_i max(0, a_i e + (g_i - 1) Tbar) = Tbar W; the drum turns the roll so that the
+ *     lanes it touches, the largest radius R_d = max R_i, take the web up at the drum's
+ *     speed, so lane i takes it up at R_i/R_d of it and, the web's flow conserved (v/(1 + e)
+ *     the same along it), T_i = max(0, a_i (e + R_i/R_d - 1) + (g_i - 1) Tbar).
+ * Tbar <= 0: every lane slack. Records the misfit of the sum the machine holds. */
+static rs_status lanes_web(lanes_run *r, double Tbar, double Rbar, double *e)
+{
+  const rs_problem *pb = r->pb;
+  const int n = r->n, drum = r->drum;
+  double Rd = -INFINITY, sum = 0.0;
+  for (int i = 0; i < n; ++i) Rd = fmax(Rd, r->lane[i].R);
+  for (int i = 0; i < n; ++i) {
+    const rs_lane *L = &r->lane[i];
+    r->a[i] = L->pb.material.E_theta * L->pb.material.caliper;
+    r->b[i] = drum ? (pb->lanes.tension[i] - 1.0) * Tbar
+                   : r->a[i] * (L->R / Rbar - 1.0) + (pb->lanes.tension[i] - 1.0) * Tbar;
+  }
+  *e = 0.0;
+  if (!(Tbar > 0.0)) {
+    for (int i = 0; i < n; ++i) r->T[i] = 0.0;
+    return RS_OK;
+  }
+  rs_status st = rsi_lanes_share(n, r->w, r->a, r->b, Tbar * r->W, r->order, e, r->T);
+  if (st) return st;
+  for (int i = 0; i < n; ++i) sum += r->w[i] * r->T[i];
+  r->lr->Tbar_W_misfit = fmax(r->lr->Tbar_W_misfit, fabs(sum - Tbar * r->W) / (Tbar * r->W));
+  if (drum)
+    for (int i = 0; i < n; ++i)
+      r->T[i] = fmax(0.0, r->a[i] * (*e + (r->lane[i].R / Rd - 1.0)) + r->b[i]);
+  return RS_OK;
+}
+
 /* Layer k's web tensions, slack flags and nip loads, set into the lanes' problems */
 static rs_status lanes_couple(lanes_run *r, int k)
 {
@@ -143,29 +200,15 @@ static rs_status lanes_couple(lanes_run *r, int k)
   rnom /= r->W;
   rbeneath /= r->W;
   const double Tbar = rs_recipe_eval(&pb->tension, rnom);
-  for (int i = 0; i < n; ++i) {
-    const rs_lane *L = &r->lane[i];
-    r->a[i] = L->pb.material.E_theta * L->pb.material.caliper;
-    r->b[i] = r->a[i] * (L->R / Rbar - 1.0) + (pb->lanes.tension[i] - 1.0) * Tbar;
-  }
-  if (Tbar > 0.0) {
-    rs_status st = rsi_lanes_share(n, r->w, r->a, r->b, Tbar * r->W, r->order, &e, r->T);
-    if (st) return rs_error_wrap("the web's tension across the lanes at layer %d", k + 1);
-  } else {
-    for (int i = 0; i < n; ++i) r->T[i] = 0.0;
-  }
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) sum += r->w[i] * r->T[i];
-  if (Tbar > 0.0)
-    r->lr->Tbar_W_misfit = fmax(r->lr->Tbar_W_misfit, fabs(sum - Tbar * r->W) / (Tbar * r->W));
+  rs_status st = lanes_web(r, Tbar, Rbar, &e);
+  if (st) return rs_error_wrap("the web's tension across the lanes at layer %d", k + 1);
   const double Nbar = pb->nip.model != RS_NIP_NONE ? rs_recipe_eval(&pb->nip.load, rbeneath) : 0.0;
-  rs_status st = lanes_nip(r, Nbar, k);
-  if (st) return st;
+  if ((st = lanes_nip(r, Nbar, k))) return st;
   r->lr->strain[k] = e;
   for (int i = 0; i < n; ++i) {
     rs_lane *L = &r->lane[i];
-    L->pb.tension = constant_recipe(r->T[i], &pb->tension);
-    if (pb->nip.model != RS_NIP_NONE) L->pb.nip.load = constant_recipe(r->load[i], &pb->nip.load);
+    L->T = r->T[i];
+    L->load = r->load[i];
     r->lr->web_tension[(size_t)k * n + i] = r->T[i];
     r->lr->slack[(size_t)k * n + i] = !(r->T[i] > 0.0);
     if (r->lr->nip_load) r->lr->nip_load[(size_t)k * n + i] = r->load[i];
@@ -199,6 +242,16 @@ static void lanes_between(lanes_run *r)
   if ((r->st = lanes_couple(r, k))) {
     snprintf(r->msg, sizeof r->msg, "%s", rs_error_message());
     r->stop = 1;
+    return;
+  }
+  /* entrained air: the sheet ends where the first lane (the highest) reaches the roll's
+   * size, before any lane winds the layer, so that every lane has the same layers */
+  for (int i = 0; r->pb->air.on && i < r->n; ++i) {
+    const rs_lane *L = &r->lane[i];
+    if (rs_reel_air_ends(L->s, L->T, r->pb->nip.model != RS_NIP_NONE ? L->load : 0.0)) {
+      r->stop = 1;
+      return;
+    }
   }
 }
 
@@ -244,9 +297,9 @@ static rs_status lanes_setup(lanes_run *r)
   for (int i = 0; i < n; ++i) {
     rs_lane *L = &r->lane[i];
     lane_problem(pb, i, &L->pb);
-    L->scratch = malloc((size_t)r->N * sizeof(double));
-    if (!L->scratch) return RS_ERROR(RS_ERR_MEMORY, "cannot allocate lane %d", i + 1);
-    rs_status st = rs_reel_state_create(&L->pb, NULL, 0, &L->s);
+    if (rs_lane_radius_init(&L->radius, r->N)) return rs_error_wrap("lane %d", i + 1);
+    const rs_reel_effect coupling = {&lane_coupling, L};
+    rs_status st = rs_reel_state_create(&L->pb, &coupling, 1, &L->s);
     if (st) return rs_error_wrap("lane %d (x = %.6g m)", i + 1, pb->lanes.x[i]);
   }
   return RS_OK;
@@ -312,7 +365,7 @@ static void lanes_free(lanes_run *r)
   for (int i = 0; r->lane && i < r->n; ++i) {
     rs_reel_state_destroy(&r->lane[i].s);
     rs_reel_result_destroy(&r->lane[i].res);
-    free(r->lane[i].scratch);
+    rs_lane_radius_free(&r->lane[i].radius);
   }
   free(r->lane);
   free(r->w), free(r->a), free(r->b), free(r->q), free(r->T), free(r->load), free(r->k);
@@ -323,11 +376,12 @@ static void lanes_free(lanes_run *r)
 rs_status rs_lanes_wind(const rs_problem *pb, const rs_reel_options *opts, rs_reel_result **out)
 {
   *out = NULL;
-  lanes_run r = {.pb = pb, .opts = opts, .n = pb->lanes.count, .N = pb->n_layers};
+  lanes_run r = {.pb = pb, .opts = opts, .n = pb->lanes.count, .N = pb->n_layers,
+                 .drum = lanes_drum_driven(pb)};
   if (r.n < 1 || r.n > RS_LANES_MAX)
     return RS_ERROR(RS_ERR_INPUT, "lanes: %d lanes (1 to %d)", r.n, RS_LANES_MAX);
-  if (pb->numerics.layers_per_step != 1 || pb->air.on)
-    return RS_ERROR(RS_ERR_INPUT, "lanes wind one layer per increment and without entrained air");
+  if (pb->numerics.layers_per_step != 1)
+    return RS_ERROR(RS_ERR_INPUT, "lanes wind one layer per increment");
   rs_status st = lanes_setup(&r);
   if (!st) st = lanes_run_threads(&r);
   if (!st && r.st) {

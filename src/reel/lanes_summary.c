@@ -45,38 +45,3 @@ int rs_lanes_summarize(const rs_reel_result *res, double pressure_limit, rs_lane
   if (N == 0) sum->tension_min = sum->tension_max = NAN;
   return 1;
 }
-
-const double *rs_lanes_result_array(const rs_reel_result *res, const char *name, int *rows,
-                                    int *cols)
-{
-  if (rows) *rows = 0;
-  if (cols) *cols = 0;
-  const rs_lanes_result *lr = res ? res->lanes : NULL;
-  if (!lr || !name) return NULL;
-  const int m = lr->count, N = lr->n_layers;
-  const struct {
-    const char *name;
-    const double *v;
-    int rows, cols;
-  } a[] = {
-      {"x", lr->x, m, 0},
-      {"width", lr->width, m, 0},
-      {"caliper", lr->caliper, m, 0},
-      {"core_pressure", lr->core_pressure, m, 0},
-      {"outer_radius", lr->outer_radius, m, 0},
-      {"strain", lr->strain, N, 0},
-      {"wound_on_tension", lr->wound_on_tension, N, m},
-      {"web_tension", lr->web_tension, N, m},
-      {"nip_load", lr->nip_load, N, m},
-      {"final/sigma_r", lr->sigma_r, N, m},
-      {"final/sigma_theta", lr->sigma_theta, N, m},
-      {"final/radius", lr->radius, N, m},
-  };
-  for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i)
-    if (strcmp(name, a[i].name) == 0 && a[i].v) {
-      if (rows) *rows = a[i].rows;
-      if (cols) *cols = a[i].cols;
-      return a[i].v;
-    }
-  return NULL;
-}

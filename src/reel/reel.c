@@ -137,8 +137,10 @@ static rs_status reel_effects(rs_reel_state *s, const rs_reel_effect *extra, int
   for (int k = 0; k < n_extra; ++k) s->effects[s->n_effects++] = extra[k];
   for (int k = 0; k < n_ops; ++k)
     if (ops[k]) s->effects[s->n_effects++] = (rs_reel_effect){ops[k], NULL};
-  for (int k = 0; k < s->n_effects; ++k)
+  for (int k = 0; k < s->n_effects; ++k) {
     if (s->effects[k].ops->place && !s->placer) s->placer = &s->effects[k];
+    if (s->effects[k].ops->web_tension && !s->web) s->web = &s->effects[k];
+  }
   return RS_OK;
 }
 

@@ -16,8 +16,8 @@ static rs_status reel_layer(rs_reel_state *s, rs_reel_step *step, int b)
   rs_reel_layer L = {.j = step->first + b, .b = b};
   rs_status st;
   rs_reel_place(s, &L);
-  L.Ti = L.T0 = rs_recipe_eval(&pb->tension, L.r);
-  L.load = pb->nip.model != RS_NIP_NONE ? rs_recipe_eval(&pb->nip.load, L.r) : 0.0;
+  L.Ti = L.T0 = rs_reel_web_tension(s, L.r);
+  L.load = pb->nip.model != RS_NIP_NONE ? rs_reel_nip_load(s, L.r) : 0.0;
   for (int k = 0; k < s->n_effects; ++k) {
     rs_reel_effect *e = &s->effects[k];
     if (e->ops->tension && ((st = e->ops->tension(e, s, step, &L)) || step->m == b || step->again))

@@ -173,6 +173,59 @@ static void strength_check(const rs_reel_result *res, double S, unsigned char *f
   rep->starring.strength_margin = least;
 }
 
+/* (c) The compressed zones (runs of layers with sigma_theta < 0), counted into rep; the one
+ * holding the mode's peak layer (or the nearest to it) kept (keep_zone) with its critical
+ * force least x N. below: the compliance beneath the first layer. Its layers into *zfirst,
+ * *zlast (-1 when none is compressed). */
+static void find_zone(const rs_reel_result *res, const rs_defect_limits *lim, double t,
+                      double below, const unsigned char *slips, int mode, int peak, double least,
+                      rs_defect_report *rep, int *zfirst, int *zlast)
+{
+  const int n = res->n_layers;
+  int zone_dist = -1;
+  *zfirst = *zlast = -1;
+  for (int j = 0; j < n;) {
+    if (!(res->sigma_theta[j] < 0.0)) {
+      below += layer_compliance(res, lim, t, j++);
+      continue;
+    }
+    int first = j;
+    while (j < n && res->sigma_theta[j] < 0.0) ++j;
+    int last = j - 1;
+    rep->starring.zones++;
+    rep->starring.compressed += last - first + 1;
+    /* the zone of the mode's peak, or the nearest one to it */
+    int dist = peak < first ? first - peak : peak > last ? peak - last : 0;
+    if (zone_dist < 0 || dist < zone_dist) {
+      zone_dist = dist;
+      *zfirst = first;
+      *zlast = last;
+      rs_starring_zone z;
+      zone_info(res, lim, t, first, last, below, slips, &z);
+      z.mode = mode;
+      z.N_cr = least * z.N;
+      keep_zone(rep, &z, first, last, least, res->core_radius);
+    }
+    for (int i = first; i <= last; ++i) below += layer_compliance(res, lim, t, i);
+  }
+}
+
+/* The criterion with the least margin decides: the hoop strength's or the packet's
+ * (least, the stack's load factor). */
+static void decide_criterion(rs_defect_report *rep, double least)
+{
+  double sm = rep->starring.strength_margin;
+  if (isfinite(sm) && !(least <= sm)) {
+    rep->starring.criterion = RS_STARRING_STRENGTH;
+    rep->starring.margin_min = sm;
+    rep->starring.margin_radius = rep->starring.strength_radius;
+  } else {
+    rep->starring.criterion = RS_STARRING_PACKET;
+    rep->starring.margin_min = least;
+    rep->starring.margin_radius = 0.5 * (rep->starring.zone_inner + rep->starring.zone_outer);
+  }
+}
+
 rs_status rs_defects_starring(const rs_reel_result *res, const rs_defect_limits *lim,
                               unsigned char *flag, rs_defect_report *rep)
 {
@@ -184,9 +237,9 @@ rs_status rs_defects_starring(const rs_reel_result *res, const rs_defect_limits 
   rep->starring.margin_min = NAN;
   if (n == 0 || !lim->radial || !(lim->E_theta > 0.0)) return RS_OK;
   const double t = lim->caliper > 0.0 ? lim->caliper : res->radius[0] - res->core_radius;
-  double below = lim->core_stiffness > 0.0 && isfinite(lim->core_stiffness)
-                     ? res->core_radius / lim->core_stiffness
-                     : 0.0;
+  const double below = lim->core_stiffness > 0.0 && isfinite(lim->core_stiffness)
+                           ? res->core_radius / lim->core_stiffness
+                           : 0.0;
   rep->starring.min_sigma = INFINITY;
   for (int j = 0; j < n; ++j) {
     flag[j] = 0;
@@ -208,31 +261,8 @@ rs_status rs_defects_starring(const rs_reel_result *res, const rs_defect_limits 
     free(slips);
     return RS_ERROR(RS_ERR_MEMORY, "out of memory for the starring stack");
   }
-  int zfirst = -1, zlast = -1, zone_dist = -1;
-  for (int j = 0; j < n;) {
-    if (!(res->sigma_theta[j] < 0.0)) {
-      below += layer_compliance(res, lim, t, j++);
-      continue;
-    }
-    int first = j;
-    while (j < n && res->sigma_theta[j] < 0.0) ++j;
-    int last = j - 1;
-    rep->starring.zones++;
-    rep->starring.compressed += last - first + 1;
-    /* the zone of the mode's peak, or the nearest one to it */
-    int dist = peak < first ? first - peak : peak > last ? peak - last : 0;
-    if (zone_dist < 0 || dist < zone_dist) {
-      zone_dist = dist;
-      zfirst = first;
-      zlast = last;
-      rs_starring_zone z;
-      zone_info(res, lim, t, first, last, below, slips, &z);
-      z.mode = mode;
-      z.N_cr = least * z.N;
-      keep_zone(rep, &z, first, last, least, res->core_radius);
-    }
-    for (int i = first; i <= last; ++i) below += layer_compliance(res, lim, t, i);
-  }
+  int zfirst, zlast;
+  find_zone(res, lim, t, below, slips, mode, peak, least, rep, &zfirst, &zlast);
   free(slips);
   if (zfirst >= 0 && least < 1.0)
     for (int i = zfirst; i <= zlast; ++i) flag[i] = 1;
@@ -241,17 +271,6 @@ rs_status rs_defects_starring(const rs_reel_result *res, const rs_defect_limits 
   if (rep->starring.layers < 0)
     return RS_ERROR(RS_ERR_MEMORY, "out of memory for the starring ranges");
   rep->starring.verdict = rep->starring.layers > 0 ? RS_DEFECT_RISK : RS_DEFECT_OK;
-  if (rep->starring.compressed == 0) return RS_OK;
-  /* the criterion with the least margin decides */
-  double sm = rep->starring.strength_margin;
-  if (isfinite(sm) && !(least <= sm)) {
-    rep->starring.criterion = RS_STARRING_STRENGTH;
-    rep->starring.margin_min = sm;
-    rep->starring.margin_radius = rep->starring.strength_radius;
-  } else {
-    rep->starring.criterion = RS_STARRING_PACKET;
-    rep->starring.margin_min = least;
-    rep->starring.margin_radius = 0.5 * (rep->starring.zone_inner + rep->starring.zone_outer);
-  }
+  if (rep->starring.compressed > 0) decide_criterion(rep, least);
   return RS_OK;
 }

@@ -91,9 +91,86 @@ static rs_status set_switch(yn *root, const char *key, const char *value, const 
   return st;
 }
 
+enum { WALKED_MAX = 2400 }; /* the path walked so far, "winding.tension.points[2]" */
+
+/* One step of the walk into the list *cur: its entry seg ("2"); walked gains "[2]". */
+static rs_status step_into_list(yn **cur, const char *seg, char *walked, const char *origin)
+{
+  char next[WALKED_MAX], num[32];
+  long idx;
+  if (!rsi_yn_seg_index(seg, &idx))
+    return RS_ERROR(RS_ERR_INPUT, "%s: %s is a list: expected an entry number, got '%s'",
+                    origin, walked, seg);
+  if (idx >= (*cur)->n)
+    return RS_ERROR(RS_ERR_INPUT, "%s: %s has no entry %ld (it has %d)", origin, walked, idx,
+                    (*cur)->n);
+  snprintf(num, sizeof num, "[%ld]", idx);
+  join3(next, sizeof next, walked, "", num);
+  memcpy(walked, next, sizeof next);
+  *cur = (*cur)->kids[idx];
+  return RS_OK;
+}
+
+/* The key seg, absent from the mapping cur at `walked`, created at path `next` when the
+ * schema knows it: the scalar `value` when it is the path's last key, else an empty
+ * mapping (a list's entries are not created). */
+static rs_status create_key(yn *root, yn *cur, const char *seg, const char *walked,
+                            const char *next, int last, const char *value, const char *origin,
+                            yn **out)
+{
+  char keys[512];
+  const ys_value *s = rsi_ys_schema_at(next);
+  if (!s) {
+    const ys_value *ps = walked[0] ? rsi_ys_schema_at(walked) : &rsi_ys_scene_schema;
+    rsi_ys_schema_keys(ps ? ps : &rsi_ys_scene_schema, keys, sizeof keys);
+    return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
+                    seg, walked[0] ? " in " : "", walked, keys);
+  }
+  if (last && !is_scalar_schema(s) && !rsi_ys_is_shorthand(next))
+    return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, next,
+                    s->type == YS_MAP ? "mapping" : "list");
+  if (!last && s->type != YS_MAP)
+    return RS_ERROR(RS_ERR_INPUT, "%s: cannot create entries of the list %s with --set",
+                    origin, next);
+  yn *kid = last ? rsi_yn_new_scalar(value, root->file, 0, next) : rsi_yn_new_map(root->file, 0, next);
+  if (!kid) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
+  rs_status st = rsi_yn_set_origin(kid, origin);
+  if (st == RS_OK) st = rsi_yn_map_put(cur, seg, kid);
+  else rsi_yn_free(kid);
+  *out = st == RS_OK ? kid : NULL;
+  return st;
+}
+
+/* The scalar at the path seg[0..n-1] from root, the keys the schema knows created on the
+ * way (create_key); *out the node found or made. */
+static rs_status walk_to(yn *root, char seg[][YN_SEG_MAX], int n, const char *value,
+                         const char *origin, yn **out)
+{
+  char walked[WALKED_MAX] = "";
+  yn *cur = root;
+  rs_status st = RS_OK;
+  for (int i = 0; i < n && st == RS_OK; ++i) {
+    char next[WALKED_MAX];
+    if (cur->kind == YN_SEQ) {
+      st = step_into_list(&cur, seg[i], walked, origin);
+      continue;
+    }
+    if (cur->kind != YN_MAP)
+      return RS_ERROR(RS_ERR_INPUT, "%s: %s is a single value, not a mapping with key '%s'",
+                      origin, walked, seg[i]);
+    join3(next, sizeof next, walked, walked[0] ? "." : "", seg[i]);
+    yn *kid = rsi_yn_map_get(cur, seg[i]);
+    if (!kid) st = create_key(root, cur, seg[i], walked, next, i == n - 1, value, origin, &kid);
+    memcpy(walked, next, sizeof walked);
+    cur = kid;
+  }
+  *out = cur;
+  return st;
+}
+
 rs_status rsi_ys_apply_set(yn *root, const char *set, int pass)
 {
-  char origin[RS_PATH_MAX + 16], path[1024], walked[2400] = "", seg[16][YN_SEG_MAX], keys[512];
+  char origin[RS_PATH_MAX + 16], path[1024], seg[16][YN_SEG_MAX];
   snprintf(origin, sizeof origin, "--set %s", set);
   const char *eq = strchr(set, '=');
   if (!eq || eq == set)
@@ -120,54 +197,9 @@ rs_status rsi_ys_apply_set(yn *root, const char *set, int pass)
   if (n <= 0) return RS_ERROR(RS_ERR_INPUT, "%s: malformed key path '%s'", origin, path);
   if (is_null(value)) return remove_key(root, origin, path, seg, n);
 
-  yn *cur = root;
-  for (int i = 0; i < n; ++i) {
-    char next[sizeof walked], num[32];
-    long idx;
-    if (cur->kind == YN_SEQ) {
-      if (!rsi_yn_seg_index(seg[i], &idx))
-        return RS_ERROR(RS_ERR_INPUT, "%s: %s is a list: expected an entry number, got '%s'",
-                        origin, walked, seg[i]);
-      if (idx >= cur->n)
-        return RS_ERROR(RS_ERR_INPUT, "%s: %s has no entry %ld (it has %d)", origin, walked, idx,
-                        cur->n);
-      snprintf(num, sizeof num, "[%ld]", idx);
-      join3(next, sizeof next, walked, "", num);
-      memcpy(walked, next, sizeof walked);
-      cur = cur->kids[idx];
-      continue;
-    }
-    if (cur->kind != YN_MAP)
-      return RS_ERROR(RS_ERR_INPUT, "%s: %s is a single value, not a mapping with key '%s'",
-                      origin, walked, seg[i]);
-    join3(next, sizeof next, walked, walked[0] ? "." : "", seg[i]);
-    yn *kid = rsi_yn_map_get(cur, seg[i]);
-    if (!kid) {
-      /* absent: create it when the schema knows the key */
-      const ys_value *s = rsi_ys_schema_at(next);
-      if (!s) {
-        const ys_value *ps = walked[0] ? rsi_ys_schema_at(walked) : &rsi_ys_scene_schema;
-        rsi_ys_schema_keys(ps ? ps : &rsi_ys_scene_schema, keys, sizeof keys);
-        return RS_ERROR(RS_ERR_INPUT, "%s: unknown key '%s'%s%s (expected one of: %s)", origin,
-                        seg[i], walked[0] ? " in " : "", walked, keys);
-      }
-      int last = i == n - 1;
-      if (last && !is_scalar_schema(s) && !rsi_ys_is_shorthand(next))
-        return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, next,
-                        s->type == YS_MAP ? "mapping" : "list");
-      if (!last && s->type != YS_MAP)
-        return RS_ERROR(RS_ERR_INPUT, "%s: cannot create entries of the list %s with --set",
-                        origin, next);
-      kid = last ? rsi_yn_new_scalar(value, root->file, 0, next) : rsi_yn_new_map(root->file, 0, next);
-      if (!kid) return RS_ERROR(RS_ERR_MEMORY, "out of memory");
-      rs_status st = rsi_yn_set_origin(kid, origin);
-      if (st == RS_OK) st = rsi_yn_map_put(cur, seg[i], kid);
-      else rsi_yn_free(kid);
-      if (st != RS_OK) return st;
-    }
-    memcpy(walked, next, sizeof walked);
-    cur = kid;
-  }
+  yn *cur = NULL;
+  rs_status st = walk_to(root, seg, n, value, origin, &cur);
+  if (st != RS_OK) return st;
   if (cur->kind != YN_SCALAR)
     return RS_ERROR(RS_ERR_INPUT, "%s: %s is a %s, not a single value", origin, path,
                     cur->kind == YN_MAP ? "mapping" : "list");

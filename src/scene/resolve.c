@@ -264,34 +264,25 @@ static rs_status check_drum_capacity(const yn *root, const rs_scene *s)
   return RS_OK;
 }
 
-/* by_winder: the load comes from the winder's statics (a drum of a two-drum winder) */
-static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
+/* nip.load: a recipe, required unless a two-drum winder's statics give it (by_winder). */
+static rs_status resolve_nip_load(const yn *root, rs_scene *s, int by_winder, const char *model)
 {
-  const int model_kind = rsi_ys_enum(root, "nip.model"), winder = rsi_ys_enum(root, "nip.winder"),
-            update = rsi_ys_enum(root, "nip.update");
-  const int nodes = (int)rsi_ys_int(root, "nip.nodes"), terms = (int)rsi_ys_int(root, "nip.terms"),
-            update_every = (int)rsi_ys_int(root, "nip.update_every");
-  const double mu_roll = rsi_ys_num(root, "nip.friction.roll"),
-               mu_drum = rsi_ys_num(root, "nip.friction.drum"),
-               torque_share = rsi_ys_num(root, "nip.torque_share"),
-               T0_rtol = rsi_ys_num(root, "nip.T0_rtol");
   rs_nip_spec *n = &s->problem.nip;
-  memset(n, 0, sizeof *n);
-  n->model = RS_NIP_NONE;
-  if (!rsi_ys_has(root, "nip") || model_kind == RS_NIP_NONE) return RS_OK;
-  n->model = (rs_nip_model_kind)model_kind;
-  const char *model = n->model == RS_NIP_CONTACT ? "contact" : "friction";
-
-  rs_status st = RS_OK;
   if (by_winder && rsi_ys_has(root, "nip.load"))
     return rsi_ys_fail(root, "nip.load", "a drum of a two-drum winder carries the roll's weight: "
                    "its load comes from the winder's statics (remove the key)");
   if (!by_winder && !rsi_ys_has(root, "nip.load"))
     return rsi_ys_fail(root, "nip.load", "required by nip model %s (N/m, a number or a recipe)", model);
-  if (!by_winder && (st = rsi_ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
-                                            s->problem.final_radius, &n->load)) != RS_OK)
-    return st;
+  if (by_winder) return RS_OK;
+  return rsi_ys_resolve_recipe(root, "nip.load", "nip load", s->problem.core.radius,
+                               s->problem.final_radius, &n->load);
+}
 
+/* nip.friction: the sheet on the roll (required) and on the drum (required by contact). */
+static rs_status resolve_nip_friction(const yn *root, rs_nip_spec *n, const char *model)
+{
+  const double mu_roll = rsi_ys_num(root, "nip.friction.roll"),
+               mu_drum = rsi_ys_num(root, "nip.friction.drum");
   if (!rsi_ys_has(root, "nip.friction.roll"))
     return rsi_ys_fail(root, "nip.friction.roll",
                    "required by nip model %s (friction coefficient of the sheet on the roll)",
@@ -308,8 +299,14 @@ static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
                    "required by nip model contact (friction coefficient of the sheet on the "
                    "drum)");
   }
+  return RS_OK;
+}
 
-  n->winder = (rs_winder_kind)winder;
+/* nip.winder, nip.torque_share (center-surface only) and nip.drum (required by contact). */
+static rs_status resolve_nip_drive(const yn *root, rs_nip_spec *n)
+{
+  const double torque_share = rsi_ys_num(root, "nip.torque_share");
+  n->winder = (rs_winder_kind)rsi_ys_enum(root, "nip.winder");
   n->torque_share = n->winder == RS_WINDER_CENTER_SURFACE ? torque_share : 0.0;
   if (rsi_ys_has(root, "nip.torque_share")) {
     if (!(torque_share >= 0.0 && torque_share <= 1.0))
@@ -317,13 +314,22 @@ static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
     if (n->winder != RS_WINDER_CENTER_SURFACE)
       return rsi_ys_fail(root, "nip.torque_share", "only used with winder: center-surface");
   }
-  if (rsi_ys_has(root, "nip.drum")) {
-    if ((st = resolve_drum(root, &n->drum)) != RS_OK) return st;
-  } else if (n->model == RS_NIP_CONTACT) {
+  if (rsi_ys_has(root, "nip.drum")) return resolve_drum(root, &n->drum);
+  if (n->model == RS_NIP_CONTACT)
     return rsi_ys_fail(root, "nip.drum",
                    "required by nip model contact: {radius, core_radius, E, nu} (or "
                    "E_r, E_theta, nu_rtheta, G_rtheta)");
-  }
+  return RS_OK;
+}
+
+/* The contact solve's size (nip.nodes, nip.terms) and how often the nip is solved
+ * (nip.update with update_every or T0_rtol). */
+static rs_status resolve_nip_solve(const yn *root, rs_nip_spec *n)
+{
+  const int update = rsi_ys_enum(root, "nip.update");
+  const int nodes = (int)rsi_ys_int(root, "nip.nodes"), terms = (int)rsi_ys_int(root, "nip.terms"),
+            update_every = (int)rsi_ys_int(root, "nip.update_every");
+  const double T0_rtol = rsi_ys_num(root, "nip.T0_rtol");
   if (!(nodes >= 3)) return rsi_ys_fail(root, "nip.nodes", "must be >= 3 (got %d)", nodes);
   if (nodes > RS_NIP_MAX_NODES)
     return rsi_ys_fail(root, "nip.nodes", "at most %d nodes (got %d; 400 take seconds per solve)",
@@ -347,6 +353,24 @@ static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
   n->update_every = update_every;
   n->T0_rtol = T0_rtol;
   return RS_OK;
+}
+
+/* The nip block; by_winder: the load comes from the winder's statics (a drum of a two-drum
+ * winder). */
+static rs_status resolve_nip(const yn *root, rs_scene *s, int by_winder)
+{
+  const int model_kind = rsi_ys_enum(root, "nip.model");
+  rs_nip_spec *n = &s->problem.nip;
+  memset(n, 0, sizeof *n);
+  n->model = RS_NIP_NONE;
+  if (!rsi_ys_has(root, "nip") || model_kind == RS_NIP_NONE) return RS_OK;
+  n->model = (rs_nip_model_kind)model_kind;
+  const char *model = n->model == RS_NIP_CONTACT ? "contact" : "friction";
+  rs_status st = resolve_nip_load(root, s, by_winder, model);
+  if (st == RS_OK) st = resolve_nip_friction(root, n, model);
+  if (st == RS_OK) st = resolve_nip_drive(root, n);
+  if (st == RS_OK) st = resolve_nip_solve(root, n);
+  return st;
 }
 
 static rs_status resolve_numerics(const yn *root, rs_numerics *n)

@@ -96,8 +96,7 @@ static rs_status lanes_factor(const yn *root, const rs_lanes_spec *L, const char
 }
 
 /* What the lanes driver does not take (src/reel/lanes.c): several layers per increment (the
- * lanes are coupled layer by layer) and entrained air (its films end each lane's reel at
- * its own layer). */
+ * lanes are coupled layer by layer). */
 static rs_status lanes_limits(const yn *root, const rs_scene *s)
 {
   const rs_problem *p = &s->problem;
@@ -105,7 +104,6 @@ static rs_status lanes_limits(const yn *root, const rs_scene *s)
     return rsi_ys_fail(root, "numerics.layers_per_step",
                    "must be 1 with lanes (the lanes are coupled layer by layer; got %d)",
                    p->numerics.layers_per_step);
-  if (rsi_ys_has(root, "air")) return rsi_ys_fail(root, "lanes", "entrained air (air) with lanes is not supported");
   if (p->lanes.nip == RS_LANES_NIP_ROLLER && p->nip.model == RS_NIP_NONE)
     return rsi_ys_fail(root, "lanes.nip", "roller shares the nip's load: the scene has no nip");
   return RS_OK;

@@ -1,37 +1,29 @@
-/* Results by name for a foreign-function interface (Python's ctypes), which reads these
- * instead of mirroring the structs' layout: the storage stages and the defect verdicts
- * (reelsim/storage.h). */
-#include <math.h>
+/* The storage result's accessors (reelsim/storage.h): one per array, named after it, as
+ * the reel result's (src/reel/result_access.c); what a foreign-function interface (Python's
+ * ctypes) calls instead of mirroring the struct's layout. */
 #include <stddef.h>
-#include <string.h>
 
 #include "reelsim/storage.h"
 
 int rs_storage_result_stages(const rs_storage_result *sr) { return sr ? sr->n_stages : 0; }
+int rs_storage_result_n_layers(const rs_storage_result *sr) { return sr ? sr->n_layers : 0; }
 
-const double *rs_storage_result_array(const rs_storage_result *sr, const char *name, int *n)
-{
-  if (n) *n = 0;
-  if (!sr || !name) return NULL;
-  const struct {
-    const char *name;
-    const double *v;
-    int count;
-  } a[] = {
-      {"hours", sr->hours, sr->n_stages},
-      {"temperature", sr->temperature, sr->n_stages},
-      {"humidity", sr->humidity, sr->n_stages},
-      {"core_pressure", sr->core_pressure, sr->n_stages},
-      {"sigma_r", sr->sigma_r, sr->n_stages * sr->n_layers},
-      {"sigma_theta", sr->sigma_theta, sr->n_stages * sr->n_layers},
-  };
-  for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i)
-    if (strcmp(name, a[i].name) == 0) {
-      if (n) *n = a[i].v ? a[i].count : 0;
-      return a[i].v;
-    }
-  return NULL;
-}
+/* an array of `count` values: the field and its length, or NULL and 0 for NULL or a result
+ * without it */
+#define RS_STORAGE_ARRAY(field, count)                                            \
+  const double *rs_storage_result_##field(const rs_storage_result *sr, int *n)   \
+  {                                                                               \
+    const int len = sr && sr->field ? (count) : 0;                                \
+    if (n) *n = len > 0 ? len : 0;                                                \
+    return len > 0 ? sr->field : NULL;                                            \
+  }
+
+RS_STORAGE_ARRAY(hours, sr->n_stages)
+RS_STORAGE_ARRAY(temperature, sr->n_stages)
+RS_STORAGE_ARRAY(humidity, sr->n_stages)
+RS_STORAGE_ARRAY(core_pressure, sr->n_stages)
+RS_STORAGE_ARRAY(sigma_r, sr->n_stages * sr->n_layers)
+RS_STORAGE_ARRAY(sigma_theta, sr->n_stages * sr->n_layers)
 
 const rs_defect_report *rs_storage_result_defects(const rs_storage_result *sr, int s)
 {

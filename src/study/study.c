@@ -382,6 +382,62 @@ static double round3(double x)
   return round(x / q) * q;
 }
 
+/* Row i of the report from run i's result (NULL: a run that failed, NaN figures, not on
+ * the front), against the reference `ref` and the defaults `def`; its time and front error
+ * into t[i] and ef[i] (NaN for the references: they are not candidates). */
+static rs_status analyze_row(const rs_study_plan *plan, const rs_reel_result *res, int i,
+                             const rs_reel_result *ref, const rs_reel_result *def,
+                             double caliper, double *t, double *ef, rs_study_report *rep)
+{
+  rs_study_row *row = &rep->rows[i];
+  const int is_ref = plan->runs[i].knob == RS_KNOB_REFERENCE || plan->runs[i].knob == RS_KNOB_REFERENCE2;
+  if (!res) {
+    row->core_pressure = row->peak_pressure = row->T0_final = row->err_front = NAN;
+    for (int f = 0; f < RS_N_FIGURES; ++f) row->err[f] = NAN;
+    t[i] = ef[i] = NAN;
+    return RS_OK;
+  }
+  rs_reel_summary sum;
+  rs_reel_summarize(res, &sum);
+  row->cvode_steps = res->cvode_steps;
+  row->nip_solves = res->nip_solves;
+  row->core_pressure = sum.core_pressure;
+  row->peak_pressure = sum.peak_pressure;
+  row->T0_final = res->n_layers > 0 ? res->wound_on_tension[res->n_layers - 1] : NAN;
+  rs_status st = rs_study_errors(res, ref, caliper, row->err);
+  if (st) {
+    rs_error_wrap("study run '%s'", plan->runs[i].label);
+    return st;
+  }
+  row->err_front = round3(fmax(row->err[RS_FIG_MAX], rep->uncertainty[RS_FIG_MAX]));
+  row->identical_to_default = rs_study_identical(res, def);
+  t[i] = is_ref ? NAN : row->cpu_seconds;
+  ef[i] = is_ref ? NAN : row->err_front;
+  if (!is_ref && row->err[RS_FIG_MAX] > 0 &&
+      (rep->smallest_run < 0 || row->err[RS_FIG_MAX] < rep->smallest_error)) {
+    rep->smallest_error = row->err[RS_FIG_MAX];
+    rep->smallest_run = i;
+  }
+  return RS_OK;
+}
+
+/* The defaults' time: the least of the runs that did exactly the defaults' work (run 2 and
+ * those identical to it), with their spread; t[2] becomes it. */
+static void default_timing(rs_study_report *rep, int n, double *t)
+{
+  rep->default_cpu = t[2];
+  rep->default_timings = 1;
+  double most = t[2];
+  for (int i = 3; i < n; ++i)
+    if (rep->rows[i].identical_to_default && isfinite(t[i])) {
+      rep->default_timings++;
+      if (t[i] < rep->default_cpu) rep->default_cpu = t[i];
+      if (t[i] > most) most = t[i];
+    }
+  rep->default_spread = rep->default_cpu > 0.0 ? (most - rep->default_cpu) / rep->default_cpu : 0.0;
+  t[2] = rep->default_cpu;
+}
+
 rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *const *results,
                            const double *wall, const double *cpu, double caliper,
                            rs_study_report *rep)
@@ -405,55 +461,15 @@ rs_status rs_study_analyze(const rs_study_plan *plan, const rs_reel_result *cons
       st = RS_ERROR(RS_ERR_INTERNAL, "the study's run '%s' has no result", plan->runs[i].label);
       goto done;
     }
-  const rs_reel_result *ref = results[0];
-  rep->n_layers = ref->n_layers;
-  if ((st = rs_study_errors(ref, results[1], caliper, rep->uncertainty))) goto done;
-  const rs_reel_result *def = results[2];
-  for (int i = 0; i < n; ++i) {
-    rs_study_row *row = &rep->rows[i];
-    const rs_reel_result *res = results[i];
-    const int is_ref = plan->runs[i].knob == RS_KNOB_REFERENCE || plan->runs[i].knob == RS_KNOB_REFERENCE2;
-    row->wall_seconds = wall[i];
-    row->cpu_seconds = cpu[i];
-    if (!res) { /* a run that failed: no figures, not on the front */
-      row->core_pressure = row->peak_pressure = row->T0_final = row->err_front = NAN;
-      for (int f = 0; f < RS_N_FIGURES; ++f) row->err[f] = NAN;
-      t[i] = ef[i] = NAN;
-      continue;
-    }
-    rs_reel_summary sum;
-    rs_reel_summarize(res, &sum);
-    row->cvode_steps = res->cvode_steps;
-    row->nip_solves = res->nip_solves;
-    row->core_pressure = sum.core_pressure;
-    row->peak_pressure = sum.peak_pressure;
-    row->T0_final = res->n_layers > 0 ? res->wound_on_tension[res->n_layers - 1] : NAN;
-    if ((st = rs_study_errors(res, ref, caliper, row->err))) {
-      rs_error_wrap("study run '%s'", plan->runs[i].label);
-      goto done;
-    }
-    row->err_front = round3(fmax(row->err[RS_FIG_MAX], rep->uncertainty[RS_FIG_MAX]));
-    row->identical_to_default = rs_study_identical(res, def);
-    t[i] = is_ref ? NAN : cpu[i];
-    ef[i] = is_ref ? NAN : row->err_front;
-    if (!is_ref && row->err[RS_FIG_MAX] > 0 &&
-        (rep->smallest_run < 0 || row->err[RS_FIG_MAX] < rep->smallest_error)) {
-      rep->smallest_error = row->err[RS_FIG_MAX];
-      rep->smallest_run = i;
-    }
+  rep->n_layers = results[0]->n_layers;
+  if ((st = rs_study_errors(results[0], results[1], caliper, rep->uncertainty))) goto done;
+  for (int i = 0; i < n && st == RS_OK; ++i) {
+    rep->rows[i].wall_seconds = wall[i];
+    rep->rows[i].cpu_seconds = cpu[i];
+    st = analyze_row(plan, results[i], i, results[0], results[2], caliper, t, ef, rep);
   }
-  /* the defaults' time: the least of the runs that did exactly the defaults' work */
-  rep->default_cpu = t[2];
-  rep->default_timings = 1;
-  double most = t[2];
-  for (int i = 3; i < n; ++i)
-    if (rep->rows[i].identical_to_default && isfinite(t[i])) {
-      rep->default_timings++;
-      if (t[i] < rep->default_cpu) rep->default_cpu = t[i];
-      if (t[i] > most) most = t[i];
-    }
-  rep->default_spread = rep->default_cpu > 0.0 ? (most - rep->default_cpu) / rep->default_cpu : 0.0;
-  t[2] = rep->default_cpu;
+  if (st) goto done;
+  default_timing(rep, n, t);
   rep->n_front = rs_pareto_front(n, t, ef, on);
   for (int i = 0; i < n; ++i) rep->rows[i].on_front = on[i];
   rep->default_on_front = rs_pareto_within(n, t, ef, on, 2, rep->time_noise, 0.0);

@@ -31,6 +31,11 @@ const sweep_figure_info sweep_figures[SWEEP_N_FIGURES] = {
                                              "greatest interlayer pressure after any storage stage"},
     [SWEEP_FIG_STORAGE_STARRING_LAYERS] = {"storage_starring_layers", "",
                                            "most layers at starring risk after any storage stage"},
+    [SWEEP_FIG_RIDGE_HEIGHT] = {"ridge_height", "m",
+                                "max - min of the lanes' final outer radii (docs/lanes.md)"},
+    [SWEEP_FIG_MAX_LANE_PRESSURE] = {"max_lane_pressure", "Pa",
+                                     "the hardest lane's peak pressure, core or -sigma_r"},
+    [SWEEP_FIG_SLACK_LANES] = {"slack_lanes", "", "lanes that went slack while winding"},
 };
 
 int sweep_figure_find(const char *name)
@@ -50,9 +55,23 @@ void sweep_figure_names(char *buf, size_t size)
     used += (size_t)snprintf(buf + used, size - used, "%s%s", i ? ", " : "", sweep_figures[i].name);
 }
 
-int sweep_figure_count(const rs_problem *problem)
+const char *sweep_figure_lacks(const rs_problem *problem, int f)
 {
-  return problem && rs_storage_requested(problem) ? SWEEP_N_FIGURES : SWEEP_N_WIND_FIGURES;
+  if (f >= SWEEP_FIG_STORAGE_CORE_PRESSURE && f <= SWEEP_FIG_STORAGE_STARRING_LAYERS &&
+      !(problem && rs_storage_requested(problem)))
+    return "no storage stages (docs/storage.md)";
+  if (f >= SWEEP_FIG_RIDGE_HEIGHT && f <= SWEEP_FIG_SLACK_LANES &&
+      !(problem && problem->lanes.count > 0))
+    return "no `lanes:` (docs/lanes.md)";
+  return NULL;
+}
+
+int sweep_figure_list(const rs_problem *problem, int idx[SWEEP_N_FIGURES])
+{
+  int n = 0;
+  for (int f = 0; f < SWEEP_N_FIGURES; ++f)
+    if (!sweep_figure_lacks(problem, f)) idx[n++] = f;
+  return n;
 }
 
 int sweep_status_code(rs_status st)
@@ -109,6 +128,12 @@ rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result 
     fig[SWEEP_FIG_STATUS] = sweep_status_code(RS_ERR_SOLVER);
     return RS_OK;
   }
+  rs_lanes_summary lanes; /* across the width: the run summary's figures */
+  int has_lanes = rs_lanes_summarize(res, problem->material.pressure_limit, &lanes);
+  if (has_lanes && !(isfinite(lanes.ridge_height) && isfinite(lanes.hardest_pressure))) {
+    fig[SWEEP_FIG_STATUS] = sweep_status_code(RS_ERR_SOLVER);
+    return RS_OK;
+  }
   fig[SWEEP_FIG_CORE_PRESSURE] = sum.core_pressure;
   fig[SWEEP_FIG_PEAK_PRESSURE] = sum.peak_pressure;
   fig[SWEEP_FIG_MIN_SIGMA_THETA] = sum.min_hoop;
@@ -124,6 +149,11 @@ rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result 
     fig[SWEEP_FIG_STARRING_LAYERS] = rep->starring.layers;
   if (rep->slip.verdict != RS_DEFECT_NOT_ASSESSED) fig[SWEEP_FIG_SLIP_MARGIN] = rep->slip.margin_min;
   rs_defect_report_destroy(&rep);
+  if (has_lanes) {
+    fig[SWEEP_FIG_RIDGE_HEIGHT] = lanes.ridge_height;
+    fig[SWEEP_FIG_MAX_LANE_PRESSURE] = lanes.hardest_pressure;
+    fig[SWEEP_FIG_SLACK_LANES] = lanes.slack_lanes;
+  }
   if (rs_storage_requested(problem)) return storage_figures(problem, res, fig);
   return RS_OK;
 }

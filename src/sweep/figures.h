@@ -28,15 +28,24 @@ typedef enum sweep_figure {
   SWEEP_FIG_STORAGE_MAX_CORE_PRESSURE, /* Pa, the greatest at the end of any stage */
   SWEEP_FIG_STORAGE_MAX_PEAK_PRESSURE, /* Pa, the greatest at the end of any stage */
   SWEEP_FIG_STORAGE_STARRING_LAYERS,   /* the most layers at starring risk after any stage */
+  /* across the width (docs/lanes.md; NaN when the scene has no lanes), rs_lanes_summarize's */
+  SWEEP_FIG_RIDGE_HEIGHT,      /* m, max - min of the lanes' final outer radii */
+  SWEEP_FIG_MAX_LANE_PRESSURE, /* Pa, the hardest lane's peak pressure (core or -sigma_r) */
+  SWEEP_FIG_SLACK_LANES,       /* lanes that went slack while winding */
   SWEEP_N_FIGURES
 } sweep_figure;
 
-/* The figures of the winding alone: those a scene without storage stages has (a sweep
- * file of such a scene holds these only, as before storage was wound). */
+/* The figures of the winding alone: those every scene has (a sweep file of a scene
+ * without storage stages or lanes holds these only, as before either was wound). */
 enum { SWEEP_N_WIND_FIGURES = SWEEP_FIG_STATUS + 1 };
 
-/* SWEEP_N_FIGURES when the problem has storage stages, else SWEEP_N_WIND_FIGURES. */
-int sweep_figure_count(const rs_problem *problem);
+/* NULL when a run of `problem` has figure f (the winding's always; storage_* with storage
+ * stages; ridge_height, max_lane_pressure, slack_lanes with lanes), else what the scene
+ * lacks: "no storage stages (docs/storage.md)", "no `lanes:` (docs/lanes.md)". */
+const char *sweep_figure_lacks(const rs_problem *problem, int f);
+/* The figures a run of `problem` has, in table order, into idx[SWEEP_N_FIGURES]; their
+ * count. */
+int sweep_figure_list(const rs_problem *problem, int idx[SWEEP_N_FIGURES]);
 
 typedef struct sweep_figure_info {
   const char *name; /* "core_pressure": the HDF5 dataset, the CSV column, optimize's FIGURE */
@@ -61,7 +70,8 @@ void sweep_figure_names(char *buf, size_t size);
  * the defect assessment's failure (RS_ERR_MEMORY; the two are then NaN, the other
  * figures are filled). A problem with storage stages has them wound
  * here (rs_storage_run) into the storage_* figures, their time in wall_seconds; a storage
- * run that fails leaves the winding's figures and sets the status. */
+ * run that fails leaves the winding's figures and sets the status. A result with lanes
+ * fills ridge_height, max_lane_pressure and slack_lanes (rs_lanes_summarize). */
 rs_status sweep_figures_compute(const rs_problem *problem, const rs_reel_result *res,
                                 rs_status st, double wall_seconds, double fig[SWEEP_N_FIGURES]);
 

@@ -164,7 +164,8 @@ static int evaluate(const opt_problem *p, opt_history *h, const double *x, int p
   rs_status st = rs_scene_load(p->scene, n_sets, (const char *const *)sets, &scene);
   free(sets);
   if (st == RS_OK) {
-    h->storage |= sweep_figure_count(rs_scene_problem(scene)) > SWEEP_N_WIND_FIGURES;
+    for (int j = 0; j < SWEEP_N_FIGURES; ++j)
+      h->recorded[j] |= !sweep_figure_lacks(rs_scene_problem(scene), j);
     st = rs_scene_wind(scene, p->wind, &res);
   }
   if (st == RS_ERR_INTERRUPTED) h->stopped = 1;
@@ -323,26 +324,58 @@ static int start_phase(const opt_problem *p, opt_history *h, int n0)
   return rc;
 }
 
-int opt_run(const opt_problem *p, opt_history *h, char *why, size_t size)
+/* COBYLA's scales: the objective's magnitude at the start point (1 if 0), each
+ * constraint's |X| (when X = 0, the spread of the start's values, else 1). */
+static void search_scales(search *s, int from)
 {
-  memset(h, 0, sizeof *h);
-  h->best = -1;
-  h->n_vars = p->n_vars;
-  int K = p->n_vars;
-  int n0 = p->settings.n_start > 0 ? p->settings.n_start : 4 * K + 4;
-  int maxeval = p->settings.maxeval > 0 ? p->settings.maxeval : 30 * K + 30;
-  if (start_phase(p, h, n0) != 0) {
-    snprintf(why, size, "out of memory");
-    return -1;
+  const opt_problem *p = s->p;
+  const opt_history *h = s->h;
+  double q0 = fabs(opt_quantity(p, h, from, p->objective));
+  s->fscale = q0 > 0 && isfinite(q0) ? q0 : 1;
+  for (int j = 0; j < p->n_cons; ++j) {
+    double X = fabs(p->cons[j].bound);
+    if (X == 0) { /* the spread of the start's values, else 1 */
+      for (int i = 0; i < h->n; ++i) {
+        double q = opt_quantity(p, h, i, p->cons[j].quantity);
+        if (ran(h, i) && isfinite(q)) X = fmax(X, fabs(q));
+      }
+    }
+    s->cscale[j] = X > 0 ? X : 1;
   }
-  h->n_start = h->n;
-  int from = best_feasible(p, h);
-  if (from < 0) from = least_infeasible(p, h);
-  if (from < 0 || h->stopped) { /* nothing ran: nowhere to start from */
-    h->best = best_feasible(p, h);
-    return 0;
-  }
+}
 
+/* NLopt's bounds ([0, 1] per scaled key), objective, constraints, tolerances and budget;
+ * > 0 when NLopt took them all. */
+static nlopt_result search_settings(search *s, cons_data *cd, double *lo, double *hi, int n0,
+                                    int maxeval)
+{
+  const opt_problem *p = s->p;
+  for (int k = 0; k < p->n_vars; ++k) {
+    lo[k] = 0;
+    hi[k] = 1;
+  }
+  nlopt_result r = nlopt_set_lower_bounds(s->opt, lo);
+  if (r > 0) r = nlopt_set_upper_bounds(s->opt, hi);
+  if (r > 0) r = nlopt_set_min_objective(s->opt, objective_fn, s);
+  for (int j = 0; j < p->n_cons && r > 0; ++j) {
+    cd[j] = (cons_data){s, j};
+    r = nlopt_add_inequality_constraint(s->opt, constraint_fn, &cd[j], 1e-9);
+  }
+  if (r > 0) r = nlopt_set_xtol_rel(s->opt, p->settings.xtol_rel);
+  if (r > 0) r = nlopt_set_xtol_abs1(s->opt, p->settings.xtol_abs);
+  if (r > 0) r = nlopt_set_ftol_rel(s->opt, p->settings.ftol_rel);
+  if (r > 0) r = nlopt_set_maxeval(s->opt, maxeval);
+  /* the first simplex: one hypercube cell wide, so COBYLA starts at the start's scale */
+  if (r > 0) r = nlopt_set_initial_step1(s->opt, fmin(0.25, 1.0 / n0));
+  return r;
+}
+
+/* COBYLA from evaluation `from` (its values scaled to [0, 1]). Returns 0, or -1 with the
+ * reason in why (out of memory, NLopt refused its settings). */
+static int cobyla_phase(const opt_problem *p, opt_history *h, int from, int n0, int maxeval,
+                        char *why, size_t size)
+{
+  const int K = p->n_vars;
   search s = {.p = p, .h = h, .last = -1};
   s.cscale = malloc((size_t)(p->n_cons ? p->n_cons : 1) * sizeof *s.cscale);
   double *x = malloc((size_t)K * sizeof *x), *lo = calloc((size_t)K, sizeof *lo),
@@ -355,36 +388,12 @@ int opt_run(const opt_problem *p, opt_history *h, char *why, size_t size)
     rc = -1;
     goto done;
   }
-  double q0 = fabs(opt_quantity(p, h, from, p->objective));
-  s.fscale = q0 > 0 && isfinite(q0) ? q0 : 1;
-  for (int j = 0; j < p->n_cons; ++j) {
-    double X = fabs(p->cons[j].bound);
-    if (X == 0) { /* the spread of the start's values, else 1 */
-      for (int i = 0; i < h->n; ++i) {
-        double q = opt_quantity(p, h, i, p->cons[j].quantity);
-        if (ran(h, i) && isfinite(q)) X = fmax(X, fabs(q));
-      }
-    }
-    s.cscale[j] = X > 0 ? X : 1;
-  }
+  search_scales(&s, from);
   for (int k = 0; k < K; ++k) {
-    hi[k] = 1;
     double span = p->vars[k].hi - p->vars[k].lo;
     x[k] = span > 0 ? (h->values[(size_t)from * (size_t)K + (size_t)k] - p->vars[k].lo) / span : 0;
   }
-  nlopt_result r = nlopt_set_lower_bounds(s.opt, lo);
-  if (r > 0) r = nlopt_set_upper_bounds(s.opt, hi);
-  if (r > 0) r = nlopt_set_min_objective(s.opt, objective_fn, &s);
-  for (int j = 0; j < p->n_cons && r > 0; ++j) {
-    cd[j] = (cons_data){&s, j};
-    r = nlopt_add_inequality_constraint(s.opt, constraint_fn, &cd[j], 1e-9);
-  }
-  if (r > 0) r = nlopt_set_xtol_rel(s.opt, p->settings.xtol_rel);
-  if (r > 0) r = nlopt_set_xtol_abs1(s.opt, p->settings.xtol_abs);
-  if (r > 0) r = nlopt_set_ftol_rel(s.opt, p->settings.ftol_rel);
-  if (r > 0) r = nlopt_set_maxeval(s.opt, maxeval);
-  /* the first simplex: one hypercube cell wide, so COBYLA starts at the start's scale */
-  if (r > 0) r = nlopt_set_initial_step1(s.opt, fmin(0.25, 1.0 / n0));
+  nlopt_result r = search_settings(&s, cd, lo, hi, n0, maxeval);
   if (r <= 0) {
     snprintf(why, size, "NLopt refused the settings (%s)", nlopt_result_to_string(r));
     rc = -1;
@@ -403,6 +412,27 @@ done:
   free(lo);
   free(hi);
   free(cd);
+  return rc;
+}
+
+int opt_run(const opt_problem *p, opt_history *h, char *why, size_t size)
+{
+  memset(h, 0, sizeof *h);
+  h->best = -1;
+  h->n_vars = p->n_vars;
+  int K = p->n_vars;
+  int n0 = p->settings.n_start > 0 ? p->settings.n_start : 4 * K + 4;
+  int maxeval = p->settings.maxeval > 0 ? p->settings.maxeval : 30 * K + 30;
+  if (start_phase(p, h, n0) != 0) {
+    snprintf(why, size, "out of memory");
+    return -1;
+  }
+  h->n_start = h->n;
+  int from = best_feasible(p, h);
+  if (from < 0) from = least_infeasible(p, h);
+  int rc = 0;
+  if (from >= 0 && !h->stopped) /* else nothing ran: nowhere to start from */
+    rc = cobyla_phase(p, h, from, n0, maxeval, why, size);
   h->best = best_feasible(p, h);
   return rc;
 }

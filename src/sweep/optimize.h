@@ -114,12 +114,18 @@ typedef struct opt_history {
   int n_start;     /* evaluations in the start phase */
   int nlopt_result;
   int stopped;     /* the stop callback asked to stop */
-  int storage;     /* the scene has storage stages: the storage_* figures are wound */
+  unsigned char recorded[SWEEP_N_FIGURES]; /* 1: a run's scene has figure f (the storage_*
+                                              figures with stages, the lanes' with lanes) */
 } opt_history;
 void opt_history_free(opt_history *h);
 
 /* How COBYLA ended ("XTOL_REACHED", "MAXEVAL_REACHED", ...; "not run"). */
 const char *opt_result_text(const opt_history *h);
+
+/* 1 when figure f (0 <= f < OPT_N_FIGURES) is in the history's file and the best run's
+ * figures: the winding's always, another that some run's scene has (h->recorded), misfit
+ * with a target profile. */
+int opt_figure_recorded(const opt_problem *p, const opt_history *h, int f);
 
 /* 1 when evaluation i ran (status 0) and meets every constraint. */
 int opt_feasible(const opt_problem *p, const opt_history *h, int i);

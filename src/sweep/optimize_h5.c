@@ -121,8 +121,7 @@ static int write_all(hid_t file, const opt_problem *p, const opt_history *h)
   hid_t fg = bad ? -1 : H5Gcreate2(g, "figures", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (fg < 0) bad = 1;
   for (int f = 0; !bad && f < OPT_N_FIGURES; ++f) {
-    if (f == OPT_MISFIT && !p->target) continue;
-    if (f >= SWEEP_N_WIND_FIGURES && f < SWEEP_N_FIGURES && !h->storage) continue;
+    if (!opt_figure_recorded(p, h, f)) continue;
     for (int i = 0; i < E; ++i) col[i] = h->figures[(size_t)i * OPT_N_FIGURES + (size_t)f];
     bad = dataset(fg, opt_figure_name(f), H5T_NATIVE_DOUBLE, 1, de, col);
   }

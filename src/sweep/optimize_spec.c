@@ -26,6 +26,12 @@ void opt_figure_list(char *buf, size_t size)
   if (used < size) snprintf(buf + used, size - used, ", misfit");
 }
 
+int opt_figure_recorded(const opt_problem *p, const opt_history *h, int f)
+{
+  if (f == OPT_MISFIT) return p->target != NULL;
+  return (f >= 0 && f < SWEEP_N_WIND_FIGURES) || (f >= 0 && f < SWEEP_N_FIGURES && h->recorded[f]);
+}
+
 int opt_quantity_index(const char *name, int n_vars, const opt_var *vars)
 {
   int f = opt_figure_index(name);

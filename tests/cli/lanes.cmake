@@ -24,3 +24,7 @@ rs_cli_test(lanes_summary 0 [[hardest lane +x = 0\.45 m]]
 rs_cli_test(lanes_none_json 0 [["lanes":null]]
             run --json -o lanes-none.h5 ${SC}/small.yaml)
 rs_cli_script(lanes_plot lanes_plot.sh ${LSC}/band.yaml ${SC}/small.yaml)
+# the lanes' figures of compare, sweep and optimize against the run's own summary
+foreach(cmd compare sweep optimize)
+  rs_cli_script(lanes_figures_${cmd} lanes_figures.sh ${cmd} ${LSC}/band.yaml ${SC}/small.yaml)
+endforeach()

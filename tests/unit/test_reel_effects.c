@@ -5,6 +5,8 @@
  *    bit, with every effect on;
  *  - a driver's own effect sets the web tension (the route of a lanes driver): twice the
  *    recipe's tension equals, bit for bit, the problem with twice the tension;
+ *  - a driver's tension phase (web_tension, nip_load) is what the loop and the nip read:
+ *    twice the recipes' tension and load equal, bit for bit, a problem with both doubled;
  *  - the ops are called as effect.h says: begin, tension, wound and after_increment once
  *    per increment or layer, collect and finish once, in the list's order. */
 #include <stdlib.h>
@@ -136,21 +138,21 @@ static rs_status scaled_tension(rs_reel_effect *e, const rs_reel_state *s, rs_re
   return RS_OK;
 }
 
-static void driver_sets_tension(void)
+/* The scene (n_sets overrides) wound stepped with a driver's effect equals, bit for bit, the
+ * scene with n_ref overrides wound by rs_reel_wind; its first layer's T0 is T0 */
+static void driver_equals_recipe(int n_sets, const char **sets, int n_ref, const char **ref_sets,
+                                 const rs_reel_effect *driver, double T0)
 {
-  const char *twice[] = {"winding.tension=400"};
-  rs_scene *sc = load(0, NULL), *ref = load(1, twice);
-  static const rs_reel_effect_ops ops = {.name = "scaled", .tension = scaled_tension};
-  double k = 2.0;
-  rs_reel_effect scaled = {&ops, &k};
+  rs_scene *sc = load(n_sets, sets), *ref = load(n_ref, ref_sets);
   rs_reel_result *a = NULL, *b = NULL;
   if (!sc || !ref) goto out;
-  CHECK(wind_stepped(rs_scene_problem(sc), &scaled, 1, &a) == RS_OK);
+  CHECK(wind_stepped(rs_scene_problem(sc), driver, 1, &a) == RS_OK);
   CHECK(rs_reel_wind(rs_scene_problem(ref), NULL, &b) == RS_OK);
   if (a && b) {
-    CHECK_LOG("core pressure, twice the tension by the driver", a->core_pressure);
-    CHECK_LOG("core pressure, a recipe of twice the tension", b->core_pressure);
-    CHECK(a->wound_on_tension[0] == 400.0);
+    CHECK_LOG("core pressure, by the driver", a->core_pressure);
+    CHECK_LOG("core pressure, by the recipes", b->core_pressure);
+    CHECK_LOG("T0 of the first layer, by the driver", a->wound_on_tension[0]);
+    CHECK(a->wound_on_tension[0] == T0 && a->nip_load[0] == b->nip_load[0]);
     check_same(a, b);
   }
 out:
@@ -158,6 +160,41 @@ out:
   rs_reel_result_destroy(&b);
   rs_scene_destroy(&sc);
   rs_scene_destroy(&ref);
+}
+
+static void driver_sets_tension(void)
+{
+  const char *twice[] = {"winding.tension=400"};
+  static const rs_reel_effect_ops ops = {.name = "scaled", .tension = scaled_tension};
+  double k = 2.0;
+  rs_reel_effect scaled = {&ops, &k};
+  driver_equals_recipe(0, NULL, 1, twice, &scaled, 400.0);
+}
+
+/* a driver's tension phase (effect.h: web_tension, nip_load): k times the recipes' */
+static double phase_tension(const rs_reel_effect *e, const rs_reel_state *s, double r)
+{
+  return *(const double *)e->content * rs_recipe_eval(&s->pb->tension, r);
+}
+
+static double phase_load(const rs_reel_effect *e, const rs_reel_state *s, double r)
+{
+  return *(const double *)e->content * rs_recipe_eval(&s->pb->nip.load, r);
+}
+
+/* the tension phase (the lanes' route): the loop's Ti and w and the nip's solve all read it;
+ * twice the recipes' tension and load equal, bit for bit, a problem with both doubled (a
+ * friction nip solved at every layer: T0 = Ti + mu w = 400 + 0.2 x 800) */
+static void phase_sets_tension_and_load(void)
+{
+  const char *nip[] = {"nip.model=friction", "nip.load=400", "nip.friction.roll=0.2",
+                       "nip.update=every", "nip.update_every=1", "winding.tension=400",
+                       "nip.load=800"};
+  static const rs_reel_effect_ops ops = {
+      .name = "phase", .web_tension = phase_tension, .nip_load = phase_load};
+  double k = 2.0;
+  rs_reel_effect phase = {&ops, &k};
+  driver_equals_recipe(5, nip, 7, nip, &phase, 400.0 + 0.2 * 800.0);
 }
 
 /* a spy effect: counts its calls, and sees the history's last stage already closed */
@@ -244,6 +281,7 @@ static const check_case cases[] = {
     {"stepped_equals_wind", stepped_equals_wind},
     {"driver_sets_tension", driver_sets_tension},
     {"ops_called_as_stated", ops_called_as_stated},
+    {"phase_sets_tension_and_load", phase_sets_tension_and_load},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }

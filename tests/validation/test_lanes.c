@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "lanes_helpers.h"
 #include "reelsim/recipe.h"
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
@@ -33,39 +34,7 @@ static void taper(rs_problem *pb)
   pb->tension.end = 150.0;
 }
 
-static rs_problem *problem(int n_sets, const char **sets)
-{
-  rs_scene *sc = NULL;
-  if (rs_scene_load(small, n_sets, sets, &sc) != RS_OK) printf("  error: %s\n", rs_error_message());
-  CHECK(sc != NULL);
-  if (!sc) return NULL;
-  rs_problem *pb = malloc(sizeof *pb);
-  *pb = *rs_scene_problem(sc);
-  rs_scene_destroy(&sc);
-  return pb;
-}
-
-/* n equal lanes over width W with the caliper factors f (NULL: 1) */
-static void set_lanes(rs_problem *pb, int n, double W, const double *f)
-{
-  memset(&pb->lanes, 0, sizeof pb->lanes);
-  pb->lanes.count = n;
-  for (int i = 0; i < n; ++i) {
-    pb->lanes.width[i] = W / n;
-    pb->lanes.x[i] = W * (i + 0.5) / n;
-    pb->lanes.caliper[i] = f ? f[i] : 1.0;
-    pb->lanes.tension[i] = 1.0;
-  }
-}
-
-static rs_reel_result *wind(const rs_problem *pb)
-{
-  rs_reel_result *res = NULL;
-  rs_status st = rs_reel_wind(pb, NULL, &res);
-  if (st) printf("  error: %s\n", rs_error_message());
-  CHECK(st == RS_OK && res);
-  return st ? (rs_reel_result_destroy(&res), NULL) : res;
-}
+static rs_problem *problem(int n_sets, const char **sets) { return load_problem(small, n_sets, sets); }
 
 static void uniform_equals_1d(void)
 {
@@ -214,8 +183,7 @@ static void thick_band_runs_hard(void)
 {
   rs_problem *pb = problem(0, NULL);
   if (!pb) return;
-  const double f[] = {1.0, 1.0, 1.02, 1.0, 1.0};
-  set_lanes(pb, 5, 1.0, f);
+  set_band(pb);
   rs_reel_result *res = wind(pb);
   if (res) {
     const rs_lanes_result *lr = res->lanes;
@@ -256,8 +224,7 @@ static void roller_on_high_lanes(void)
   const char *sets[] = {"nip.model=friction", "nip.load=2000", "nip.friction.roll=0.2"};
   rs_problem *pb = problem(3, sets);
   if (!pb) return;
-  const double f[] = {1.0, 1.0, 1.02, 1.0, 1.0};
-  set_lanes(pb, 5, 1.0, f);
+  set_band(pb);
   pb->lanes.nip = RS_LANES_NIP_ROLLER;
   rs_reel_result *res = wind(pb);
   if (res) {
