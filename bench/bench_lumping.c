@@ -1,6 +1,7 @@
 /* Lumped increments, before and after (docs/accuracy.md, "Lumping layers"): the error of
  * numerics.layers_per_step = m against layer-by-layer Hakiel accretion, and its cost, for
- * the first scheme (RS_LUMP_FROZEN) and the corrected one (RS_LUMP_CORRECTED).
+ * the first scheme (a block integrated once with its load at its outer radius, kept as the
+ * tests' reference: tests/roll_frozen.h) and the engine's corrected one.
  *
  *   bench_lumping [layers] [rtol] [data-file]
  *
@@ -14,6 +15,7 @@
 #include <time.h>
 
 #include "bench_newsprint.h"
+#include "../tests/roll_frozen.h"
 
 static double cpu_now(void)
 {
@@ -22,7 +24,7 @@ static double cpu_now(void)
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-static rs_roll *wind(const rs_roll_params *p, int n, int m, double T0, double *cpu)
+static rs_roll *wind(const rs_roll_params *p, int n, int m, double T0, double *cpu, int frozen)
 {
   rs_roll *roll = NULL;
   if (rs_roll_create(p, &roll)) {
@@ -34,7 +36,7 @@ static rs_roll *wind(const rs_roll_params *p, int n, int m, double T0, double *c
   double t0 = cpu_now();
   for (int done = 0; done < n;) {
     int k = n - done < m ? n - done : m;
-    if (rs_roll_add_layers(roll, k, T)) {
+    if ((frozen ? roll_add_layers_frozen : rs_roll_add_layers)(roll, k, T)) {
       fprintf(stderr, "%s at %s\n", rs_error_message(), rs_error_where());
       exit(1);
     }
@@ -54,7 +56,7 @@ int main(int argc, char **argv)
   if (rs_radial_law_prepare(&p.radial)) return 1;
 
   double cpu_ref;
-  rs_roll *ref = wind(&p, n, 1, T0, &cpu_ref);
+  rs_roll *ref = wind(&p, n, 1, T0, &cpu_ref, 0);
   rs_roll_stats sref;
   rs_roll_get_stats(ref, &sref);
   const double *sr0 = rs_roll_sigma_r(ref), *st0 = rs_roll_sigma_theta(ref);
@@ -66,10 +68,9 @@ int main(int argc, char **argv)
          "core", "peak", "sigma_r", "sigma_t");
   static const int ms[] = {2, 3, 5, 10, 20, 50, 100};
   for (int scheme = 0; scheme < 2; ++scheme) {
-    p.lumping = scheme == 0 ? RS_LUMP_FROZEN : RS_LUMP_CORRECTED;
     for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) {
       double cpu;
-      rs_roll *r = wind(&p, n, ms[i], T0, &cpu);
+      rs_roll *r = wind(&p, n, ms[i], T0, &cpu, scheme == 0);
       rs_roll_stats s;
       rs_roll_get_stats(r, &s);
       const double *sr = rs_roll_sigma_r(r), *st = rs_roll_sigma_theta(r);

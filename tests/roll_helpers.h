@@ -53,7 +53,10 @@ static inline rs_roll_params hakiel_params(double rc, double t, double Et, doubl
   return p;
 }
 
-static inline rs_roll *wind(const rs_roll_params *p, int n, int per_step, double T0)
+/* a roll of n layers wound per_step at a time at tension T0 by add (rs_roll_add_layers, or
+ * the reference scheme of tests/roll_frozen.h) */
+static inline rs_roll *wind_by(const rs_roll_params *p, int n, int per_step, double T0,
+                               rs_status (*add)(rs_roll *, int, const double *))
 {
   rs_roll *roll = NULL;
   rs_status st = rs_roll_create(p, &roll);
@@ -66,7 +69,7 @@ static inline rs_roll *wind(const rs_roll_params *p, int n, int per_step, double
   for (int i = 0; i < per_step; ++i) T[i] = T0;
   for (int done = 0; done < n;) {
     int m = n - done < per_step ? n - done : per_step;
-    st = rs_roll_add_layers(roll, m, T);
+    st = add(roll, m, T);
     CHECK(st == RS_OK);
     if (st) {
       fprintf(stderr, "%s at %s\n", rs_error_message(), rs_error_where());
@@ -76,6 +79,11 @@ static inline rs_roll *wind(const rs_roll_params *p, int n, int per_step, double
   }
   free(T);
   return roll;
+}
+
+static inline rs_roll *wind(const rs_roll_params *p, int n, int per_step, double T0)
+{
+  return wind_by(p, n, per_step, T0, rs_roll_add_layers);
 }
 
 /* Altmann (1968) closed form of one increment for constant g (Hakiel's ODE):

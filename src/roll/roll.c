@@ -34,10 +34,10 @@
  * give is each layer's own modulus (Hakiel: the pressures just before that layer), so it is
  * a predictor-corrector: integrate with the modulus frozen before the block, take from those
  * sub-increments the mean pressure each node would have carried before each of the layers
- * that reach it, integrate again with the modulus there (RS_LUMP_CORRECTED). Error first
- * order in m - 1, ~60x below the first scheme's (frozen modulus, the whole block's load at
- * the outer radius: RS_LUMP_FROZEN, kept for comparison; docs/accuracy.md). For m = 1 both
- * are exact Hakiel accretion, bit for bit.
+ * that reach it, integrate again with the modulus there. Error first order in m - 1, ~60x
+ * below that of a block integrated once with its whole load at its outer radius (the
+ * tests' reference, tests/roll_frozen.h; docs/accuracy.md). For m = 1 it is exact Hakiel
+ * accretion.
  *
  * An increment need not be integrated from the core: below the newest layers the modulus
  * barely changes, so it keeps the deep part of the last integration from the core and
@@ -47,9 +47,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
-#include "roll/vector2.h"
 #include "util/error.h"
 #include "util/sundials_compat.h"
 
@@ -57,44 +55,17 @@ void rs_roll_destroy(rs_roll **rollp)
 {
   if (!rollp || !*rollp) return;
   rs_roll *roll = *rollp;
-  if (roll->cvode) CVodeFree(&roll->cvode);
-  if (roll->NLS) SUNNonlinSolFree(roll->NLS); /* CVODE does not free a solver it was given */
-  if (roll->fallback_LS) SUNLinSolFree(roll->fallback_LS);
-  if (roll->fallback_A) SUNMatDestroy(roll->fallback_A);
-  if (roll->y) N_VDestroy(roll->y);
-  if (roll->sunctx) SUNContext_Free(&roll->sunctx);
-  free(roll->sigma_r);
-  free(roll->sigma_theta);
-  free(roll->Er);
-  free(roll->lg2);
-  free(roll->lg2_epoch);
-  free(roll->w);
-  free(roll->wstep);
-  free(roll->L);
-  free(roll->xnode);
+  rsi_roll_ode_free(roll);
+  rsi_roll_reference_free(roll);
+  rsi_roll_profile_free(roll);
+  rsi_roll_lazy_free(roll);
   rsi_roll_air_free(roll);
-  free(roll->block_share);
-  free(roll->P_node);
-  free(roll->P_mean);
-  free(roll->dsr);
-  free(roll->dsh);
-  free(roll->Er_ref);
-  free(roll->scan_eps);
-  free(roll->scan_L);
-  free(roll->shape_e);
-  free(roll->shape_h);
-  free(roll->prof_w);
-  free(roll->prof_L);
-  free(roll->lazy_a);
-  free(roll->view_r);
-  free(roll->view_theta);
-  free(roll->lazy_b);
-  free(roll->scratch.u);
-  free(roll->scratch.d);
-  free(roll->scratch.q);
-  free(roll->scratch.c);
-  free(roll->scratch.a);
-  free(roll->scratch.b);
+  double *arrays[] = {roll->sigma_r, roll->sigma_theta, roll->w,   roll->L,
+                      roll->xnode,   roll->P_mean, roll->dsr,
+                      roll->dsh,     roll->scratch.u,   roll->scratch.d, roll->scratch.q,
+                      roll->scratch.c, roll->scratch.a, roll->scratch.b};
+  for (size_t i = 0; i < sizeof arrays / sizeof *arrays; ++i) free(arrays[i]);
+  free(roll->wstep);
   free(roll);
   *rollp = NULL;
 }
@@ -116,8 +87,6 @@ static rs_status roll_check_params(const rs_roll_params *p)
                     p->max_layers);
   if (!(p->rtol > 0.0 && p->rtol < 1.0))
     return RS_ERROR(RS_ERR_INPUT, "rtol must lie in (0, 1) (got %g)", p->rtol);
-  if (p->lumping != RS_LUMP_CORRECTED && p->lumping != RS_LUMP_FROZEN)
-    return RS_ERROR(RS_ERR_INPUT, "unknown lumping scheme %d", (int)p->lumping);
   if (p->reuse != RS_REUSE_ON && p->reuse != RS_REUSE_OFF && p->reuse != RS_REUSE_FIRST_ORDER)
     return RS_ERROR(RS_ERR_INPUT, "unknown reuse setting %d", (int)p->reuse);
   if (p->placement != RS_LOAD_BENEATH && p->placement != RS_LOAD_HAKIEL)
@@ -127,59 +96,22 @@ static rs_status roll_check_params(const rs_roll_params *p)
   return RS_OK;
 }
 
-/* The roll's arrays for params->max_layers layers (nodes 0..cap), zeroed; 0 when one could
- * not be allocated */
+/* The roll's own arrays for params->max_layers layers (nodes 0..cap) and its components',
+ * zeroed; 0 when one could not be allocated */
 static int roll_alloc_arrays(rs_roll *roll, size_t cap)
 {
-  double **node_arrays[] = {
-      &roll->Er,      &roll->lg2,     &roll->w,       &roll->L,       &roll->xnode,
-      &roll->block_share, &roll->P_node, &roll->P_mean, &roll->dsr,  &roll->dsh,
-      &roll->Er_ref,  &roll->scan_eps, &roll->scan_L, &roll->shape_e, &roll->shape_h,
-      &roll->prof_w,  &roll->prof_L,  &roll->lazy_a,  &roll->lazy_b,  &roll->scratch.u,
-      &roll->scratch.d, &roll->scratch.q, &roll->scratch.c, &roll->scratch.a, &roll->scratch.b};
-  int ok = 1;
-  for (size_t i = 0; i < sizeof node_arrays / sizeof *node_arrays; ++i)
-    ok &= (*node_arrays[i] = calloc(cap + 1, sizeof(double))) != NULL;
-  double **layer_arrays[] = {&roll->sigma_r, &roll->sigma_theta, &roll->view_r, &roll->view_theta};
-  for (size_t i = 0; i < sizeof layer_arrays / sizeof *layer_arrays; ++i)
-    ok &= (*layer_arrays[i] = calloc(cap, sizeof(double))) != NULL;
-  roll->lg2_epoch = calloc(cap + 1, sizeof *roll->lg2_epoch);
-  return ok && roll->lg2_epoch;
-}
-
-/* CVODE for the roll: BDF on the 2-vector (w, L) with its fused and specialised
- * operations (vector2.c), the engine's right-hand side and error weights, the exact
- * corrector (roll_corrector.c); 0 on success */
-static int roll_cvode_create(rs_roll *roll)
-{
-  const rs_roll_params *params = &roll->p;
-  if (rs_sundials_context_create(&roll->sunctx) != 0) return -1;
-  roll->y = N_VNew_Serial(2, roll->sunctx);
-  if (!roll->y) return -1;
-  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
-  if (N_VEnableFusedOps_Serial(roll->y, SUNTRUE) != 0) return -1;
-  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
-  if (rs_roll_vector2_specialise(roll->y) != 0) return -1;
-  N_VConst(0.0, roll->y);
-  roll->cvode = CVodeCreate(CV_BDF, roll->sunctx);
-  if (!roll->cvode) return -1;
-  if (rs_sundials_cvode_messages(roll->cvode, roll->sunctx, &roll->cvode_msg) != 0) return -1;
-  if (CVodeInit(roll->cvode, rsi_roll_rhs, log(params->core_radius), roll->y) != CV_SUCCESS)
-    return -1;
-  if (CVodeWFtolerances(roll->cvode, rsi_roll_ewt) != CV_SUCCESS) return -1;
-  if (CVodeSetUserData(roll->cvode, roll) != CV_SUCCESS) return -1;
-  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
-  if (rsi_roll_corrector_attach(roll) != 0) return -1;
-  /* one CVode call = one step here; the per-increment budget is counted by the engine */
-  if (CVodeSetMaxNumSteps(roll->cvode, 10) != CV_SUCCESS) return -1;
-  /* CVODE keeps its step (and its order) while the step it could take is within a band of
-   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
-   * test. Near the surface, where every step must be ~10 % shorter than the last, one step
-   * in five failed. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
-   * on the way up from a restart in the smooth interior, where a partial integration starts
-   * (docs/performance.md has the measurements). */
-  if (CVodeSetEtaFixedStepBounds(roll->cvode, 0.8, 1.05) != CV_SUCCESS) return -1;
-  return 0;
+  double **const node_arrays[] = {&roll->w,   &roll->L,   &roll->xnode,
+                                  &roll->P_mean, &roll->dsr, &roll->dsh,    &roll->scratch.u,
+                                  &roll->scratch.d, &roll->scratch.q, &roll->scratch.c,
+                                  &roll->scratch.a, &roll->scratch.b};
+  double **const layer_arrays[] = {&roll->sigma_r, &roll->sigma_theta};
+  int ok = rsi_roll_calloc(node_arrays, sizeof node_arrays / sizeof *node_arrays, cap + 1);
+  ok &= rsi_roll_calloc(layer_arrays, 2, cap);
+  ok &= rsi_roll_ode_alloc(roll, cap);
+  ok &= rsi_roll_reference_alloc(roll, cap);
+  ok &= rsi_roll_profile_alloc(roll, cap);
+  ok &= rsi_roll_lazy_alloc(roll, cap);
+  return ok;
 }
 
 rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
@@ -194,17 +126,8 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
   if (roll->p.max_steps <= 0) roll->p.max_steps = 100000;
   roll->shift = params->placement == RS_LOAD_BENEATH;
   roll->inv_caliper = 1.0 / params->caliper;
-  roll->lg2_range_max = RS_LG2_RANGE_MAX;
-  roll->lg2_hi = -1; /* no range yet */
   roll->kc = (isinf(params->core_stiffness) ? 0.0 : params->E_theta / params->core_stiffness) +
              params->nu_rtheta - 1.0;
-  roll->shape_top = -1;
-  roll->ref_top = -1;
-  roll->prof_top = -1;
-  roll->prof_next = -1;
-  roll->ref_from = -1;
-  roll->ref_deep_max = RS_REF_DEEP_MAX;
-  roll->lazy_allowed = rsi_roll_lazy_allowed(&roll->p);
   const size_t cap = (size_t)params->max_layers;
   if (!roll_alloc_arrays(roll, cap)) {
     rs_roll_destroy(&roll);
@@ -215,9 +138,9 @@ rs_status rs_roll_create(const rs_roll_params *params, rs_roll **out)
     rs_roll_destroy(&roll);
     return st;
   }
-  if (roll_cvode_create(roll) != 0) {
+  if (rsi_roll_ode_create(roll) != 0) {
     st = RS_ERROR(RS_ERR_INTERNAL, "cannot set up CVODE for the roll: %s",
-                  roll->cvode_msg[0] ? roll->cvode_msg : "allocation failed");
+                  roll->ode.cvode_msg[0] ? roll->ode.cvode_msg : "allocation failed");
     rs_roll_destroy(&roll);
     return st;
   }
@@ -231,21 +154,18 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
   if (roll->n + m > roll->p.max_layers)
     return RS_ERROR(RS_ERR_INPUT, "the roll holds %d layers; cannot wind %d more onto %d",
                     roll->p.max_layers, m, roll->n);
-  double total = 0.0;
-  for (int i = 0; i < m; ++i) {
+  for (int i = 0; i < m; ++i)
     if (!(T0[i] >= 0.0) || !isfinite(T0[i]))
       return RS_ERROR(RS_ERR_INPUT, "wound-on tension of layer %d must be finite and >= 0 (got %g N/m)",
                       roll->n + i + 1, T0[i]);
-    total += T0[i];
-  }
   const int k_old = roll->n, k = roll->n + m;
   const int top = k - roll->shift; /* the highest node the increment loads */
   /* a lumped block's corrector reads the pressures at every node: no lazy deep part */
-  roll->lazy_ok = m == 1 && roll->lazy_allowed;
+  rsi_roll_lazy_configure(roll, m);
   /* a block, or Hakiel's hoop stresses, read w at every node: w stored node by node */
   roll->w_lazy = m == 1 && roll->shift;
   /* the deep part corrected for the drift (roll_profile.c): one layer and its load beneath */
-  roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
+  rsi_roll_profile_configure(roll, roll->lazy.ok && roll->shift && roll->p.reuse == RS_REUSE_ON);
   if (m > 1) rsi_roll_lazy_flush(roll, 0);
 
   /* with entrained air, the new nodes at their real radii (roll_air.c) */
@@ -259,10 +179,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
     return st;
   }
 
-  /* for one layer the two schemes are the same increment: one code path, bit for bit */
-  if (roll->p.lumping == RS_LUMP_FROZEN && m > 1) {
-    st = rsi_roll_commit_frozen(roll, m, T0, total);
-  } else if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
+  if (m == 1) { /* rsi_roll_block_increment and rsi_roll_commit, fused where it can */
     st = rsi_roll_add_one(roll, T0[0]);
   } else {
     rsi_roll_block_increment(roll, k_old, m, T0, roll->P_mean);
@@ -299,7 +216,7 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
 int rs_roll_layers(const rs_roll *roll) { return roll->n; }
 double rs_roll_layer_radius(const rs_roll *roll, int j)
 {
-  return roll->geom && j + 1 <= roll->n ? roll->node_r[j + 1] : roll->p.core_radius + (j + 1) * roll->p.caliper;
+  return roll->air.geom && j + 1 <= roll->n ? roll->air.node_r[j + 1] : roll->p.core_radius + (j + 1) * roll->p.caliper;
 }
 double rs_roll_outer_radius(const rs_roll *roll)
 {
@@ -308,7 +225,7 @@ double rs_roll_outer_radius(const rs_roll *roll)
 /* the stresses in full: the lazy deep part applied (roll_lazy.c; logically const) */
 const double *rs_roll_sigma_r(const rs_roll *roll)
 {
-  return roll->lazy_top > 0 ? rsi_roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
+  return roll->lazy.top > 0 ? rsi_roll_lazy_view_r((rs_roll *)roll) : roll->sigma_r;
 }
 double rs_roll_layer_sigma_r(const rs_roll *roll, int j)
 {
@@ -318,16 +235,16 @@ const double *rs_roll_sigma_theta(const rs_roll *roll)
 {
   rs_roll *r = (rs_roll *)roll; /* caches of the state: logically const */
   if (roll->hoop_stale) { /* the turns' equilibrium, from the radial stresses in full */
-    if (roll->geom)
+    if (roll->air.geom)
       rsi_roll_hoop_from_equilibrium_at(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
-                                    roll->node_r, roll->p.caliper, roll->n);
+                                    roll->air.node_r, roll->p.caliper, roll->n);
     else
       rsi_roll_hoop_from_equilibrium(r->sigma_theta, rs_roll_sigma_r(roll), rsi_roll_lazy_sigma(roll, 0),
                                  roll->p.core_radius, roll->p.caliper, roll->n);
     r->hoop_stale = 0; /* until the next increment */
     return roll->sigma_theta;
   }
-  return roll->lazy_top > 0 && !roll->shift ? rsi_roll_lazy_view_theta(r) : roll->sigma_theta;
+  return roll->lazy.top > 0 && !roll->shift ? rsi_roll_lazy_view_theta(r) : roll->sigma_theta;
 }
 double rs_roll_core_pressure(const rs_roll *roll) { return -rsi_roll_lazy_sigma(roll, 0); }
 double rs_roll_surface_modulus(const rs_roll *roll)

@@ -20,15 +20,6 @@
 
 typedef struct rs_roll rs_roll;
 
-/* How a lumped increment (m > 1 layers, numerics.layers_per_step) is computed; for m = 1
- * both are Hakiel accretion, bit for bit. docs/roll-model.md, "Lumped increments". */
-typedef enum rs_lumping {
-  RS_LUMP_CORRECTED = 0, /* each layer's load at its own radius; predictor-corrector on the
-                            modulus (the mean pressure the m layers would have seen) */
-  RS_LUMP_FROZEN = 1     /* the first scheme: the block's load at its outer radius, modulus
-                            frozen before the block (kept for comparison) */
-} rs_lumping;
-
 /* The accuracy rtol stands for, as a share of it. The error correction leaves each
  * integration within a few hundredths of rtol, a tenth at most (docs/roll-model.md); what
  * it does not see is held to RS_ACCURACY_PER_RTOL x rtol directly: the deep reuse (whose
@@ -48,7 +39,6 @@ typedef struct rs_roll_params {
   double rtol;             /* CVODE relative tolerance on (w, ln y) */
   double atol;             /* CVODE absolute tolerance; <= 0: rtol */
   long max_steps;          /* CVODE internal steps per increment; <= 0: 100000 */
-  rs_lumping lumping;      /* lumped increments; 0 = RS_LUMP_CORRECTED */
   rs_reuse reuse;          /* 0 = RS_REUSE_ON */
   rs_load_placement placement; /* 0 = RS_LOAD_BENEATH */
   rs_correction correction; /* 0 = RS_CORRECTION_ON */

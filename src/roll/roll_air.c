@@ -11,7 +11,7 @@
  * rs_air_series_modulus), written E - E (c E) / (t + c E): no branch, so the loop
  * vectorises (every node at every increment), and a node without a film (c = 0) keeps E_r
  * bit for bit.
- * With the nodes at their real radii (roll->geom) the stack is homogenised over the real
+ * With the nodes at their real radii (roll->air.geom) the stack is homogenised over the real
  * pitch p = t + h of each node's interval: the web carries the hoop force, so over the
  * pitch E_theta' = E_theta t / p, and the radial compliances add over it,
  * p / E_r' = t / E_r + c; the ODE's g^2 = E_theta' / E_r' = (E_theta / E) (t / p)^2 with E the
@@ -27,8 +27,8 @@ void rsi_roll_air_series(const rs_roll *roll, const double *restrict P, double *
     const double c = h[j] * pa / (q * q), e = E[j];
     E[j] = e - e * (c * e) / (t + c * e);
   }
-  if (roll->geom) {
-    const double *restrict f = roll->pitch_sq;
+  if (roll->air.geom) {
+    const double *restrict f = roll->air.pitch_sq;
     for (int j = lo; j < hi; ++j) E[j] *= f[j];
   }
 }
@@ -39,28 +39,28 @@ void rsi_roll_air_series(const rs_roll *roll, const double *restrict P, double *
 rs_status rsi_roll_air_alloc(rs_roll *roll)
 {
   const rs_roll_params *p = &roll->p;
-  roll->kc0 = roll->kc;
+  roll->air.kc0 = roll->kc;
   if (!p->air_film || !p->air_radius || !roll->shift) return RS_OK;
   const size_t cap = (size_t)p->max_layers;
-  roll->node_r = malloc((cap + 1) * sizeof(double));
-  roll->inv_pitch = malloc((cap + 1) * sizeof(double));
-  roll->pitch_sq = malloc((cap + 1) * sizeof(double));
-  if (!roll->node_r || !roll->inv_pitch || !roll->pitch_sq)
+  roll->air.node_r = malloc((cap + 1) * sizeof(double));
+  roll->air.inv_pitch = malloc((cap + 1) * sizeof(double));
+  roll->air.pitch_sq = malloc((cap + 1) * sizeof(double));
+  if (!roll->air.node_r || !roll->air.inv_pitch || !roll->air.pitch_sq)
     return RS_ERROR(RS_ERR_MEMORY, "cannot allocate a roll of %d layers", p->max_layers);
   for (size_t j = 0; j <= cap; ++j) {
-    roll->node_r[j] = p->core_radius + (double)j * p->caliper;
-    roll->inv_pitch[j] = roll->inv_caliper;
-    roll->pitch_sq[j] = 1.0;
+    roll->air.node_r[j] = p->core_radius + (double)j * p->caliper;
+    roll->air.inv_pitch[j] = roll->inv_caliper;
+    roll->air.pitch_sq[j] = 1.0;
   }
   return RS_OK;
 }
 
 void rsi_roll_air_free(rs_roll *roll)
 {
-  free(roll->node_r);
-  free(roll->inv_pitch);
-  free(roll->pitch_sq);
-  roll->node_r = roll->inv_pitch = roll->pitch_sq = NULL;
+  free(roll->air.node_r);
+  free(roll->air.inv_pitch);
+  free(roll->air.pitch_sq);
+  roll->air.node_r = roll->air.inv_pitch = roll->air.pitch_sq = NULL;
 }
 
 /* The nodes k_old + 1..k an increment creates, at the radii the caller gave, from the first
@@ -69,22 +69,22 @@ void rsi_roll_air_free(rs_roll *roll)
  * scale by t / p_0, so kc + 1 = (E_theta / E_c + nu) t / p_0. */
 rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k)
 {
-  if (!roll->node_r) return RS_OK;
+  if (!roll->air.node_r) return RS_OK;
   const double t = roll->p.caliper;
   for (int j = k_old + 1; j <= k; ++j) {
-    if (!roll->geom && roll->p.air_film[j - 1] != 0.0) roll->geom = 1;
-    if (!roll->geom) continue;
-    const double r = roll->p.air_radius[j], p = r - roll->node_r[j - 1];
+    if (!roll->air.geom && roll->p.air_film[j - 1] != 0.0) roll->air.geom = 1;
+    if (!roll->air.geom) continue;
+    const double r = roll->p.air_radius[j], p = r - roll->air.node_r[j - 1];
     if (!(p > 0.0) || !isfinite(r))
       return RS_ERROR(RS_ERR_INPUT, "entrained air: node %d at r = %g m is not above node %d at %g m",
-                      j, r, j - 1, roll->node_r[j - 1]);
-    roll->node_r[j] = r;
+                      j, r, j - 1, roll->air.node_r[j - 1]);
+    roll->air.node_r[j] = r;
     roll->xnode[j] = log(r);
-    roll->inv_pitch[j - 1] = 1.0 / p;
-    roll->pitch_sq[j - 1] = (p / t) * (p / t);
-    roll->inv_pitch[j] = roll->inv_caliper; /* until the node above it exists */
-    roll->pitch_sq[j] = 1.0;
-    if (j == 1) roll->kc = (roll->kc0 + 1.0) * (t / p) - 1.0;
+    roll->air.inv_pitch[j - 1] = 1.0 / p;
+    roll->air.pitch_sq[j - 1] = (p / t) * (p / t);
+    roll->air.inv_pitch[j] = roll->inv_caliper; /* until the node above it exists */
+    roll->air.pitch_sq[j] = 1.0;
+    if (j == 1) roll->kc = (roll->air.kc0 + 1.0) * (t / p) - 1.0;
   }
   return RS_OK;
 }
@@ -93,12 +93,12 @@ rs_status rsi_roll_air_nodes(rs_roll *roll, int k_old, int k)
  * holds r, found from the last one (CVODE's calls cluster); 1/p_j in *inv_pitch */
 double rsi_roll_air_coord(rs_roll *roll, double r, double *inv_pitch)
 {
-  const double *R = roll->node_r;
-  const int last = roll->nodes_in_use - 1;
-  int j = roll->geom_j < 0 ? 0 : roll->geom_j > last ? last : roll->geom_j;
+  const double *R = roll->air.node_r;
+  const int last = roll->ode.nodes_in_use - 1;
+  int j = roll->air.geom_j < 0 ? 0 : roll->air.geom_j > last ? last : roll->air.geom_j;
   while (j > 0 && r < R[j]) --j;
   while (j < last && r >= R[j + 1]) ++j;
-  roll->geom_j = j;
-  *inv_pitch = roll->inv_pitch[j];
-  return j + (r - R[j]) * roll->inv_pitch[j];
+  roll->air.geom_j = j;
+  *inv_pitch = roll->air.inv_pitch[j];
+  return j + (r - R[j]) * roll->air.inv_pitch[j];
 }

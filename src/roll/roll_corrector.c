@@ -91,11 +91,11 @@ int rsi_roll_corrector_selftest(int sabotage_it, double *error)
   int pass = 0;
   if (rs_sundials_context_create(&ctx) != 0) return 0;
   y = N_VNew_Serial(2, ctx);
-  if (!y || rs_roll_vector2_specialise(y) != 0) goto done;
+  if (!y || rsi_roll_vector2_specialise(y) != 0) goto done;
   NV_DATA_S(y)[0] = 0.0;
   NV_DATA_S(y)[1] = 0.0;
   cv = CVodeCreate(CV_BDF, ctx);
-  nls = cv ? rs_roll_newton2_create(ctx, y, cv, -2.0, -1.0) : NULL;
+  nls = cv ? rsi_roll_newton2_create(ctx, y, cv, -2.0, -1.0) : NULL;
   if (!nls || CVodeInit(cv, st_rhs, 0.0, y) != CV_SUCCESS ||
       CVodeSStolerances(cv, ST_RTOL, 1e-2 * ST_RTOL) != CV_SUCCESS)
     goto done;
@@ -105,7 +105,7 @@ int rsi_roll_corrector_selftest(int sabotage_it, double *error)
     nls->ops->setctestfn = sab_set_ctest;
     nls->ops->solve = sab_solve;
   }
-  if (rs_roll_newton2_attach(nls) != 0) goto done;
+  if (rsi_roll_newton2_attach(nls) != 0) goto done;
   sunrealtype t = 0.0;
   if (CVodeSetMaxNumSteps(cv, 5000) == CV_SUCCESS && CVode(cv, ST_X1, y, &t, CV_NORMAL) == CV_SUCCESS) {
     const double c = atanh(1.0 / ST_G), u = ST_G * tanh(ST_G * ST_X1 + c);
@@ -138,7 +138,8 @@ int rsi_roll_corrector_exact_trusted(void)
 
 void rsi_roll_corrector_force_newton(int on) { atomic_store(&newton_forced, on != 0); }
 
-/* CVODE's Jacobian function for the dense fallback: rsi_roll_jac's 2 x 2 in a SUNMatrix */
+/* CVODE's Jacobian function for the dense fallback: the increment ODE's exact Jacobian
+ * (roll_ode.c), J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
 static int jac_dense(sunrealtype x, N_Vector y, N_Vector fy, SUNMatrix J, void *user, N_Vector t1,
                      N_Vector t2, N_Vector t3)
 {
@@ -146,30 +147,33 @@ static int jac_dense(sunrealtype x, N_Vector y, N_Vector fy, SUNMatrix J, void *
   (void)t1;
   (void)t2;
   (void)t3;
-  double Jl[2][2];
+  (void)x;
   rs_roll *roll = user;
   ++roll->stats.jac_evals;
-  if (rsi_roll_jac(x, NV_DATA_S(y), Jl, user) != 0) return 1;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) SM_ELEMENT_D(J, i, j) = Jl[i][j];
+  SM_ELEMENT_D(J, 0, 0) = -(2.0 + 2.0 * NV_DATA_S(y)[0]);
+  SM_ELEMENT_D(J, 0, 1) = 0.0;
+  SM_ELEMENT_D(J, 1, 0) = 1.0;
+  SM_ELEMENT_D(J, 1, 1) = 0.0;
   return 0;
 }
 
-int rsi_roll_corrector_attach(rs_roll *roll)
+int rsi_roll_corrector_attach(SUNContext ctx, void *cvode, N_Vector y, SUNNonlinearSolver *nls,
+                              SUNLinearSolver *ls, SUNMatrix *A)
 {
+  *nls = NULL;
+  *ls = NULL;
+  *A = NULL;
   if (rsi_roll_corrector_exact_trusted()) {
     /* the corrector equations solved exactly (vector2.c): rsi_roll_rhs is
      * (g^2(x) - 1 - 2w - w^2, w), quadratic in w with g^2 independent of the state */
-    roll->NLS = rs_roll_newton2_create(roll->sunctx, roll->y, roll->cvode, -2.0, -1.0);
-    if (!roll->NLS || rs_roll_newton2_attach(roll->NLS) != 0) return -1;
-    return 0;
+    *nls = rsi_roll_newton2_create(ctx, y, cvode, -2.0, -1.0);
+    return *nls && rsi_roll_newton2_attach(*nls) == 0 ? 0 : -1;
   }
   /* CVODE's own Newton solver (made by CVodeInit) with a dense linear solver */
-  roll->fallback_A = SUNDenseMatrix(2, 2, roll->sunctx);
-  roll->fallback_LS = roll->fallback_A ? SUNLinSol_Dense(roll->y, roll->fallback_A, roll->sunctx) : NULL;
-  if (!roll->fallback_LS ||
-      CVodeSetLinearSolver(roll->cvode, roll->fallback_LS, roll->fallback_A) != CV_SUCCESS ||
-      CVodeSetJacFn(roll->cvode, jac_dense) != CV_SUCCESS)
+  *A = SUNDenseMatrix(2, 2, ctx);
+  *ls = *A ? SUNLinSol_Dense(y, *A, ctx) : NULL;
+  if (!*ls || CVodeSetLinearSolver(cvode, *ls, *A) != CV_SUCCESS ||
+      CVodeSetJacFn(cvode, jac_dense) != CV_SUCCESS)
     return -1;
   return 0;
 }

@@ -3,13 +3,14 @@
 #ifndef REELSIM_ROLL_CORRECTOR_H
 #define REELSIM_ROLL_CORRECTOR_H
 
-struct rs_roll;
+#include <cvode/cvode.h>
 
-/* Attaches to roll->cvode the exact corrector (roll->NLS, vector2.c) when the self-test
- * trusts it, else CVODE's own Newton iteration with a dense linear solver
- * (roll->fallback_LS, roll->fallback_A; roll->NLS stays NULL). 0, or -1 if CVODE refuses
- * or memory runs out (the caller destroys the roll). */
-int rsi_roll_corrector_attach(struct rs_roll *roll);
+/* Attaches to cvode (its user data the roll) the exact corrector (*nls, vector2.c) when the
+ * self-test trusts it, else CVODE's own Newton iteration with a dense linear solver (*ls,
+ * *A; *nls NULL). The caller stores and frees them (roll_ode.c). 0, or -1 if CVODE refuses
+ * or memory runs out (what was made is in *nls, *ls, *A). */
+int rsi_roll_corrector_attach(SUNContext ctx, void *cvode, N_Vector y, SUNNonlinearSolver *nls,
+                              SUNLinearSolver *ls, SUNMatrix *A);
 /* Whether the exact corrector may be used: its self-test, run once per process on first
  * call (thread-safe), passed, and no test forced the fallback */
 int rsi_roll_corrector_exact_trusted(void);

@@ -1,6 +1,6 @@
 /* The stress increment of a block of layers from one integration's (w, ln y), by the
- * one-layer decays down the roll, and its commit to the roll's stresses (both lumping
- * schemes, both load placements; docs/roll-model.md). */
+ * one-layer decays down the roll, and its commit to the roll's stresses (both load
+ * placements; docs/roll-model.md). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -17,10 +17,7 @@
 /* e[lo..hi) *= s, what falls below 1e-290 cleared (a plain loop: it vectorises) */
 static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s)
 {
-  for (int j = lo; j < hi; ++j) {
-    const double v = e[j] * s;
-    e[j] = v > 1e-290 ? v : 0.0;
-  }
+  for (int j = lo; j < hi; ++j) e[j] = roll_decay_clear(e[j] * s);
 }
 
 /* e_j = y(r_j)/y(r_top) for j = top-1 .. lo, into e[lo..top): the products, from the top
@@ -38,7 +35,7 @@ void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, i
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
    * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
-   * operations, not five) and the pass that follows at the sums, as it always did. The flag
+   * operations, not five) and the pass that follows at the sums. The flag
    * is a compare mask as wide as a double, so that the OR stays in the vector registers */
   int64_t bad = 0;
   for (int j = lo; j < top; ++j) {
@@ -118,24 +115,13 @@ static double roll_decays(const double *restrict L, double *restrict e, int lo, 
  * first scale, *c2 the second */
 double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2)
 {
-  const double C = roll->start_C;
+  const double C = roll->ref.start_C;
   if (C == 0.0) {
     *c2 = 0.0;
     return c;
   }
   *c2 = c * C;
-  return c * (1.0 - C * roll->prof_L[lo]);
-}
-
-/* max(m, |shape_e_j|, and with Hakiel's placement |shape_h_j|) over the nodes [lo, hi]
- * (a NaN gives a NaN: no bound) */
-static double roll_shape_bound(const rs_roll *roll, int lo, int hi, double m)
-{
-  const double *restrict se = roll->shape_e, *restrict sh = roll->shape_h;
-  for (int j = lo; j <= hi; ++j) m = fabs(se[j]) > m || se[j] != se[j] ? fabs(se[j]) : m;
-  if (!roll->shift)
-    for (int j = lo; j <= hi; ++j) m = fabs(sh[j]) > m || sh[j] != sh[j] ? fabs(sh[j]) : m;
-  return m;
+  return c * (1.0 - C * roll->prof.L[lo]);
 }
 
 /* The block's own nodes bottom..bottom + m - 1 (rsi_roll_block_increment): dsr, dsh and,
@@ -160,49 +146,6 @@ static double roll_block_nodes(rs_roll *roll, int bottom, int m, const double *T
   }
   *Vout = V;
   return S;
-}
-
-/* A reference's increment (an integration from the core): its shape kept, e = dsr below the
- * block and 1 at its bottom node (a later start there still reads the shape), with its
- * bound (the decays' own, e_bound, where only shape_e counts); its profile built for the
- * drift to come (roll_profile.c), in use once the increment, -S e below the block, is
- * committed */
-static void roll_reference_shape(rs_roll *roll, int bottom, double S, double e_bound, int block)
-{
-  const double *w = roll->w;
-  memcpy(roll->shape_e, roll->dsr, (size_t)bottom * sizeof(double));
-  roll->shape_e[bottom] = 1.0;
-  if (!roll->shift)
-    for (int j = 0; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-  roll->shape_top = bottom;
-  roll->shape_max = roll->shift ? fmax(1.0, e_bound) : roll_shape_bound(roll, 0, bottom, 0.0);
-  roll->prof_top = -1;
-  roll->prof_next = -1;
-  if (roll->prof_on && !block) {
-    rsi_roll_wstep_store(roll, bottom);
-    roll->prof_next = rsi_roll_profile_build(roll, 0, bottom);
-    roll->ref_c_next = -S;
-  }
-}
-
-/* The shape above a start lo follows this integration (e = dsr there), in the reference's
- * scale, so that a later increment may start higher and still read its deep part as
- * c x shape; not where that scale would overflow (then later starts stay below shape_top) */
-static void roll_shape_follow(rs_roll *roll, int lo, int bottom, double e_bound)
-{
-  const double *w = roll->w, *dsr = roll->dsr;
-  const double scale = roll->shape_e[lo] / dsr[lo];
-  if (!(scale < 1e200)) {
-    roll->shape_top = lo; /* above it the shape is stale */
-    return;
-  }
-  for (int j = lo; j < bottom; ++j) roll->shape_e[j] = scale * dsr[j];
-  roll->shape_e[bottom] = scale;
-  if (!roll->shift)
-    for (int j = lo; j <= bottom; ++j) roll->shape_h[j] = roll->shape_e[j] * (1.0 + w[j]);
-  roll->shape_top = bottom;
-  roll->shape_max = roll->shift ? fmax(roll->shape_max, fmax(scale, scale * e_bound))
-                                : roll_shape_bound(roll, lo, bottom, roll->shape_max);
 }
 
 /* The increment of a block of m layers wound onto k_old, from one integration's (w, L).
@@ -234,34 +177,38 @@ void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0,
   if (shift) /* the outermost layer: no load above it */
     roll->dsr[k_old + m] = 0.0;
   double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  const int j0 = roll->start;
-  int lo = j0 >= 1 && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280 ? j0 : 0;
+  const int j0 = roll->ref.start;
+  int lo = j0 >= 1 && j0 <= roll->ref.shape_top && roll->ref.shape_e[j0] > 1e-280 ? j0 : 0;
   /* an increment computed node by node from the core adds to the stored values of nodes
    * that are lazy: their drift bound would not see it, so they are brought up to date */
-  if (lo == 0 && roll->lazy_top > 0) rsi_roll_lazy_flush(roll, 0);
+  if (lo == 0 && roll->lazy.top > 0) rsi_roll_lazy_flush(roll, 0);
   const double e_bound = roll_decays(roll->L, dsr, lo, bottom);
-  if (j0 == 0) roll_reference_shape(roll, bottom, S, e_bound, mean != NULL);
+  if (j0 == 0) { /* a reference's increment: its shape, and its profile for the drift to come */
+    rsi_roll_shape_reference(roll, dsr, bottom, e_bound);
+    if (roll->prof.on && !mean) rsi_roll_wstep_store(roll, bottom); /* the profile reads w */
+    rsi_roll_profile_reference(roll, bottom, S, mean != NULL);
+  }
   roll->deep_lo = lo;
-  roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->shape_e[lo] : 0.0;
+  roll->c_deep = lo > 0 ? -S * dsr[lo] / roll->ref.shape_e[lo] : 0.0;
   roll->c2_deep = 0.0;
   if (lo > 0 && lo == j0) roll->c_deep = rsi_roll_deep_scales(roll, lo, roll->c_deep, &roll->c2_deep);
-  if (j0 == 0 && !mean && roll->lazy_ok && roll->lazy_top == 0 && roll->last_start > 2 &&
-      roll->last_start <= bottom) {
+  if (j0 == 0 && !mean && roll->lazy.ok && roll->lazy.top == 0 && roll->ref.last_start > 2 &&
+      roll->ref.last_start <= bottom) {
     /* a reference's increment is -S times its own shape everywhere below the block: the
      * nodes well below where the last partial integration started can take it lazily at
      * once (their drift is zero now: the modulus was just integrated), so the next
      * increment does not gather, evaluate and scan the whole roll again */
-    rsi_roll_lazy_freeze(roll, roll->last_start - 1);
-    if (roll->lazy_top > 0) {
-      roll->deep_lo = lo = roll->lazy_top;
+    rsi_roll_lazy_freeze(roll, roll->ref.last_start - 1);
+    if (roll->lazy.top > 0) {
+      roll->deep_lo = lo = roll->lazy.top;
       roll->c_deep = -S;
     }
   }
-  if (lo > 0 && dsr[lo] > 1e-280) roll_shape_follow(roll, lo, bottom, e_bound);
+  if (lo > 0 && dsr[lo] > 1e-280) rsi_roll_shape_follow(roll, dsr, lo, bottom, e_bound);
   if (mean) {
     for (int j = lo; j < bottom; ++j) mean[j] = V * dsr[j] / m;
-    const double cm = lo > 0 ? V * dsr[lo] / (m * roll->shape_e[lo]) : 0.0;
-    for (int j = 0; j < lo; ++j) mean[j] = cm * roll->shape_e[j];
+    const double cm = lo > 0 ? V * dsr[lo] / (m * roll->ref.shape_e[lo]) : 0.0;
+    for (int j = 0; j < lo; ++j) mean[j] = cm * roll->ref.shape_e[j];
   }
   for (int j = lo; j < bottom; ++j) dsr[j] *= -S;
   if (!shift)
@@ -284,11 +231,10 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
    * is (a tension near the largest double overflows there: the node is looked for) */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
-  if (lo > 0 && !(fabs(c) * roll->shape_max < INFINITY &&
-                  (c2 == 0.0 || fabs(c2) * roll->shape_max * roll->prof_max < INFINITY)))
+  if (lo > 0 && !roll_deep_bounded(roll, c, c2))
     for (int j = 0; j < lo; ++j)
-      if (!isfinite(c * roll->shape_e[j]) || (!roll->shift && !isfinite(c * roll->shape_h[j])) ||
-          (c2 != 0.0 && !isfinite(roll->shape_e[j] * (c + c2 * roll->prof_L[j]))))
+      if (!isfinite(c * roll->ref.shape_e[j]) || (!roll->shift && !isfinite(c * roll->ref.shape_h[j])) ||
+          (c2 != 0.0 && !isfinite(roll->ref.shape_e[j] * (c + c2 * roll->prof.L[j]))))
         return j == 0 ? RS_ERROR(RS_ERR_SOLVER,
                                  "non-finite stress increment at the core (outer radius %.9g m)",
                                  roll_node_radius(roll, k))
@@ -314,81 +260,6 @@ static rs_status roll_check_increment(const rs_roll *roll, const double *ds, con
   return RS_OK;
 }
 
-/* The first lumping scheme (RS_LUMP_FROZEN): every block layer's sub-increment taken as
- * the outermost one's (load at s, frozen modulus), the block's nodes getting the share of
- * the block's tension wound at or above them. Kept for comparison (docs/accuracy.md). */
-rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total)
-{
-  const int k_old = roll->n, k = roll->n + m, shift = roll->shift, top = k - shift;
-  const double t = roll->p.caliper, s = roll_node_radius(roll, top);
-  double above = 0.0;
-  for (int i = m - 1; i >= 0; --i) {
-    above += T0[i];
-    roll->block_share[i] = total > 0.0 ? above / total : 0.0;
-  }
-  const double scale = -total / s;
-  /* First every node's increment (ds, and ds + r ds'), then the state: an increment that
-   * fails leaves the roll exactly as it was, every finished layer intact. From the top
-   * down, e_j = y(r_j)/y(s) by the same one-layer decays as the corrected scheme
-   * (rsi_roll_block_increment). */
-  double *restrict dsr = roll->dsr, *restrict dsh = roll->dsh;
-  roll_decays(roll->L, dsr, 0, top); /* e_j = y(r_j)/y(s), j < top */
-  dsr[top] = 1.0;
-  for (int j = 0; j <= top; ++j) {
-    const double ds = scale * dsr[j];
-    dsr[j] = ds;
-    dsh[j] = ds * (1.0 + roll->w[j]);
-  }
-  if (shift) { /* the outermost layer's outer face: traction free */
-    dsr[k] = 0.0;
-    dsh[k] = 0.0;
-  }
-  roll->deep_lo = 0;
-  roll->c_deep = roll->c2_deep = 0.0;
-  rs_status st = roll_check_increment(roll, dsr, dsh, k);
-  if (st) return st;
-  /* node by node on the nodes that held the reference's values: no longer c x shape */
-  roll->prof_top = -1;
-  roll->core_sigma += dsr[0];
-  for (int j = 1; j <= k; ++j) {
-    double ds = dsr[j], hoop = dsh[j];
-    if (j <= k_old) {
-      roll->sigma_r[j - 1] += ds;
-      roll->sigma_theta[j - 1] += hoop;
-    } else {
-      int b = j - k_old - 1; /* position in the block, 0 = innermost */
-      /* the tension wound at or above the node's radius: with the load beneath a layer,
-       * a block layer's own tension is not on its outer face */
-      double share_above = b + 1 < m ? roll->block_share[b + 1] : 0.0;
-      double share_at = shift ? share_above : roll->block_share[b];
-      roll->sigma_r[j - 1] = share_at * ds;
-      roll->sigma_theta[j - 1] = T0[b] / t + share_above * hoop;
-    }
-  }
-  if (shift) roll->hoop_stale = 1;
-  return RS_OK;
-}
-
-/* The deep part of an increment committed: below node lo (> 0) it is c x shape + c2 x shape
- * x prof_L (rsi_roll_block_increment), which the lazy nodes take in their common scales
- * and the nodes from the lazy frontier (or 1) to lo explicitly; the core takes c x shape_e
- * there (prof_L is 0 at the core), or ds0 for an increment computed node by node (lo = 0).
- * Returns the lowest node with its own stored value (1, or the lazy frontier). Shared by
- * rsi_roll_commit and rsi_roll_add_one: one formula. */
-int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0)
-{
-  int j0 = 1;
-  if (lo > 0 && roll->lazy_top > 0) {
-    roll->lazy_c += c;
-    roll->lazy_c2 += c2;
-    j0 = roll->lazy_top;
-  } else {
-    roll->core_sigma += lo > 0 ? c * roll->shape_e[0] : ds0;
-  }
-  rsi_roll_shape_add(roll, j0, lo, c, c2);
-  return j0;
-}
-
 /* Adds dsr (and with Hakiel's placement dsh) to the roll; the block's own layers start
  * from their own share. */
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
@@ -402,20 +273,10 @@ rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0)
    * the lazy nodes take it in their common scale */
   const int lo = roll->deep_lo;
   const double c = roll->c_deep, c2 = roll->c2_deep;
-  const double *restrict sh = roll->shape_h;
+  const double *restrict sh = roll->ref.shape_h;
   double *restrict sr = roll->sigma_r, *restrict sth = roll->sigma_theta;
   const int j0 = rsi_roll_commit_deep(roll, lo, c, c2, ds[0]);
-  /* the pressure the reference-valued nodes carry since the reference, -ref_c e (first
-   * order): a reference's own increment is -S e below its block (its profile in use from
-   * now); an increment that was not c x shape below its start ends the profile's use */
-  if (roll->start > 0) {
-    roll->ref_c += c;
-    if (lo == 0) roll->prof_top = -1;
-  } else if (roll->prof_next >= 0) {
-    roll->prof_top = roll->prof_next;
-    roll->ref_c = roll->ref_c_next;
-  }
-  roll->prof_next = -1;
+  rsi_roll_profile_commit(roll, lo, c); /* the drift scale of the reference's nodes */
   const int j1 = lo > 1 ? lo : 1;
   for (int j = j1; j <= k_old; ++j) sr[j - 1] += ds[j];
   for (int j = k_old + 1; j <= k; ++j) sr[j - 1] = ds[j];

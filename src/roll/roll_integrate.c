@@ -24,7 +24,7 @@ static roll_jet roll_jet_at(rs_roll *roll, double x, double w, double L)
 /* (w, L) inside the step [a, b] by the quintic Hermite interpolant of the values and first
  * two derivatives at its ends (error h^6 y^(6) / 46080 at most: far below the step's own
  * local error, of order h^6 y^(6) / 6 for BDF5), instead of asking CVODE for its
- * interpolant node by node (CVodeGetDky was a tenth of the engine's time). The quintic is
+ * interpolant node by node (CVodeGetDky would cost a tenth of the engine's time). The quintic is
  * kept as its monomial coefficients in s = (x - a)/h, so a node costs two Horner sums. */
 typedef struct roll_quintic {
   double a, inv_h, cw[6], cL[6];
@@ -138,7 +138,7 @@ static double roll_first_step(const rs_roll *roll, const roll_jet *j0, double g2
  *     e_L(b) = e_L(a) + e_w(a) h (1 - e^-A)/A + (8/15) h d_L(1/2) + m h (1 - e^-A/2)/A.
  * Measured against integrations at rtol 1e-11 (a standalone CVODE run and the reels of
  * docs/roll-model.md), this estimate is the global error of L to 0.02 - 0.3 %, for BDF and
- * Adams alike: CVODE's own local error estimates, which the correction used before, account
+ * Adams alike: CVODE's own local error estimates account
  * for a third to two thirds of it (steps of a fifth of the depth put the higher terms of the
  * local error at the order of the leading one they estimate). Inside the step the
  * estimate is the quintic Hermite of (e_L, e_w) with their own first two derivatives at the
@@ -187,9 +187,9 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
    * defect's w part exceeds the step's own change of w (measured on that web: A >= 11 and
    * |m| >= 5 |dw| in every such step). A large defect in a step that is neither is an
    * error (a step CVODE accepted past its tolerance, where the modulus' curvature changes
-   * inside it): corrected, whatever rtol is. Dropping those too made the error of a very
-   * soft web (Pfeiffer K1 = 50 Pa) grow as rtol tightened, the step's defect crossing 100
-   * tolerances at rtol 1e-4 (docs/roll-model.md, "A very soft web"). */
+   * inside it): corrected, whatever rtol is; dropping those too would make the error of a
+   * very soft web (Pfeiffer K1 = 50 Pa) grow as rtol tightens, the step's defect crossing
+   * 100 tolerances at rtol 1e-4 (docs/roll-model.md, "A very soft web"). */
   double m = 8.0 / 15.0 * h * dw, dLs = 8.0 / 15.0 * h * dL;
   const double tw = roll->p.rtol * fabs(jb->w) + roll->p.atol;
   const double tL = roll->p.rtol * fabs(jb->L) + roll->p.atol;
@@ -227,14 +227,14 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
 /* The integration's start at node `first` (0: the core): the nodes it looks at (from
  * first - 1: the Hermite slopes) leave the lazy zone, w at and below it is stored from
  * the last integration's steps, a rebased reference's nodes below it are rebased, and the
- * start's (w, L) corrected by start_C x the profile (roll_profile.c; the node holds them
- * while the increment is built, the reference's again after: rsi_roll_start_release). A
- * reference needs every node, and one from a node above the core (ref_from) has every
+ * start's (w, L) corrected by start_C x the profile (rsi_roll_start_set; the node holds
+ * them while the increment is built, the reference's again after: rsi_roll_start_release).
+ * A reference needs every node, and one from a node above the core (ref.from) has every
  * node leave the lazy zone too, to freeze again below its start with the lazy scale from
  * 0: only nodes that existed when that scale started can join the zone. */
 static rs_status roll_integration_start(rs_roll *roll, int first, int from_core, double start_C)
 {
-  const int need = from_core || roll->ref_from > 0 ? 0 : first - 1, F = roll->lazy_top;
+  const int need = from_core || roll->ref.from > 0 ? 0 : first - 1, F = roll->lazy.top;
   if (need < F) {
     rsi_roll_lazy_flush(roll, need);
     rs_status st = rsi_roll_prepare_nodes(roll, need, F);
@@ -245,15 +245,8 @@ static rs_status roll_integration_start(rs_roll *roll, int first, int from_core,
     roll->L[0] = 0.0;
   }
   rsi_roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
-  if (roll->ref_from > 0) rsi_roll_reference_rebase(roll, first);
-  roll->start = first; /* before the start is corrected: rsi_roll_start_release reads it */
-  if (start_C != 0.0) {
-    roll->start_C = start_C;
-    roll->start_ref[0] = roll->w[first];
-    roll->start_ref[1] = roll->L[first];
-    roll->w[first] += roll->start_C * roll->prof_w[first];
-    roll->L[first] += roll->start_C * roll->prof_L[first];
-  }
+  if (roll->ref.from > 0) rsi_roll_reference_rebase(roll, first);
+  rsi_roll_start_set(roll, first, start_C);
   return RS_OK;
 }
 
@@ -265,19 +258,13 @@ static rs_status roll_integration_start(rs_roll *roll, int first, int from_core,
 static rs_status roll_cvode_restart(rs_roll *roll, int first, int k, roll_jet *j0)
 {
   const double x0 = roll->xnode[first], xs = roll->xnode[k];
-  sunrealtype *y = N_VGetArrayPointer(roll->y);
-  y[0] = roll->w[first];
-  y[1] = roll->L[first];
-  roll->cvode_msg[0] = '\0';
-  roll->x_anchor = x0;
-  roll->r_anchor = exp(x0);
-  if (k - first <= roll->lg2_range_max) rsi_roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
-  *j0 = roll_jet_at(roll, x0, y[0], y[1]);
+  const int reinit = rsi_roll_ode_restart(roll, x0, roll->w[first], roll->L[first]);
+  if (k - first <= roll->ode.lg2_range_max) rsi_roll_lg2_range(roll, first > 0 ? first - 1 : 0, k);
+  *j0 = roll_jet_at(roll, x0, roll->w[first], roll->L[first]);
   const double g2_start = rsi_roll_g2_at(roll, x0, NULL);
-  if (CVodeReInit(roll->cvode, x0, roll->y) != CV_SUCCESS ||
-      CVodeSetStopTime(roll->cvode, xs) != CV_SUCCESS ||
-      CVodeSetInitStep(roll->cvode, roll_first_step(roll, j0, g2_start)) != CV_SUCCESS)
-    return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->cvode_msg);
+  if (reinit != 0 || CVodeSetStopTime(roll->ode.cvode, xs) != CV_SUCCESS ||
+      CVodeSetInitStep(roll->ode.cvode, roll_first_step(roll, j0, g2_start)) != CV_SUCCESS)
+    return RS_ERROR(RS_ERR_SOLVER, "CVODE re-initialisation failed: %s", roll->ode.cvode_msg);
   return RS_OK;
 }
 
@@ -310,7 +297,7 @@ static int roll_step_nodes(rs_roll *roll, const roll_quintic *q, const roll_jet 
 static rs_status roll_cvode_steps(rs_roll *roll, int first, int k, roll_jet prev, long *steps)
 {
   const double xs = roll->xnode[k];
-  const sunrealtype *y = N_VGetArrayPointer(roll->y);
+  const sunrealtype *y = N_VGetArrayPointer(roll->ode.y);
   const int correct = roll->p.correction == RS_CORRECTION_ON;
   roll_correction corr = {0.0, 0.0};
   sunrealtype tret = prev.x;
@@ -320,11 +307,11 @@ static rs_status roll_cvode_steps(rs_roll *roll, int first, int k, roll_jet prev
                       "CVODE needed more than %ld steps to cross the roll (reached r = %.6g m of "
                       "%.6g m); raise numerics.max_steps or loosen numerics.rtol",
                       roll->p.max_steps, exp(tret), exp(xs));
-    int flag = CVode(roll->cvode, xs, roll->y, &tret, CV_ONE_STEP);
+    int flag = CVode(roll->ode.cvode, xs, roll->ode.y, &tret, CV_ONE_STEP);
     if (flag < 0)
       return RS_ERROR(RS_ERR_SOLVER, "CVODE failed at r = %.9g m (roll outer radius %.9g m): %s",
                       exp(tret), exp(xs),
-                      roll->cvode_msg[0] ? roll->cvode_msg : CVodeGetReturnFlagName(flag));
+                      roll->ode.cvode_msg[0] ? roll->ode.cvode_msg : CVodeGetReturnFlagName(flag));
     const roll_jet cur = roll_jet_at(roll, tret, y[0], y[1]);
     roll_quintic q;
     if (correct) {
@@ -346,32 +333,28 @@ static rs_status roll_cvode_steps(rs_roll *roll, int first, int k, roll_jet prev
 static void roll_count(rs_roll *roll, long steps)
 {
   long nfe = 0;
-  CVodeGetNumRhsEvals(roll->cvode, &nfe);
+  CVodeGetNumRhsEvals(roll->ode.cvode, &nfe);
   roll->stats.cvode_steps += steps;
   roll->stats.rhs_evals += nfe;
 }
 
 /* The start node's (w, L) back to the reference's once the increment corrected there is
- * built and committed (st RS_OK) or has failed: a later start there is corrected afresh.
- * A reference from a node above the core (rsi_roll_reuse_start) that was committed becomes
- * the reference: its profile continued from that node (rsi_roll_reference_extend). */
+ * built and committed (st RS_OK) or has failed (rsi_roll_start_restore). A reference from a
+ * node above the core (rsi_roll_reuse_start) that was committed becomes the reference: its
+ * profile continued from that node (rsi_roll_reference_extend), which reads w at every
+ * node. */
 void rsi_roll_start_release(rs_roll *roll, rs_status st)
 {
-  if (roll->ref_from > 0 && st == RS_OK) {
-    rsi_roll_wstep_store(roll, roll->ref_top); /* the profile reads w at every node */
+  if (roll->ref.from > 0 && st == RS_OK) {
+    rsi_roll_wstep_store(roll, roll->ref.top);
     rsi_roll_reference_extend(roll);
   }
-  roll->ref_from = -1;
-  if (roll->start_C == 0.0) return;
-  roll->w[roll->start] = roll->start_ref[0];
-  roll->L[roll->start] = roll->start_ref[1];
-  roll->start_C = 0.0;
+  rsi_roll_start_restore(roll);
 }
-
 
 /* Integrates (w, L) from r_c to s = r_{k}, storing them at every node 0..k, or, when
  * rsi_roll_reuse_start finds a start node j0, from r_{j0} with the reference's (w, L) there,
- * keeping the reference's values below it (roll_reuse.c keeps the reference's books).
+ * keeping the reference's values below it (roll_reference.c keeps the reference's books).
  * One CVODE step at a time; the nodes inside each step are interpolated between its ends
  * (roll_quintic_fill), so the cost per node is a short polynomial, not a CVODE call. */
 rs_status rsi_roll_integrate(rs_roll *roll, int k)
@@ -383,9 +366,9 @@ rs_status rsi_roll_integrate(rs_roll *roll, int k)
     rsi_roll_reference_core(roll);
     return RS_OK;
   }
-  const int j0 = rsi_roll_reuse_start(roll), from_core = j0 < 0, first = from_core ? 0 : j0;
-  const double start_C = roll->start_C; /* applied once nothing can fail before it */
-  roll->start_C = 0.0;
+  double start_C; /* applied once nothing can fail before it */
+  const int j0 = rsi_roll_reuse_start(roll, &start_C), from_core = j0 < 0;
+  const int first = from_core ? 0 : j0;
   rs_status st = roll_integration_start(roll, first, from_core, start_C);
   roll_jet j_start;
   if (st == RS_OK) st = roll_cvode_restart(roll, first, k, &j_start);
@@ -393,7 +376,7 @@ rs_status rsi_roll_integrate(rs_roll *roll, int k)
   rsi_roll_reference_begin(roll, k, j0);
   /* below the start the increment is c x the reference's shape (rsi_roll_block_increment):
    * those nodes can wait (roll_lazy.c) */
-  if (!from_core && roll->lazy_ok && j0 <= roll->shape_top && roll->shape_e[j0] > 1e-280)
+  if (!from_core && roll->lazy.ok && j0 <= roll->ref.shape_top && roll->ref.shape_e[j0] > 1e-280)
     rsi_roll_lazy_freeze(roll, j0 - 1);
   long steps = 0;
   st = roll_cvode_steps(roll, first, k, j_start, &steps);

@@ -1,23 +1,29 @@
 /* The roll engine's private state and the interface between its parts (src/roll):
  *   roll.c            the roll: parameters, create/destroy, rs_roll_add_layers, queries
- *   roll_ode.c        the increment ODE: g^2(x) between the nodes, right-hand side,
- *                     Jacobian, error weights, the modulus an increment sees
+ *   roll_ode.c        the ODE workspace: CVODE, the increment ODE (g^2(x) between the
+ *                     nodes, right-hand side, Jacobian, error weights), the modulus an
+ *                     increment sees
  *   roll_integrate.c  one integration across the roll with CVODE (nodes by quintic
  *                     interpolation inside each step, the integration's error corrected)
- *   roll_reuse.c      the reference solution: where an integration may start, its books
+ *   roll_reference.c  the reference solution: where an integration may start, its books,
+ *                     its shape, the start's correction, rebasing
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
  *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
  *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
- *   vector2.c         CVODE's vector operations and Newton solver for the 2-component state
+ *   vector2.c         CVODE's vector operations and the exact corrector for the 2-component
+ *                     state
  *   roll_corrector.c  which corrector CVODE gets: the exact one after its self-test passed
+ *   roll_check.c      the components' invariants, checked
  * docs/roll-model.md has the model and the derivations. */
 #ifndef REELSIM_ROLL_INTERNAL_H
 #define REELSIM_ROLL_INTERNAL_H
 
 #include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -50,52 +56,38 @@ typedef struct roll_g2_cubic {
   double y0, m0, c2, c3, g0;
 } roll_g2_cubic;
 
-/* The roll's state, by component: what each holds, the file that keeps it, and its
- * invariants, which hold between increments (after rs_roll_create, and after every
- * rs_roll_add_layers that returned RS_OK; rs_roll_restore keeps them) and are checked by
- * rsi_roll_check_invariants (roll_check.c) after every increment in builds with
- * RS_ROLL_CHECKS and in test_roll_check:
- *  - the roll (roll.c, roll_state.c): p, kc, shift, n, core_sigma, sigma_r, sigma_theta,
- *    hoop_stale. 0 <= n <= p.max_layers; shift is 1 exactly for RS_LOAD_BENEATH; the
- *    stored stresses and core_sigma are finite.
- *  - the nodes' modulus and g^2 between them (roll_ode.c): Er, lg2 and its epochs, g2c,
- *    gx.., x_anchor, P_node. Er over the nodes an integration looks at is current.
- *  - the integration (roll_integrate.c): w, L, wstep, xnode, the CVODE objects.
- *    wstep_n <= wstep_cap.
- *  - the increment (roll_increment.c, fused for one layer in roll_layer.c): block_share,
- *    P_mean, dsr, dsh, deep_lo, c_deep, c2_deep: values of the last increment only.
- *  - the reference solution (roll_reuse.c; rebased by roll_profile.c): Er_ref, scan_eps,
- *    scan_L, ref_top, ref_age, start, last_start, ref_from, ref_deep.., start_C,
- *    start_ref. -1 <= ref_top <= n and Er_ref > 0 over nodes 0..ref_top; 0 <= start <= n;
- *    between increments ref_from = -1 and start_C = 0 (rsi_roll_start_release).
- *  - the reference's shape (roll_increment.c, roll_layer.c; rebased by roll_profile.c):
- *    shape_e, shape_h, shape_top, shape_max. -1 <= shape_top <= max_layers; over its nodes
- *    0 <= shape_e <= shape_max (and |shape_h| <= shape_max with Hakiel's placement).
- *  - the drift profile (roll_profile.c; put in use by the commit): prof_*, ref_c,
- *    ref_c_next. A profile (prof_top >= 0) lies within the reference's nodes (prof_top <=
- *    ref_top), |prof_L| <= prof_max, finite, over its nodes; between increments no
- *    reference's profile waits (prof_next = -1).
- *  - the lazy zone (roll_lazy.c; its scales moved by the commit): lazy_*, view_*. An empty
- *    zone (lazy_top = 0) has lazy_c = lazy_c2 = 0; a zone lies within the nodes that existed
- *    when its scale started (lazy_top <= lazy_limit <= n), is allowed (lazy_allowed) and
- *    covered by the shape (lazy_top - 1 <= shape_top); over it lazy_a, lazy_b and scan_L
- *    are prefix maxima (never decreasing up the roll).
- *  - entrained air (roll_air.c): geom, geom_j, kc0, node_r, inv_pitch, pitch_sq.
- *  - scratch (below): no value survives a call.
- * The commit of an increment (rsi_roll_commit, rsi_roll_add_one) moves the lazy zone's
- * scales, the reference's drift scale ref_c and the profile's and shape's tops, as the
- * increment it adds asks. */
-struct rs_roll {
-  rs_roll_params p;
-  double kc;            /* core condition r y'/y at r_c */
-  int shift;            /* 1: a layer's load on the node beneath it (RS_LOAD_BENEATH), 0:
-                           at its own outer radius (Hakiel): layer k loads node k - shift */
-  int n;                /* layers wound */
-  double core_sigma;    /* sigma_r at r_c, Pa (compression negative) */
-  double *sigma_r;      /* [cap] per layer at s_j */
-  double *sigma_theta;  /* [cap] */
-  /* work arrays over nodes 0..n (node 0 = core) */
-  double *Er;           /* E_r at the nodes for the current increment; g^2 = E_theta/E_r */
+/* The roll's state is a few components, each a struct below, each written by the one file
+ * that owns it (its functions; the others read it or call them), each with its invariant
+ * stated where it is declared. The invariants hold between increments (after
+ * rs_roll_create, after every rs_roll_add_layers that returned RS_OK; rs_roll_restore
+ * keeps them) and are checked by rsi_roll_check_invariants (roll_check.c, one check per
+ * component) after every increment in builds with RS_ROLL_CHECKS and in test_roll_check.
+ * Besides the components the roll holds its parameters and stresses (roll.c; the commit
+ * of an increment, roll_increment.c, roll_layer.c, and the lazy zone's moves,
+ * roll_lazy.c, add to the stresses), the integration's nodes (w, L, wstep, xnode:
+ * roll_integrate.c; xnode placed by roll_air.c, the reference's nodes rebased by
+ * roll_reference.c), the last increment (dsr, dsh, deep_lo, c_deep, c2_deep, P_mean:
+ * roll_increment.c, roll_layer.c), the work counters (stats: whichever part does the work
+ * counts it) and a scratch block that no component owns. */
+
+/* The ODE workspace (roll_ode.c; the corrector's handles made by roll_corrector.c and
+ * stored here by roll_ode.c): CVODE and its vector, the nodes' pressures and moduli the
+ * increment's ODE sees, ln g^2 at the nodes and the interpolation's caches.
+ * Invariant: cvode, y and sunctx exist; exactly one of NLS (the exact corrector) and
+ * fallback_LS with fallback_A (CVODE's Newton iteration) is set; 0 <= nodes_in_use <=
+ * max_layers + 1 (the nodes an integration may look at); lg2_range_max >= 0; a cache's epoch is never
+ * ahead of the moduli's (g2c.epoch, gepoch, lg2_range_epoch <= epoch). Er over the nodes an
+ * integration looks at is the modulus at P_node there. */
+typedef struct roll_ode {
+  SUNContext sunctx;
+  void *cvode;
+  N_Vector y;
+  SUNNonlinearSolver NLS;      /* the exact corrector, or NULL: CVODE's own Newton with */
+  SUNLinearSolver fallback_LS; /* a dense linear solver (roll_corrector.c) */
+  SUNMatrix fallback_A;
+  char cvode_msg[RS_CVODE_MSG_LEN];
+  double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
+  double *Er;           /* [cap + 1] E_r at the nodes for the current increment; g^2 = E_theta/E_r */
   double *lg2;          /* ln g^2: in one pass over a short integration's nodes, else
                            when the interpolation first needs it */
   unsigned long long *lg2_epoch, epoch; /* lg2[j] is current when lg2_epoch[j] == epoch, */
@@ -103,48 +95,40 @@ struct rs_roll {
   unsigned long long lg2_range_epoch;
   int lg2_range_max;    /* an integration whose top is at most this many nodes above its
                            start forms them in one pass (RS_LG2_RANGE_MAX; 0: never) */
+  int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
   /* the Hermite cubic of the interval the right-hand side last evaluated (CVODE's calls
    * cluster) */
   roll_g2_cubic g2c;
-  /* g^2 and d(g^2)/dx at the x last evaluated: a step's Newton iterations and the jet at
-   * its end all look at the same x */
+  /* g^2 and d(g^2)/dx at the x last evaluated: a step's corrector and the jet at its end
+   * all look at the same x */
   double gx, g2x, dg2x, gxi; /* gxi: the layer coordinate (r - r_c)/t at gx */
   unsigned long long gepoch;
   double x_anchor, r_anchor; /* r_anchor = exp(x_anchor) exactly, near where CVODE is */
-  double inv_caliper;   /* 1 / p.caliper: the layer coordinate by a multiplication */
-  double *w, *L;        /* (w, ln y) at the nodes */
-  /* With one layer wound and its load beneath it only a start node reads w: the last
-   * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
-   * an integration evaluates the nodes at and below its start before it overwrites the
-   * rest (roll_integrate.c) */
-  roll_wstep *wstep;
-  int wstep_n, wstep_cap;
-  int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
-  double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
-  double *block_share;  /* [m] frozen lumping: share of the block's tension at or above a node */
-  double *P_node;       /* [cap + 1] pressure that sets the increment's modulus at each node, Pa */
-  double *P_mean;       /* [cap + 1] corrected lumping: mean pressure increment seen, Pa */
-  double *dsr, *dsh;    /* [cap + 1] the increment's ds and ds + r ds' at the nodes */
-  /* CVODE */
-  SUNContext sunctx;
-  void *cvode;
-  N_Vector y;
-  SUNNonlinearSolver NLS;     /* the exact corrector, or NULL: CVODE's own Newton with */
-  SUNLinearSolver fallback_LS; /* a dense linear solver (roll_corrector.c) */
-  SUNMatrix fallback_A;
-  char cvode_msg[RS_CVODE_MSG_LEN];
-  rs_roll_stats stats;
-  int nodes_in_use;     /* nodes the RHS may look at (k + 1) */
-  /* Reuse of the deep solution (rsi_roll_reuse_start): the last integration from the core is
-   * the reference; below the node an integration starts from, (w, L) stay the reference's */
-  double *Er_ref;       /* [cap + 1] the modulus the reference was integrated with */
-  double *scan_eps;     /* [cap + 1] |E_r / Er_ref - 1| at the nodes the search looks at */
-  double *scan_L;       /* [cap + 1] max over nodes 0..j of L, kept below the lazy frontier */
-  int ref_top;          /* w, L at the nodes 0..ref_top are still the reference's; -1: none */
-  int ref_age;          /* integrations since the reference */
+} roll_ode;
+
+/* The reference solution (roll_reference.c): the last integration from the core (or from
+ * a rebased node) is the reference; below the node an integration starts from, (w, L)
+ * stay the reference's, and the increment there is c times the reference's shape.
+ * Invariant: -1 <= top <= n and Er > 0 over nodes 0..top; 0 <= start <= n; between
+ * increments from = -1 and start_C = 0 (rsi_roll_start_release); -1 <= shape_top <=
+ * max_layers, and over the shape's nodes 0 <= shape_e <= shape_max (and |shape_h| <=
+ * shape_max with Hakiel's placement). */
+typedef struct roll_reference {
+  double *Er;           /* [cap + 1] the modulus the reference was integrated with */
+  double *scan_eps;     /* [cap + 1] |E_r / Er - 1| at the nodes the start search looks at */
+  int top;              /* w, L at the nodes 0..top are still the reference's; -1: none */
+  int age;              /* integrations since the reference */
   int start;            /* node the last integration started from (0: the core) */
   int last_start;       /* the last start above the core (where a reference's increment
                            may be kept lazy from: rsi_roll_block_increment) */
+  int from;             /* > 0: this increment's integration is a new reference from that
+                           node up, the nodes below rebased (rsi_roll_reference_rebase) */
+  int deep;             /* references from a node above the core since the last from it */
+  int deep_max;         /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
+  long deep_references; /* references from a node above the core so far */
+  int from_last;        /* the node the last of them started from */
+  double start_C;       /* the drift scale this increment's start was corrected with, 0: none */
+  double start_ref[2];  /* the reference's (w, L) at that start (rsi_roll_start_release) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
    * e_j (1 + w_j) of the reference's own increment (A its block's bottom node), kept for
    * nodes 0..shape_top; -1: none. An increment that starts at j0 <= shape_top is
@@ -155,65 +139,130 @@ struct rs_roll {
   /* a bound on |shape_e| (and |shape_h| with Hakiel's placement) over the shape's nodes:
    * when |c_deep| times it is finite, so is the increment below deep_lo (rsi_roll_commit) */
   double shape_max;
+} roll_reference;
+
+/* The drift profile (roll_profile.c; docs/roll-model.md, "The deep part corrected for
+ * the drift"). Nodes 0..top still hold the reference's (w, L): every integration since the
+ * reference started at or above them. The pressure added there since is -c shape_e (to
+ * first order), and the reference's solution with the modulus moved by it is
+ * (w, L) + c (w, L)_profile. top -1: no profile (the start-node search bounds the drift
+ * at first order).
+ * Invariant: a profile (top >= 0) lies within the reference's nodes (top <= ref.top),
+ * |L| <= max, w finite, over its nodes; between increments no reference's profile waits
+ * (next = -1); c is finite. */
+typedef struct roll_profile {
+  int on;               /* the roll corrects its deep part (load beneath, one layer, reuse) */
+  int top;
+  double c;             /* the drift scale C since the reference */
+  int next;             /* a reference's profile (its top), in use once its increment is
+                           committed, with c_next its drift scale */
+  double c_next;
+  double max;           /* max |L| over the profile's nodes (the finiteness bound) */
+  double *w, *L;        /* [cap + 1] */
+} roll_profile;
+
+/* The lazy deep part (roll_lazy.c): nodes 0..top-1 hold stored values, their true
+ * stresses being stored + c x shape (e, and h for Hakiel's hoop stress), plus c2 x e x
+ * profile L for the radial stress with the deep part corrected.
+ * Invariant: an empty zone (top = 0) has c = c2 = 0; a zone lies within the nodes that
+ * existed when its scale started (top <= limit <= n), is allowed and covered by the
+ * reference's shape (top - 1 <= ref.shape_top); over it a, b and Lmax are prefix maxima
+ * (never decreasing up the roll); c and c2 are finite. */
+typedef struct roll_lazy {
+  int top;
+  int ok;               /* this increment may freeze nodes (one layer: no corrector) */
+  int limit;            /* nodes below it existed when c last started from 0 */
+  int allowed;          /* the law's ln E_r is concave: the lazy part's bound holds */
+  double c, c2;         /* true = stored + c e + c2 e L_profile (sigma_r) */
+  double *a, *b;        /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
+  double *Lmax;         /* [cap + 1] max over nodes 0..j of L (the start search's) */
+  double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view) */
+} roll_lazy;
+
+/* Entrained air at its radius (roll_air.c): with films (and the load beneath) the nodes
+ * sit at the real radii node_r (p.air_radius as each node was created), from the first
+ * node with a film beneath it (geom = 1; before, node_r[j] = r_c + j t, the same
+ * arithmetic). Node j's interval [j, j + 1] has pitch p_j = node_r[j + 1] - node_r[j]
+ * (the newest node: t); inv_pitch = 1/p_j, pitch_sq = (p_j / t)^2.
+ * Invariant: without arrays geom = 0; with them node_r rises strictly over nodes 0..n,
+ * and inv_pitch > 0 and pitch_sq > 0 there. */
+typedef struct roll_air {
+  int geom;
+  int geom_j;           /* the interval the layer coordinate was last found in */
+  double kc0;           /* the core condition of the film-free roll */
+  double *node_r, *inv_pitch, *pitch_sq; /* [cap + 1]; NULL without air */
+} roll_air;
+
+struct rs_roll {
+  rs_roll_params p;
+  double kc;            /* core condition r y'/y at r_c */
+  int shift;            /* 1: a layer's load on the node beneath it (RS_LOAD_BENEATH), 0:
+                           at its own outer radius (Hakiel): layer k loads node k - shift */
+  int n;                /* layers wound; 0 <= n <= p.max_layers */
+  /* the stresses (finite), as stored: below lazy.top the lazy zone adds its part */
+  double core_sigma;    /* sigma_r at r_c, Pa (compression negative) */
+  double *sigma_r;      /* [cap] per layer at s_j */
+  double *sigma_theta;  /* [cap] */
+  int hoop_stale;       /* load beneath: sigma_theta is derived from sigma_r when read */
+  double inv_caliper;   /* 1 / p.caliper: the layer coordinate by a multiplication */
+  /* the integration's nodes 0..n (roll_integrate.c) */
+  double *w, *L;        /* (w, ln y) at the nodes */
+  /* With one layer wound and its load beneath it only a start node reads w: the last
+   * integration's w is kept as its steps' quintics (nodes wstep[0].lo.. of its steps), and
+   * an integration evaluates the nodes at and below its start before it overwrites the
+   * rest. wstep_n <= wstep_cap. */
+  roll_wstep *wstep;
+  int wstep_n, wstep_cap;
+  int w_lazy;           /* this increment's integrations keep w as their steps' quintics */
+  double *xnode;        /* ln r_j: CVODE's independent variable at the nodes */
+  /* the last increment (roll_increment.c, fused for one layer in roll_layer.c) */
+  double *P_mean;       /* [cap + 1] corrected lumping: mean pressure increment seen, Pa */
+  double *dsr, *dsh;    /* [cap + 1] the increment's ds and ds + r ds' at the nodes */
   /* the last increment's nodes below deep_lo are c_deep (shape_e, shape_h), plus, with the
-   * deep part corrected, c2_deep shape_e prof_L */
+   * deep part corrected, c2_deep shape_e prof.L */
   int deep_lo;
   double c_deep, c2_deep;
-  /* The reused deep part corrected to first order for the modulus drift (roll_profile.c;
-   * docs/roll-model.md, "The deep part corrected for the drift"). Nodes 0..prof_top still
-   * hold the reference's (w, L): every integration since the reference started at or
-   * above them. The pressure added there since is -ref_c shape_e (to first order), and the
-   * reference's solution with the modulus moved by it is (w, L) + ref_c (prof_w, prof_L).
-   * prof_top -1: no profile (the start-node search bounds the drift at first order). */
-  int prof_on;           /* the roll corrects its deep part (load beneath, one layer, reuse) */
-  int prof_top;
-  double ref_c;
-  int prof_next;         /* a reference's profile (its top), in use once its increment is
-                            committed, with ref_c_next its deep scale */
-  double ref_c_next;
-  int ref_from;          /* > 0: this increment's integration is a new reference from that
-                            node up, the nodes below rebased (rsi_roll_reference_rebase) */
-  int ref_deep;          /* references from a node above the core since the last from it */
-  int ref_deep_max;      /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
-  long deep_references;  /* references from a node above the core so far */
-  int ref_from_last;     /* the node the last of them started from */
-  double start_C;        /* the ref_c this increment's start was corrected with, 0: none */
-  double start_ref[2];   /* the reference's (w, L) at that start (rsi_roll_start_release) */
-  double prof_max;       /* max |prof_L| over the profile's nodes (the finiteness bound) */
-  double *prof_w, *prof_L; /* [cap + 1] */
-  int hoop_stale;        /* load beneath: sigma_theta is derived from sigma_r when read */
-  /* the lazy deep part (roll_lazy.c): nodes 0..lazy_top-1 hold stored values, their true
-   * stresses being stored + lazy_c x shape (e, and h for Hakiel's hoop stress), plus
-   * lazy_c2 x e x prof_L for the radial stress with the deep part corrected */
-  int lazy_top;
-  int lazy_ok;           /* this increment may freeze nodes (one layer: no corrector) */
-  int lazy_limit;        /* nodes below it existed when lazy_c last started from 0 */
-  int lazy_allowed;      /* the law's ln E_r is concave: the lazy part's bound holds */
-  double lazy_c, lazy_c2; /* true = stored + lazy_c e + lazy_c2 e prof_L (sigma_r) */
-  double *lazy_a, *lazy_b; /* [cap + 1] prefix maxima of the drift bound's a_j and b_j */
-  double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view_*) */
-  /* Entrained air at its radius (roll_air.c): with films (and the load beneath) the nodes
-   * sit at the real radii node_r (p.air_radius as each node was created), from the first
-   * node with a film beneath it (geom = 1; before, node_r[j] = r_c + j t, the same
-   * arithmetic). Node j's interval [j, j + 1] has pitch p_j = node_r[j + 1] - node_r[j]
-   * (the newest node: t); inv_pitch = 1/p_j, pitch_sq = (p_j / t)^2. */
-  int geom;
-  int geom_j;            /* the interval the layer coordinate was last found in */
-  double kc0;            /* the core condition of the film-free roll */
-  double *node_r, *inv_pitch, *pitch_sq; /* [cap + 1]; NULL without air */
+  rs_roll_stats stats;
+  roll_ode ode;
+  roll_reference ref;
+  roll_profile prof;
+  roll_lazy lazy;
+  roll_air air;
   /* Scratch [cap + 1] each, owned by no component: a function may use it for values that
    * do not survive the call (the drift profile's coefficients, roll_profile.c; the moduli
-   * a little above the pressures of nodes that join the lazy zone, roll_lazy.c). No other
-   * array of the roll is ever used as scratch. */
+   * a little above the pressures of nodes that join the lazy zone, roll_lazy.c). No
+   * component's array is ever used as scratch. */
   struct {
     double *u, *d, *q, *c, *a, *b;
   } scratch;
 };
 
+/* *arrays[i] = count zeroed doubles each (i < n); 0 when one could not be allocated (the
+ * others are still allocated: the owner's free frees them) */
+static inline int rsi_roll_calloc(double **const arrays[], size_t n, size_t count)
+{
+  int ok = 1;
+  for (size_t i = 0; i < n; ++i) ok &= (*arrays[i] = calloc(count, sizeof(double))) != NULL;
+  return ok;
+}
+
 /* node j's radius (m): r_c + j t, or with entrained air its real radius */
 static inline double roll_node_radius(const rs_roll *roll, int j)
 {
-  return roll->geom ? roll->node_r[j] : roll->p.core_radius + j * roll->p.caliper;
+  return roll->air.geom ? roll->air.node_r[j] : roll->p.core_radius + j * roll->p.caliper;
+}
+
+/* a decay's product v scaled into place, 0 below 1e-290 (no subnormals): the one rule of
+ * the block path (roll_increment.c) and the fused one-layer pass (roll_layer.c) */
+static inline double roll_decay_clear(double v) { return v > 1e-290 ? v : 0.0; }
+
+/* whether an increment's deep part, c x shape + c2 x shape x profile L below its start, is
+ * finite by the bounds of the shape and the profile (else the nodes are looked at one by
+ * one: rsi_roll_commit) */
+static inline int roll_deep_bounded(const rs_roll *roll, double c, double c2)
+{
+  return fabs(c) * roll->ref.shape_max < INFINITY &&
+         (c2 == 0.0 || fabs(c2) * roll->ref.shape_max * roll->prof.max < INFINITY);
 }
 
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
@@ -258,6 +307,11 @@ double rsi_roll_lazy_sigma(const rs_roll *roll, int j);
 const double *rsi_roll_lazy_view_r(rs_roll *roll);
 const double *rsi_roll_lazy_view_theta(rs_roll *roll);
 int rsi_roll_lazy_allowed(const rs_roll_params *p);
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0);
+void rsi_roll_lazy_configure(rs_roll *roll, int m);
+void rsi_roll_lazy_clear(rs_roll *roll);
+int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap);
+void rsi_roll_lazy_free(rs_roll *roll);
 
 /* roll_ode.c */
 double rsi_roll_g2_at(rs_roll *roll, double x, double *dg2);
@@ -265,16 +319,30 @@ double rsi_roll_g2_probe(rs_roll *roll, double x);
 void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi);
 double rsi_roll_layer_coord_at(rs_roll *roll, double x);
 int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user);
-int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user);
 int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user);
 void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add);
 rs_status rsi_roll_set_modulus(rs_roll *roll, int k);
 rs_status rsi_roll_set_modulus_stress(rs_roll *roll, int k);
 rs_status rsi_roll_prepare_nodes(rs_roll *roll, int lo, int hi);
+int rsi_roll_ode_alloc(rs_roll *roll, size_t cap);
+int rsi_roll_ode_create(rs_roll *roll);
+void rsi_roll_ode_free(rs_roll *roll);
+int rsi_roll_ode_restart(rs_roll *roll, double x0, double w0, double L0);
+void rsi_roll_modulus_probe(const rs_roll *roll, const double *P, double *Pp, double *Ep, int lo,
+                            int hi);
 
 /* roll_profile.c */
 int rsi_roll_profile_build(rs_roll *roll, int from, int top);
 double rsi_roll_profile_bound(double eps_max, double L_max, double Ls, int second);
+void rsi_roll_profile_configure(rs_roll *roll, int on);
+void rsi_roll_profile_drop(rs_roll *roll);
+void rsi_roll_profile_clip(rs_roll *roll, int top);
+void rsi_roll_profile_reference(rs_roll *roll, int bottom, double S, int block);
+void rsi_roll_profile_commit(rs_roll *roll, int lo, double c);
+void rsi_roll_profile_rebased(rs_roll *roll, int from);
+void rsi_roll_profile_extend(rs_roll *roll, int from, int top);
+int rsi_roll_profile_alloc(rs_roll *roll, size_t cap);
+void rsi_roll_profile_free(rs_roll *roll);
 
 /* roll_air.c */
 void rsi_roll_air_series(const rs_roll *roll, const double *P, double *E, int lo, int hi);
@@ -288,13 +356,6 @@ rs_status rsi_roll_integrate(rs_roll *roll, int k);
 void rsi_roll_wstep_store(rs_roll *roll, int hi);
 void rsi_roll_start_release(rs_roll *roll, rs_status st);
 
-/* roll_reuse.c */
-int rsi_roll_reuse_start(rs_roll *roll);
-void rsi_roll_reference_core(rs_roll *roll);
-void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
-void rsi_roll_reference_end(rs_roll *roll, int k, int first);
-void rsi_roll_reference_extend(rs_roll *roll);
-void rsi_roll_reference_rebase(rs_roll *roll, int from);
 
 /* roll_increment.c */
 typedef struct roll_segments {
@@ -311,8 +372,44 @@ void rsi_roll_hoop_from_equilibrium_at(double *sigma_theta, const double *sigma_
 double rsi_roll_deep_scales(const rs_roll *roll, int lo, double c, double *c2);
 void rsi_roll_block_increment(rs_roll *roll, int k_old, int m, const double *T0, double *mean);
 rs_status rsi_roll_commit(rs_roll *roll, int m, const double *T0);
-int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0);
-rs_status rsi_roll_commit_frozen(rs_roll *roll, int m, const double *T0, double total);
+
+/* roll_reference.c */
+int rsi_roll_reuse_start(rs_roll *roll, double *C);
+void rsi_roll_reference_core(rs_roll *roll);
+void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
+void rsi_roll_reference_end(rs_roll *roll, int k, int first);
+void rsi_roll_reference_extend(rs_roll *roll);
+void rsi_roll_reference_rebase(rs_roll *roll, int from);
+void rsi_roll_reference_restored(rs_roll *roll);
+void rsi_roll_start_set(rs_roll *roll, int first, double C);
+void rsi_roll_start_restore(rs_roll *roll);
+void rsi_roll_shape_reference(rs_roll *roll, const double *e, int bottom, double e_bound);
+void rsi_roll_shape_follow(rs_roll *roll, const double *e, int lo, int bottom, double e_bound);
+void rsi_roll_shape_followed(rs_roll *roll, int bottom, double scale, const roll_segments *seg);
+void rsi_roll_shape_cut(rs_roll *roll, int lo);
+int rsi_roll_reference_alloc(rs_roll *roll, size_t cap);
+void rsi_roll_reference_free(rs_roll *roll);
+/* The one-layer path's pass over a segment of the decays (rsi_roll_add_one): the decays of
+ * [lo, hi), scaled by s, cleared below 1e-290 (as roll_decays), committed as ds = -S e (sr
+ * holds layer j at j - 1); with se != NULL (the reference's shape_e) the shape follows,
+ * in the reference's scale. The reference's code (its other writers of the shape are in
+ * roll_reference.c), inline here so that the pass stays one loop over the nodes. */
+static inline void rsi_roll_shape_segment(const double *restrict e, double *restrict sr,
+                                          double *restrict se, int lo, int hi, double s,
+                                          double mS, double scale)
+{
+  if (se)
+    for (int j = lo; j < hi; ++j) {
+      const double ev = roll_decay_clear(e[j] * s);
+      se[j] = scale * ev;
+      sr[j - 1] += ev * mS;
+    }
+  else
+    for (int j = lo; j < hi; ++j) {
+      const double ev = roll_decay_clear(e[j] * s);
+      sr[j - 1] += ev * mS;
+    }
+}
 
 /* roll_check.c */
 const char *rsi_roll_check_invariants(const rs_roll *roll, int full);

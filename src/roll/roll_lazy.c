@@ -15,11 +15,12 @@
  * Readers get the full values in separate arrays (roll_lazy_view_*): reading never moves
  * the frontier. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "roll/roll_internal.h"
 
 /* sr[j - 1] += e_j (c + c2 p_L,j) for the nodes [lo, hi), lo >= 1 (c e_j alone where c2 is
- * 0, as an uncorrected deep part always was): arrays passed as such, so that it vectorises */
+ * 0: an uncorrected deep part): arrays passed as such, so that it vectorises */
 static void roll_shape_add_n(double *restrict sr, const double *restrict e,
                              const double *restrict pL, int lo, int hi, double c, double c2)
 {
@@ -33,7 +34,7 @@ static void roll_shape_add_n(double *restrict sr, const double *restrict e,
  * a deep part below an increment's start, or nodes leaving or joining the lazy zone */
 void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
 {
-  roll_shape_add_n(roll->sigma_r, roll->shape_e, roll->prof_L, lo, hi, c, c2);
+  roll_shape_add_n(roll->sigma_r, roll->ref.shape_e, roll->prof.L, lo, hi, c, c2);
 }
 
 /* stored += scale x shape (+ scale2 x shape x prof_L) over the nodes [lo, hi) (node 0: the
@@ -41,10 +42,10 @@ void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
  * (-C, -C2) the lazy zone */
 static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double scale2)
 {
-  if (lo == 0) roll->core_sigma += scale * roll->shape_e[0]; /* prof_L is 0 at the core */
+  if (lo == 0) roll->core_sigma += scale * roll->ref.shape_e[0]; /* prof_L is 0 at the core */
   rsi_roll_shape_add(roll, lo > 1 ? lo : 1, hi, scale, scale2);
   if (!roll->shift) {
-    const double *restrict h = roll->shape_h;
+    const double *restrict h = roll->ref.shape_h;
     double *restrict sth = roll->sigma_theta;
     for (int j = lo > 1 ? lo : 1; j < hi; ++j) sth[j - 1] += scale * h[j];
   }
@@ -53,12 +54,12 @@ static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double 
 /* Nodes [from, F) back to explicit stresses (their true values); F = from. */
 void rsi_roll_lazy_flush(rs_roll *roll, int from)
 {
-  const int F = roll->lazy_top;
+  const int F = roll->lazy.top;
   if (from < 0) from = 0;
   if (from >= F) return;
-  roll_lazy_shift(roll, from, F, roll->lazy_c, roll->lazy_c2);
-  roll->lazy_top = from;
-  if (from == 0) roll->lazy_c = roll->lazy_c2 = 0.0;
+  roll_lazy_shift(roll, from, F, roll->lazy.c, roll->lazy.c2);
+  roll->lazy.top = from;
+  if (from == 0) roll->lazy.c = roll->lazy.c2 = 0.0;
 }
 
 /* each node's a_j and b_j (the drift bound's, before the prefix maxima) from its modulus E,
@@ -80,23 +81,23 @@ static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P
 /* rsi_roll_lazy_freeze's block of nodes: its ten arrays' blocks fit the first-level cache */
 enum { RS_FREEZE_BLOCK = 256 };
 
-/* Nodes [F, to) become lazy; their modulus E_r (roll->Er) and the reference's (Er_ref) are
+/* Nodes [F, to) become lazy; their modulus E_r (roll->ode.Er) and the reference's (Er_ref) are
  * current, and the reference's shape covers them. */
 void rsi_roll_lazy_freeze(rs_roll *roll, int to)
 {
-  const int F = roll->lazy_top;
+  const int F = roll->lazy.top;
   /* C sums the increments since it was last 0. A node wound after that was above some of
    * them: c e_j of those is no stress (e_j = exp(L_j - shape_L) grows up the roll, by
    * orders of magnitude on a very soft web) and stored = true - C e_j would cancel
    * catastrophically. So only nodes that existed when C started are frozen. */
-  if (F == 0 && roll->lazy_c == 0.0) roll->lazy_limit = roll->n;
-  if (to > roll->lazy_limit) to = roll->lazy_limit;
+  if (F == 0 && roll->lazy.c == 0.0) roll->lazy.limit = roll->n;
+  if (to > roll->lazy.limit) to = roll->lazy.limit;
   if (to <= F) return;
-  const double C = roll->lazy_c, aC = fabs(C);
-  const double *restrict e = roll->shape_e, *restrict E = roll->Er, *restrict Eref = roll->Er_ref;
+  const double C = roll->lazy.c, aC = fabs(C);
+  const double *restrict e = roll->ref.shape_e, *restrict E = roll->ode.Er, *restrict Eref = roll->ref.Er;
   double *restrict Pp = roll->scratch.c, *restrict Ep = roll->scratch.q;
-  double *restrict la = roll->lazy_a, *restrict lb = roll->lazy_b, *restrict sl = roll->scan_L;
-  const double *restrict P = roll->P_node, *restrict L = roll->L;
+  double *restrict la = roll->lazy.a, *restrict lb = roll->lazy.b, *restrict sl = roll->lazy.Lmax;
+  const double *restrict P = roll->ode.P_node, *restrict L = roll->L;
   double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
   double pl = F > 0 ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
   /* a block at a time, so that what one pass writes the next reads from the first-level
@@ -104,10 +105,8 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
    * not three times) */
   for (int b0 = F; b0 < to; b0 += RS_FREEZE_BLOCK) {
     const int b1 = to - b0 > RS_FREEZE_BLOCK ? b0 + RS_FREEZE_BLOCK : to;
-    /* d ln E_r / dP by a forward difference over 1e-3 of the pressure (plus 1 Pa at P = 0) */
-    for (int j = b0; j < b1; ++j) Pp[j] = P[j] * 1.001 + 1.0;
-    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, b1 - b0);
-    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b1);
+    /* d ln E_r / dP by a forward difference (the drift profile's: roll_ode.c) */
+    rsi_roll_modulus_probe(roll, P, Pp, Ep, b0, b1);
     /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
      * the three running maxima side by side */
     roll_lazy_bounds(b0, b1, aC, P, Pp, E, Ep, Eref, e, la, lb);
@@ -120,16 +119,16 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
       sl[j] = pl;
     }
   }
-  if (C != 0.0 || roll->lazy_c2 != 0.0) roll_lazy_shift(roll, F, to, -C, -roll->lazy_c2);
-  roll->lazy_top = to;
+  if (C != 0.0 || roll->lazy.c2 != 0.0) roll_lazy_shift(roll, F, to, -C, -roll->lazy.c2);
+  roll->lazy.top = to;
 }
 
 /* sigma_r at node j (0: the core), lazy or not */
 double rsi_roll_lazy_sigma(const rs_roll *roll, int j)
 {
   const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
-  if (j >= roll->lazy_top) return s;
-  return s + roll->shape_e[j] * (roll->lazy_c + roll->lazy_c2 * roll->prof_L[j]);
+  if (j >= roll->lazy.top) return s;
+  return s + roll->ref.shape_e[j] * (roll->lazy.c + roll->lazy.c2 * roll->prof.L[j]);
 }
 
 /* The stresses in full for a reader, without touching the lazy state (so that reading a
@@ -139,8 +138,8 @@ static const double *roll_lazy_view(const rs_roll *roll, const double *restrict 
                                     const double *restrict shape, double C2,
                                     double *restrict v)
 {
-  const int F = roll->lazy_top, n = roll->n;
-  const double C = roll->lazy_c, *restrict pL = roll->prof_L;
+  const int F = roll->lazy.top, n = roll->n;
+  const double C = roll->lazy.c, *restrict pL = roll->prof.L;
   const int lazy_end = F - 1 < n ? F - 1 : n; /* layers 0..F-2 sit on lazy nodes 1..F-1 */
   if (C2 != 0.0)
     for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + shape[j + 1] * (C + C2 * pL[j + 1]);
@@ -152,12 +151,12 @@ static const double *roll_lazy_view(const rs_roll *roll, const double *restrict 
 
 const double *rsi_roll_lazy_view_r(rs_roll *roll)
 {
-  return roll_lazy_view(roll, roll->sigma_r, roll->shape_e, roll->lazy_c2, roll->view_r);
+  return roll_lazy_view(roll, roll->sigma_r, roll->ref.shape_e, roll->lazy.c2, roll->lazy.view_r);
 }
 
 const double *rsi_roll_lazy_view_theta(rs_roll *roll)
 {
-  return roll_lazy_view(roll, roll->sigma_theta, roll->shape_h, 0.0, roll->view_theta);
+  return roll_lazy_view(roll, roll->sigma_theta, roll->ref.shape_h, 0.0, roll->lazy.view_theta);
 }
 
 /* Whether the lazy deep part may be used: when ln E_r(P) is concave over P >= 0, the drift
@@ -185,4 +184,55 @@ int rsi_roll_lazy_allowed(const rs_roll_params *p)
     if (!(s1 <= s0 * (1.0 + 1e-9) + 1e-300)) return 0;
   }
   return 1;
+}
+
+/* The deep part of an increment committed: below node lo (> 0) it is c x shape + c2 x shape
+ * x prof_L (rsi_roll_block_increment), which the lazy nodes take in their common scales
+ * and the nodes from the lazy frontier (or 1) to lo explicitly; the core takes c x shape_e
+ * there (prof_L is 0 at the core), or ds0 for an increment computed node by node (lo = 0).
+ * Returns the lowest node with its own stored value (1, or the lazy frontier). Shared by
+ * rsi_roll_commit and rsi_roll_add_one: one formula. The lazy zone's, since it moves its
+ * scales. */
+int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0)
+{
+  int j0 = 1;
+  if (lo > 0 && roll->lazy.top > 0) {
+    roll->lazy.c += c;
+    roll->lazy.c2 += c2;
+    j0 = roll->lazy.top;
+  } else {
+    roll->core_sigma += lo > 0 ? c * roll->ref.shape_e[0] : ds0;
+  }
+  rsi_roll_shape_add(roll, j0, lo, c, c2);
+  return j0;
+}
+
+/* whether this increment, of m layers, may freeze nodes (one layer: no corrector reads the
+ * pressures at every node) */
+void rsi_roll_lazy_configure(rs_roll *roll, int m) { roll->lazy.ok = m == 1 && roll->lazy.allowed; }
+
+/* The zone emptied without applying its scales: the stored stresses were just set in full
+ * (rs_roll_restore) */
+void rsi_roll_lazy_clear(rs_roll *roll)
+{
+  roll->lazy.top = 0;
+  roll->lazy.c = roll->lazy.c2 = 0.0;
+}
+
+int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap)
+{
+  roll_lazy *z = &roll->lazy;
+  double **const node_arrays[] = {&z->a, &z->b, &z->Lmax};
+  double **const layer_arrays[] = {&z->view_r, &z->view_theta};
+  z->allowed = rsi_roll_lazy_allowed(&roll->p);
+  return rsi_roll_calloc(node_arrays, 3, cap + 1) & rsi_roll_calloc(layer_arrays, 2, cap);
+}
+
+void rsi_roll_lazy_free(rs_roll *roll)
+{
+  free(roll->lazy.a);
+  free(roll->lazy.b);
+  free(roll->lazy.Lmax);
+  free(roll->lazy.view_r);
+  free(roll->lazy.view_theta);
 }

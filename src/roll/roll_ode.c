@@ -1,15 +1,21 @@
 /* The increment ODE of the roll engine (docs/roll-model.md): in x = ln r,
  *     w' = g^2 - 1 - 2 w - w^2,   L' = w,     g^2(x) = E_theta / E_r(P(x)),
  * with ln g^2 a C^1 cubic Hermite between the layer nodes, E_r frozen at the pressures
- * before the increment. The right-hand side, its exact Jacobian and CVODE's error weights. */
+ * before the increment. The right-hand side and CVODE's error weights (the exact Jacobian,
+ * which only CVODE's own Newton iteration needs, is the fallback corrector's:
+ * roll_corrector.c). */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 
+#include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
+#include "roll/vector2.h"
 #include "util/error.h"
 #include "util/log_vec.h"
+#include "util/sundials_compat.h"
 
 /* ln g^2 at node j: from the pass over the integration's nodes (rsi_roll_lg2_range), or else
  * formed when first needed in an epoch. A neighbour's value is usually
@@ -20,22 +26,22 @@
  * costs ~20 ns; log() otherwise. */
 static inline double roll_lg2(rs_roll *roll, int j)
 {
-  if (roll->lg2_range_epoch == roll->epoch && j >= roll->lg2_lo && j <= roll->lg2_hi)
-    return roll->lg2[j];
-  if (roll->lg2_epoch[j] != roll->epoch) {
-    const unsigned long long ep = roll->epoch;
-    const int k = j > 0 && roll->lg2_epoch[j - 1] == ep ? j - 1
-                  : j + 1 < roll->nodes_in_use && roll->lg2_epoch[j + 1] == ep ? j + 1
+  if (roll->ode.lg2_range_epoch == roll->ode.epoch && j >= roll->ode.lg2_lo && j <= roll->ode.lg2_hi)
+    return roll->ode.lg2[j];
+  if (roll->ode.lg2_epoch[j] != roll->ode.epoch) {
+    const unsigned long long ep = roll->ode.epoch;
+    const int k = j > 0 && roll->ode.lg2_epoch[j - 1] == ep ? j - 1
+                  : j + 1 < roll->ode.nodes_in_use && roll->ode.lg2_epoch[j + 1] == ep ? j + 1
                                                                               : -1;
-    const double z = k >= 0 ? (roll->Er[k] - roll->Er[j]) / (roll->Er[k] + roll->Er[j]) : 1.0;
+    const double z = k >= 0 ? (roll->ode.Er[k] - roll->ode.Er[j]) / (roll->ode.Er[k] + roll->ode.Er[j]) : 1.0;
     if (fabs(z) < 0.015) {
-      roll->lg2[j] = roll->lg2[k] + roll_log_ratio_small(z);
+      roll->ode.lg2[j] = roll->ode.lg2[k] + roll_log_ratio_small(z);
     } else {
-      roll->lg2[j] = log(roll->p.E_theta / roll->Er[j]);
+      roll->ode.lg2[j] = log(roll->p.E_theta / roll->ode.Er[j]);
     }
-    roll->lg2_epoch[j] = ep;
+    roll->ode.lg2_epoch[j] = ep;
   }
-  return roll->lg2[j];
+  return roll->ode.lg2[j];
 }
 
 /* r = e^x near the anchor as r_anchor e^(x - x_anchor) by a Taylor sum (relative error
@@ -43,13 +49,13 @@ static inline double roll_lg2(rs_roll *roll, int j)
  * nothing accumulates. CVODE evaluates within a step or two of where it was. */
 static inline double roll_radius_at(rs_roll *roll, double x)
 {
-  const double d = x - roll->x_anchor;
+  const double d = x - roll->ode.x_anchor;
   if (!(fabs(d) < 0.02)) {
-    roll->x_anchor = x;
-    roll->r_anchor = exp(x);
-    return roll->r_anchor;
+    roll->ode.x_anchor = x;
+    roll->ode.r_anchor = exp(x);
+    return roll->ode.r_anchor;
   }
-  return roll->r_anchor * roll_exp_small_estrin(d);
+  return roll->ode.r_anchor * roll_exp_small_estrin(d);
 }
 
 /* g^2 at x = ln r: a cubic Hermite in ln g^2 between the nodes (Catmull-Rom slopes), in
@@ -60,9 +66,9 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
 {
   const double r = roll_radius_at(roll, x);
   double inv_p = roll->inv_caliper; /* 1 / the pitch of the interval r is in */
-  const double xi = roll->geom ? rsi_roll_air_coord(roll, r, &inv_p) : (r - roll->p.core_radius) * inv_p;
+  const double xi = roll->air.geom ? rsi_roll_air_coord(roll, r, &inv_p) : (r - roll->p.core_radius) * inv_p;
   *xi_out = xi;
-  const int last = roll->nodes_in_use - 1;
+  const int last = roll->ode.nodes_in_use - 1;
   int j = xi <= 0.0 ? -1 : (int)xi;
   /* at the end nodes themselves (an integration starts at the core and stops at its top
    * node; r = e^x there within rounding) the slope is the inner interval's, one-sided:
@@ -72,10 +78,10 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
     j = j < 0 ? 0 : last - 1;
   if (j < 0 || j >= last) {
     *dg2 = 0.0;
-    return roll->p.E_theta / roll->Er[j < 0 ? 0 : last];
+    return roll->p.E_theta / roll->ode.Er[j < 0 ? 0 : last];
   }
   double f = xi - j;
-  if (j != hc->j || hc->epoch != roll->epoch) {
+  if (j != hc->j || hc->epoch != roll->ode.epoch) {
     const double y0 = roll_lg2(roll, j), y1 = roll_lg2(roll, j + 1);
     const double m0 = j > 0 ? 0.5 * (y1 - roll_lg2(roll, j - 1)) : y1 - y0;
     const double m1 = j + 1 < last ? 0.5 * (roll_lg2(roll, j + 2) - y0) : y1 - y0;
@@ -84,9 +90,9 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
     hc->m0 = m0;
     hc->c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1;
     hc->c3 = 2.0 * (y0 - y1) + m0 + m1;
-    hc->g0 = roll->p.E_theta / roll->Er[j]; /* = e^y0 */
+    hc->g0 = roll->p.E_theta / roll->ode.Er[j]; /* = e^y0 */
     hc->j = j;
-    hc->epoch = roll->epoch;
+    hc->epoch = roll->ode.epoch;
   }
   const double m0 = hc->m0, c2 = hc->c2, c3 = hc->c3;
   /* e^v = g^2 at the node times e^(v - y0), a change of ln g^2 within one layer: the
@@ -103,8 +109,8 @@ static double roll_g2_eval(rs_roll *roll, roll_g2_cubic *hc, double x, double *d
  * from the anchored radius; either way without an exp() */
 double rsi_roll_layer_coord_at(rs_roll *roll, double x)
 {
-  if (x == roll->gx && roll->gepoch == roll->epoch) return roll->gxi;
-  if (roll->geom) {
+  if (x == roll->ode.gx && roll->ode.gepoch == roll->ode.epoch) return roll->ode.gxi;
+  if (roll->air.geom) {
     double inv_p;
     return rsi_roll_air_coord(roll, roll_radius_at(roll, x), &inv_p);
   }
@@ -119,8 +125,8 @@ double rsi_roll_layer_coord_at(rs_roll *roll, double x)
  * wide as a double: it stays in the vector registers) */
 void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
 {
-  double *restrict lg = roll->lg2;
-  const double *restrict E = roll->Er, Eth = roll->p.E_theta;
+  double *restrict lg = roll->ode.lg2;
+  const double *restrict E = roll->ode.Er, Eth = roll->p.E_theta;
   int64_t odd = 0;
   for (int j = lo; j <= hi; ++j) {
     const double g2 = Eth / E[j];
@@ -131,9 +137,9 @@ void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
     const double g2 = Eth / E[j];
     if (!(g2 >= DBL_MIN && g2 <= DBL_MAX)) lg[j] = log(g2);
   }
-  roll->lg2_lo = lo;
-  roll->lg2_hi = hi;
-  roll->lg2_range_epoch = roll->epoch;
+  roll->ode.lg2_lo = lo;
+  roll->ode.lg2_hi = hi;
+  roll->ode.lg2_range_epoch = roll->ode.epoch;
 }
 
 /* g^2 at x for the error correction's look inside a step, on a copy of the right-hand
@@ -141,7 +147,7 @@ void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
  * step starts where this one ended */
 double rsi_roll_g2_probe(rs_roll *roll, double x)
 {
-  roll_g2_cubic hc = roll->g2c;
+  roll_g2_cubic hc = roll->ode.g2c;
   double dg2, xi;
   return roll_g2_eval(roll, &hc, x, &dg2, &xi);
 }
@@ -149,13 +155,13 @@ double rsi_roll_g2_probe(rs_roll *roll, double x)
 /* roll_g2_eval at x, kept for the next call at the same x (dg2 may be NULL) */
 double rsi_roll_g2_at(rs_roll *roll, double x, double *dg2)
 {
-  if (x != roll->gx || roll->gepoch != roll->epoch) {
-    roll->g2x = roll_g2_eval(roll, &roll->g2c, x, &roll->dg2x, &roll->gxi);
-    roll->gx = x;
-    roll->gepoch = roll->epoch;
+  if (x != roll->ode.gx || roll->ode.gepoch != roll->ode.epoch) {
+    roll->ode.g2x = roll_g2_eval(roll, &roll->ode.g2c, x, &roll->ode.dg2x, &roll->ode.gxi);
+    roll->ode.gx = x;
+    roll->ode.gepoch = roll->ode.epoch;
   }
-  if (dg2) *dg2 = roll->dg2x;
-  return roll->g2x;
+  if (dg2) *dg2 = roll->ode.dg2x;
+  return roll->ode.g2x;
 }
 
 /* f(x, [w, L]) = [g^2 - 1 - 2w - w^2, w],  x = ln r */
@@ -168,18 +174,6 @@ int rsi_roll_rhs(sunrealtype x, N_Vector yv, N_Vector ydot, void *user)
   f[0] = g2 - 1.0 - 2.0 * w - w * w;
   f[1] = w;
   return isfinite(f[0]) ? 0 : 1; /* recoverable: CVODE retries with a smaller step */
-}
-
-/* J = df/d(w, L) = [[-(2 + 2w), 0], [1, 0]] */
-int rsi_roll_jac(double x, const double y[2], double J[2][2], void *user)
-{
-  (void)x;
-  (void)user;
-  J[0][0] = -(2.0 + 2.0 * y[0]);
-  J[0][1] = 0.0;
-  J[1][0] = 1.0;
-  J[1][1] = 0.0;
-  return 0;
 }
 
 /* CVODE's error weights 1/(rtol |y_i| + atol), as CVodeSStolerances would form them, in
@@ -202,8 +196,8 @@ int rsi_roll_ewt(N_Vector yv, N_Vector ewt, void *user)
  * below the lazy frontier are not read (roll_lazy.c). Plain loops: they vectorise. */
 void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add)
 {
-  double *restrict P = roll->P_node;
-  const int n = roll->n < k ? roll->n : k, F = roll->lazy_top;
+  double *restrict P = roll->ode.P_node;
+  const int n = roll->n < k ? roll->n : k, F = roll->lazy.top;
   if (F == 0) P[0] = -roll->core_sigma;
   for (int j = F > 1 ? F : 1; j <= n; ++j) P[j] = -roll->sigma_r[j - 1];
   for (int j = n + 1 > F ? n + 1 : F; j <= k; ++j) P[j] = 0.0;
@@ -211,13 +205,13 @@ void rsi_roll_gather_pressure(rs_roll *roll, int k, const double *add)
     for (int j = F; j <= k; ++j) P[j] += add[j];
 }
 
-/* the error for node j, whose modulus (roll->Er, at roll->P_node) is not positive and finite */
+/* the error for node j, whose modulus (roll->ode.Er, at roll->ode.P_node) is not positive and finite */
 static rs_status roll_modulus_refused(const rs_roll *roll, int j)
 {
   return RS_ERROR(RS_ERR_SOLVER,
                   "radial modulus E_r = %g Pa at r = %.6g m (pressure %g Pa) is not positive: "
                   "the radial law is outside its range",
-                  roll->Er[j], roll_node_radius(roll, j), roll->P_node[j]);
+                  roll->ode.Er[j], roll_node_radius(roll, j), roll->ode.P_node[j]);
 }
 
 /* E_r at the nodes [lo, hi) from P_node, checked: positive and finite; with entrained air
@@ -225,20 +219,20 @@ static rs_status roll_modulus_refused(const rs_roll *roll, int j)
 static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
 {
   if (hi <= lo) return RS_OK;
-  rs_radial_modulus_n(&roll->p.radial, roll->P_node + lo, roll->Er + lo, hi - lo);
+  rs_radial_modulus_n(&roll->p.radial, roll->ode.P_node + lo, roll->ode.Er + lo, hi - lo);
   /* linear and Pfeiffer moduli are positive and finite at every finite P >= 0 (K1, K2,
    * E_r > 0 checked at load; the pressures are finite: rsi_roll_commit); a polynomial or a
    * table can leave its range: one vectorised pass, the node looked for only then */
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
-    const double *restrict E = roll->Er;
+    const double *restrict E = roll->ode.Er;
     int64_t bad = 0; /* a double's width: the OR stays in the vector registers */
     for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
     for (int j = lo; bad && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return roll_modulus_refused(roll, j);
   }
-  if (roll->p.air_film) rsi_roll_air_series(roll, roll->P_node, roll->Er, lo, hi);
+  if (roll->p.air_film) rsi_roll_air_series(roll, roll->ode.P_node, roll->ode.Er, lo, hi);
   return RS_OK;
 }
 
@@ -249,7 +243,7 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
 static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
 {
   const rs_radial_law *law = &roll->p.radial;
-  double *restrict P = roll->P_node, *restrict E = roll->Er;
+  double *restrict P = roll->ode.P_node, *restrict E = roll->ode.Er;
   const int n = roll->n < hi - 1 ? roll->n : hi - 1;
   if (hi <= lo) return RS_OK;
   int bad = -1;
@@ -278,8 +272,8 @@ static rs_status roll_modulus_stress_range(rs_roll *roll, int lo, int hi)
 static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
 {
   if (st) return st;
-  roll->epoch++;
-  roll->nodes_in_use = k + 1;
+  roll->ode.epoch++;
+  roll->ode.nodes_in_use = k + 1;
   return RS_OK;
 }
 
@@ -287,7 +281,7 @@ static rs_status roll_modulus_epoch(rs_roll *roll, int k, rs_status st)
  * the predictor's modulus, at the pressures before the increment */
 rs_status rsi_roll_set_modulus_stress(rs_roll *roll, int k)
 {
-  return roll_modulus_epoch(roll, k, roll_modulus_stress_range(roll, roll->lazy_top, k + 1));
+  return roll_modulus_epoch(roll, k, roll_modulus_stress_range(roll, roll->lazy.top, k + 1));
 }
 
 /* The pressures and moduli of the nodes [lo, hi) that have just left the lazy zone
@@ -297,10 +291,102 @@ rs_status rsi_roll_prepare_nodes(rs_roll *roll, int lo, int hi)
   return roll_modulus_stress_range(roll, lo, hi); /* flushed: none of them lazy */
 }
 
-/* E_r(P) at the nodes lazy_top..k, P from roll->P_node: the modulus an integration sees
+/* E_r(P) at the nodes lazy_top..k, P from roll->ode.P_node: the modulus an integration sees
  * (g^2 = E_theta / E_r, and ln g^2, are formed by rsi_roll_lg2_range or where the steps look:
  * roll_lg2). */
 rs_status rsi_roll_set_modulus(rs_roll *roll, int k)
 {
-  return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy_top, k + 1));
+  return roll_modulus_epoch(roll, k, roll_modulus_range(roll, roll->lazy.top, k + 1));
+}
+
+/* The moduli Ep (with entrained air its film in series) at the pressures Pp = 1.001 P + 1 Pa,
+ * a little above the pressures P, at the nodes [lo, hi): d ln E_r / dP by the forward
+ * difference (Ep - E) / (E (Pp - P)), to ~1e-3. One formula for the lazy zone's drift
+ * bound (roll_lazy.c) and the drift profile's forcing (roll_profile.c). */
+void rsi_roll_modulus_probe(const rs_roll *roll, const double *restrict P, double *restrict Pp,
+                            double *restrict Ep, int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) Pp[j] = P[j] * 1.001 + 1.0;
+  rs_radial_modulus_n(&roll->p.radial, Pp + lo, Ep + lo, hi - lo);
+  if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, lo, hi);
+}
+
+/* ---- the workspace's life ---------------------------------------------------------------- */
+
+/* The workspace's arrays for a roll of cap layers (nodes 0..cap), zeroed; 0 when one could
+ * not be allocated (rsi_roll_ode_free frees what was) */
+int rsi_roll_ode_alloc(rs_roll *roll, size_t cap)
+{
+  roll_ode *o = &roll->ode;
+  double **const arrays[] = {&o->P_node, &o->Er, &o->lg2};
+  o->lg2_range_max = RS_LG2_RANGE_MAX;
+  o->lg2_hi = -1; /* no range yet */
+  o->lg2_epoch = calloc(cap + 1, sizeof *o->lg2_epoch);
+  return rsi_roll_calloc(arrays, 3, cap + 1) && o->lg2_epoch;
+}
+
+/* CVODE for the roll: BDF on the 2-vector (w, L) with its fused and specialised
+ * operations (vector2.c), the engine's right-hand side and error weights, the exact
+ * corrector or CVODE's Newton iteration (roll_corrector.c); 0 on success */
+int rsi_roll_ode_create(rs_roll *roll)
+{
+  roll_ode *o = &roll->ode;
+  if (rs_sundials_context_create(&o->sunctx) != 0) return -1;
+  o->y = N_VNew_Serial(2, o->sunctx);
+  if (!o->y) return -1;
+  /* fused vector kernels: fewer calls per step, and steps are what this engine is made of */
+  if (N_VEnableFusedOps_Serial(o->y, SUNTRUE) != 0) return -1;
+  /* and the hot ones as straight-line 2-component code (src/roll/vector2.c) */
+  if (rsi_roll_vector2_specialise(o->y) != 0) return -1;
+  N_VConst(0.0, o->y);
+  o->cvode = CVodeCreate(CV_BDF, o->sunctx);
+  if (!o->cvode) return -1;
+  if (rs_sundials_cvode_messages(o->cvode, o->sunctx, &o->cvode_msg) != 0) return -1;
+  if (CVodeInit(o->cvode, rsi_roll_rhs, log(roll->p.core_radius), o->y) != CV_SUCCESS) return -1;
+  if (CVodeWFtolerances(o->cvode, rsi_roll_ewt) != CV_SUCCESS) return -1;
+  if (CVodeSetUserData(o->cvode, roll) != CV_SUCCESS) return -1;
+  /* the corrector equations solved exactly (roll_corrector.c, vector2.c) */
+  if (rsi_roll_corrector_attach(o->sunctx, o->cvode, o->y, &o->NLS, &o->fallback_LS,
+                                &o->fallback_A) != 0)
+    return -1;
+  /* one CVode call = one step here; the per-increment budget is counted by the engine */
+  if (CVodeSetMaxNumSteps(o->cvode, 10) != CV_SUCCESS) return -1;
+  /* CVODE keeps its step (and its order) while the step it could take is within a band of
+   * the current one, [0, 1.5] by default: it never shrinks a step until one fails its error
+   * test. Near the surface, where every step must be ~10 % shorter than the last, one step
+   * in five would fail. [0.8, 1.05]: it shrinks a step before it fails, and moves up to order 5
+   * on the way up from a restart in the smooth interior, where a partial integration starts
+   * (docs/performance.md has the measurements). */
+  if (CVodeSetEtaFixedStepBounds(o->cvode, 0.8, 1.05) != CV_SUCCESS) return -1;
+  return 0;
+}
+
+void rsi_roll_ode_free(rs_roll *roll)
+{
+  roll_ode *o = &roll->ode;
+  if (o->cvode) CVodeFree(&o->cvode);
+  if (o->NLS) SUNNonlinSolFree(o->NLS); /* CVODE does not free a solver it was given */
+  if (o->fallback_LS) SUNLinSolFree(o->fallback_LS);
+  if (o->fallback_A) SUNMatDestroy(o->fallback_A);
+  if (o->y) N_VDestroy(o->y);
+  if (o->sunctx) SUNContext_Free(&o->sunctx);
+  free(o->P_node);
+  free(o->Er);
+  free(o->lg2);
+  free(o->lg2_epoch);
+}
+
+/* CVODE restarted at x0 (the start node's ln r) from y = (w0, L0); r = e^x anchored afresh
+ * at the start (its radii do not depend on where the last integration ended). 0, or -1
+ * when CVODE refuses (its message in cvode_msg) */
+int rsi_roll_ode_restart(rs_roll *roll, double x0, double w0, double L0)
+{
+  roll_ode *o = &roll->ode;
+  sunrealtype *y = N_VGetArrayPointer(o->y);
+  y[0] = w0;
+  y[1] = L0;
+  o->cvode_msg[0] = '\0';
+  o->x_anchor = x0;
+  o->r_anchor = exp(x0);
+  return CVodeReInit(o->cvode, x0, o->y) == CV_SUCCESS ? 0 : -1;
 }

@@ -21,6 +21,7 @@
  * ones the drift since the reference does. */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "roll/roll_internal.h"
 
@@ -54,28 +55,19 @@ static inline void roll_profile_weights(double z, int series, double *q, double 
 }
 
 /* Layer j's coefficients of the recurrence (rsi_roll_profile_build): over the layer
- * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B. d holds the differences of
- * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top. The Taylor sums where
- * they hold (the weights' by z, the exponential's by its argument), else the closed forms,
- * exp(). */
-static inline void roll_profile_layer(int j, int top, const double *restrict d,
-                                      const double *restrict u, const double *restrict E,
-                                      const double *restrict w, const double *restrict x,
-                                      double Eth, double *Q, double *Cf, double *A, double *B)
+ * p_w(end) = Q p_w(start) + Cf and int p_w dx = A p_w(start) + B, from its length h in x
+ * and z = (2 + w_j + w_j+1) h, g^2 at its ends (g0, g1) and e^(v - ln g^2_j) at its middle
+ * (ex), d ln g^2 / dC at its ends (u0, u1) and the slopes of that cubic there (um, up).
+ * The one formula of every layer (the inner layers' vectorised pass and the others alike);
+ * the Taylor sums of the weights when series != 0 (|z| < 0.03), else the closed forms. */
+static inline void roll_profile_coef(double h, double z, int series, double g0, double g1,
+                                     double ex, double u0, double u1, double um, double up,
+                                     double *Q, double *Cf, double *A, double *B)
 {
-  /* the cubics at the middle: v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference
-   * m0 - m1 = (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes) */
-  const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
-  const double um = j > 0 ? 0.5 * (u[j + 1] - u[j - 1]) : u[j + 1] - u[j];
-  const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
-  const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
-  const double g0 = Eth / E[j], g1 = Eth / E[j + 1];
-  const double gm = g0 * roll_exp_step(dv);
-  const double b0 = g0 * u[j], b1 = g1 * u[j + 1];
-  const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.125 * (um - up));
+  const double gm = g0 * ex;
+  const double b0 = g0 * u0, b1 = g1 * u1;
+  const double bm = gm * (0.5 * (u0 + u1) + 0.125 * (um - up));
   const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
-  const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
-  const int series = fabs(z) < 0.03; /* the closed forms lose z^-2 .. z^-3 below */
   double phi[3], psi[3];
   roll_profile_weights(z, series, Q, phi, psi);
   *Cf = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
@@ -83,9 +75,28 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
   *B = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
 }
 
-/* roll_profile_layer's Taylor sums for the layers in..top-2 (in >= 1: both neighbours' slopes
- * centred), written out in a loop over arrays passed as such, that vectorises; returns
- * nonzero when some layer's sums do not hold (the caller does those again) */
+/* Layer j's coefficients (roll_profile_coef) at any layer: d holds the differences of
+ * ln g^2 between neighbours, u the nodes' d ln g^2 / dC, nodes 0..top; the cubics at the
+ * middle, v - ln g^2_j = d_j/2 + (m0 - m1)/8, the slopes' difference m0 - m1 =
+ * (d_{j-1} - d_{j+1})/2 inside and 0 at an end interval (one-sided slopes); exp() where
+ * the Taylor sums do not hold */
+static inline void roll_profile_layer(int j, int top, const double *restrict d,
+                                      const double *restrict u, const double *restrict E,
+                                      const double *restrict w, const double *restrict x,
+                                      double Eth, double *Q, double *Cf, double *A, double *B)
+{
+  const double dm = j > 0 ? d[j - 1] : d[j], dp = j + 1 < top ? d[j + 1] : d[j];
+  const double um = j > 0 ? 0.5 * (u[j + 1] - u[j - 1]) : u[j + 1] - u[j];
+  const double up = j + 1 < top ? 0.5 * (u[j + 2] - u[j]) : u[j + 1] - u[j];
+  const double dv = 0.5 * d[j] + 0.0625 * (dm - dp);
+  const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
+  roll_profile_coef(h, z, fabs(z) < 0.03, Eth / E[j], Eth / E[j + 1], roll_exp_step(dv), u[j],
+                    u[j + 1], um, up, Q, Cf, A, B);
+}
+
+/* roll_profile_layer for the layers in..top-2 (in >= 1: both neighbours' slopes centred)
+ * where the Taylor sums hold, in a loop over arrays passed as such, that vectorises;
+ * returns nonzero when some layer's sums do not hold (the caller does those again) */
 static int64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
@@ -95,17 +106,14 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
   for (int j = in; j + 1 < top; ++j) {
     const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
     const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
-    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof_top -1 */
-    const double g0 = Eth / E[j], gm = g0 * roll_exp_small(dv);
-    const double b0 = g0 * u[j], b1 = Eth / E[j + 1] * u[j + 1];
-    const double bm = gm * (0.5 * (u[j] + u[j + 1]) + 0.0625 * (u[j + 1] - u[j - 1] - u[j + 2] + u[j]));
-    const double a1 = -3.0 * b0 + 4.0 * bm - b1, a2 = 2.0 * (b0 - 2.0 * bm + b1);
-    double q, phi[3], psi[3];
-    roll_profile_weights(z, 1, &q, phi, psi);
+    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof.top -1 */
+    double q, cf, a, b; /* locals, stored after: the loop vectorises */
+    roll_profile_coef(h, z, 1, Eth / E[j], Eth / E[j + 1], roll_exp_small(dv), u[j], u[j + 1],
+                      0.5 * (u[j + 1] - u[j - 1]), 0.5 * (u[j + 2] - u[j]), &q, &cf, &a, &b);
     Q[j] = q;
-    Cf[j] = h * (b0 * phi[0] + a1 * phi[1] + a2 * phi[2]);
-    A[j] = h * phi[0];
-    B[j] = h * h * (b0 * psi[0] + a1 * psi[1] + a2 * psi[2]);
+    Cf[j] = cf;
+    A[j] = a;
+    B[j] = b;
   }
   return wide;
 }
@@ -124,14 +132,14 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
  *     p_L(j+1) = p_L(j) + h phi_0 p_w(j) + h^2 (beta_0 psi_0 + a_1 psi_1 + a_2 psi_2),
  * beta(s) = beta_0 + a_1 s/h + a_2 (s/h)^2, p_L the exact integral of that p_w. Near the
  * surface, where P and so ln g^2 change by tens of per cent over a layer, a forcing linear
- * between the nodes was 2 % off. Each layer's coefficients in a pass that vectorises (the
+ * between the nodes would be 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
 int rsi_roll_profile_build(rs_roll *roll, int from, int top)
 {
-  double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L;
-  const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->shape_e;
-  const double *restrict E = roll->Er_ref, *restrict P = roll->P_node, Eth = roll->p.E_theta;
+  double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
+  const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->ref.shape_e;
+  const double *restrict E = roll->ref.Er, *restrict P = roll->ode.P_node, Eth = roll->p.E_theta;
   /* the roll's scratch: u and d; the moduli a little above P, then in the same arrays the
    * coefficients Q and Cf (so not restrict), A and B */
   double *restrict u = roll->scratch.u, *restrict d = roll->scratch.d;
@@ -141,10 +149,8 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   for (int b0 = lo; b0 <= top; b0 += RS_PROFILE_BLOCK) {
     const int nb = top + 1 - b0 < RS_PROFILE_BLOCK ? top + 1 - b0 : RS_PROFILE_BLOCK;
     double *Pp = Cf, *Ep = Q;
-    /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_lazy.c) */
-    for (int j = b0; j < b0 + nb; ++j) Pp[j] = P[j] * 1.001 + 1.0;
-    rs_radial_modulus_n(&roll->p.radial, Pp + b0, Ep + b0, nb);
-    if (roll->p.air_film) rsi_roll_air_series(roll, Pp, Ep, b0, b0 + nb);
+    /* d ln E_r / dP by the forward difference the lazy part's bound uses (roll_ode.c) */
+    rsi_roll_modulus_probe(roll, P, Pp, Ep, b0, b0 + nb);
     for (int j = b0; j < b0 + nb; ++j) u[j] = (Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])) * e[j];
   }
   /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
@@ -183,70 +189,15 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
     pw[j + 1] = pwj;
   }
   /* the bound over nodes 0..top: the nodes below from keep theirs, within prof_max */
-  double m = from > 0 ? roll->prof_max : 0.0;
+  double m = from > 0 ? roll->prof.max : 0.0;
   int64_t nan = 0;
   for (int j = from + 1; j <= top; ++j) {
     m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
     nan |= -(int64_t)(pL[j] != pL[j]);
   }
   if (nan || m != m) m = NAN;
-  roll->prof_max = m;
+  roll->prof.max = m;
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
-}
-
-/* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
- * the node the reference's values take their first-order correction for the drift since
- * the last reference, C = ref_c, for good,
- *     (w, L)_j += C (p_w, p_L)_j,   e_j *= exp(C (p_L,j - p_L,from)),   E_ref,j = E_r,j,
- * the shape so that it stays exp(L) up to a constant, and continuous at the node, where the
- * integration's shape joins it (rsi_roll_add_one). The drift there restarts from 0: what the
- * correction leaves is second order (the start-node search bounded it). Every node was
- * taken out of the lazy zone first (rsi_roll_integrate), so that the shape may change. */
-void rsi_roll_reference_rebase(rs_roll *roll, int from)
-{
-  const double C = roll->ref_c, pLf = roll->prof_L[from];
-  double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->shape_e;
-  double *restrict Eref = roll->Er_ref;
-  const double *restrict pw = roll->prof_w, *restrict pL = roll->prof_L, *restrict E = roll->Er;
-  for (int j = 0; j <= from; ++j) {
-    const double a = C * (pL[j] - pLf);
-    w[j] += C * pw[j];
-    L[j] += C * pL[j];
-    e[j] *= roll_exp_step(a);
-    Eref[j] = E[j];
-  }
-  /* |p_L| <= prof_max: the shape's bound grows by at most the factor */
-  roll->shape_max *= exp(2.0 * fabs(C) * roll->prof_max);
-  /* the drift is in the rebased values now: should this increment fail, the next starts
-   * at or below the node, uncorrected (the nodes above hold the last reference's values,
-   * whose drift C no longer tells: as rsi_roll_integrate marks them for an integration from
-   * the node, but before anything can fail) */
-  roll->ref_c = 0.0;
-  roll->ref_top = from;
-  roll->prof_top = roll->prof_top < from ? roll->prof_top : from;
-}
-
-/* A new reference from node ref_from up, its increment committed: the nodes above it hold
- * this integration's (w, L) and modulus (rsi_roll_integrate), the shape follows it
- * (rsi_roll_add_one, rsi_roll_block_increment); below they were rebased (rsi_roll_reference_rebase).
- * The profile goes on from the node: to first order the drift to come below it is, as
- * before, C times the shape's forcing, so p there is what it was. The drift since is this
- * increment's own deep scale; the reference's age starts again. */
-void rsi_roll_reference_extend(rs_roll *roll)
-{
-  /* as far as the shape followed the integration (not where its scale would overflow) */
-  const int from = roll->ref_from;
-  const int top = roll->ref_top < roll->shape_top ? roll->ref_top : roll->shape_top;
-  roll->ref_age = 0;
-  roll->ref_deep++;
-  roll->deep_references++;
-  roll->ref_from_last = from;
-  if (!(from > 0 && from <= roll->prof_top && top > from)) {
-    roll->prof_top = -1;
-    return;
-  }
-  roll->prof_top = rsi_roll_profile_build(roll, from, top); /* w stored to top: the caller */
-  roll->ref_c = roll->c_deep;
 }
 
 /* The start-node search's error bound for a start s0 (rsi_roll_reuse_start), in units of T0/s,
@@ -263,4 +214,85 @@ double rsi_roll_profile_bound(double eps_max, double L_max, double Ls, int secon
 {
   if (!second) return eps_max * exp(L_max - Ls);
   return eps_max <= 0.1 ? 0.25 * eps_max * eps_max * exp(L_max - Ls) : INFINITY;
+}
+
+/* ---- the profile's books ---------------------------------------------------------------- */
+
+/* whether the roll's increments correct their deep part (one layer, its load beneath, the
+ * deep reuse: rs_roll_add_layers) */
+void rsi_roll_profile_configure(rs_roll *roll, int on) { roll->prof.on = on; }
+
+/* no profile: the nodes it covered no longer hold the reference's values */
+void rsi_roll_profile_drop(rs_roll *roll) { roll->prof.top = -1; }
+
+/* the nodes above top no longer hold the reference's values */
+void rsi_roll_profile_clip(rs_roll *roll, int top)
+{
+  roll->prof.top = roll->prof.top < top ? roll->prof.top : top;
+}
+
+/* A reference's increment (an integration from the core, its shape just kept, the
+ * increment below its block -S times it): its profile built for the drift to come, in use
+ * once the increment is committed (rsi_roll_profile_commit); not for a lumped block's
+ * predictor. w stored up to node bottom: the caller (rsi_roll_block_increment). */
+void rsi_roll_profile_reference(rs_roll *roll, int bottom, double S, int block)
+{
+  roll->prof.top = -1;
+  roll->prof.next = -1;
+  if (roll->prof.on && !block) {
+    roll->prof.next = rsi_roll_profile_build(roll, 0, bottom);
+    roll->prof.c_next = -S;
+  }
+}
+
+/* An increment committed whose deep part below node lo is c x shape (lo = 0: none): the
+ * pressure the reference-valued nodes carry since the reference, -c e (first order),
+ * grows by it; a reference's own increment is -S e below its block (its profile in use
+ * from now); an increment that was not c x shape below its start ends the profile's use */
+void rsi_roll_profile_commit(rs_roll *roll, int lo, double c)
+{
+  if (roll->ref.start > 0) {
+    roll->prof.c += c;
+    if (lo == 0) roll->prof.top = -1;
+  } else if (roll->prof.next >= 0) {
+    roll->prof.top = roll->prof.next;
+    roll->prof.c = roll->prof.c_next;
+  }
+  roll->prof.next = -1;
+}
+
+/* The reference rebased below node from (rsi_roll_reference_rebase): the drift is in its
+ * values now and restarts from 0 */
+void rsi_roll_profile_rebased(rs_roll *roll, int from)
+{
+  roll->prof.c = 0.0;
+  rsi_roll_profile_clip(roll, from);
+}
+
+/* A new reference from node from up, committed (rsi_roll_reference_extend), the shape
+ * following it up to node top: the profile goes on from the node. To first order the
+ * drift to come below it is, as before, C times the shape's forcing, so p there is what it
+ * was; the drift since is this increment's own deep scale. */
+void rsi_roll_profile_extend(rs_roll *roll, int from, int top)
+{
+  if (!(from > 0 && from <= roll->prof.top && top > from)) {
+    roll->prof.top = -1;
+    return;
+  }
+  roll->prof.top = rsi_roll_profile_build(roll, from, top); /* w stored to top: the caller */
+  roll->prof.c = roll->c_deep;
+}
+
+int rsi_roll_profile_alloc(rs_roll *roll, size_t cap)
+{
+  double **const arrays[] = {&roll->prof.w, &roll->prof.L};
+  roll->prof.top = -1;
+  roll->prof.next = -1;
+  return rsi_roll_calloc(arrays, 2, cap + 1);
+}
+
+void rsi_roll_profile_free(rs_roll *roll)
+{
+  free(roll->prof.w);
+  free(roll->prof.L);
 }

@@ -54,10 +54,9 @@ rs_status rs_roll_restore(rs_roll *roll, const rs_roll_state *st)
     return RS_ERROR(RS_ERR_INTERNAL, "a state of %d layers does not fit a roll of %d", st->n,
                     roll->p.max_layers);
   roll->n = st->n;
-  roll->lazy_top = 0; /* the state holds the stresses in full */
-  roll->lazy_c = roll->lazy_c2 = 0.0;
-  roll->prof_top = -1; /* the reference's profile no longer applies */
-  roll->last_start = 0; /* the starts of the roll wound since do not apply */
+  rsi_roll_lazy_clear(roll);          /* the state holds the stresses in full */
+  rsi_roll_profile_drop(roll);        /* the reference's profile no longer applies */
+  rsi_roll_reference_restored(roll);  /* nor the starts of the roll wound since */
   roll->core_sigma = st->core_sigma; /* the work counters keep counting: rewinding costs */
   if (st->n > 0) { /* the state of an empty roll has no arrays */
     memcpy(roll->sigma_r, st->sigma_r, (size_t)st->n * sizeof(double));

@@ -116,7 +116,7 @@ static int v2_scale_vector_array(int nvec, sunrealtype *c, N_Vector *X, N_Vector
   return 0;
 }
 
-int rs_roll_vector2_specialise(N_Vector v)
+int rsi_roll_vector2_specialise(N_Vector v)
 {
   if (!v || N_VGetVectorID(v) != SUNDIALS_NVEC_SERIAL || NV_LENGTH_S(v) != 2) return -1;
   N_Vector_Ops o = v->ops;
@@ -171,8 +171,8 @@ static int newton2_initialize(SUNNonlinearSolver S)
  * it. No real root (a step far too long for the equation): a recoverable failure, CVODE
  * retries with a shorter step. CVODE's convergence test is never called here, so CVODE
  * forms the correction's norm for its error test itself (cvNls: acnrmcur stays false). */
-int rs_roll_corrector_quadratic(double gamma, double p, double q, double w, const double R[2],
-                                double d[2])
+int rsi_roll_corrector_quadratic(double gamma, double p, double q, double w, const double R[2],
+                                 double d[2])
 {
   const double A = -gamma * q, B = 1.0 - gamma * (p + 2.0 * q * w);
   const double disc = B * B - 4.0 * A * R[0];
@@ -184,7 +184,7 @@ int rs_roll_corrector_quadratic(double gamma, double p, double q, double w, cons
 }
 
 /* Solves F(ycor) = ycor + rl1 zn1 - gamma f(t, ypred + ycor) = 0 for the corrector ycor
- * exactly (rs_roll_corrector_quadratic): one residual at the initial guess, whose f carries
+ * exactly (rsi_roll_corrector_quadratic): one residual at the initial guess, whose f carries
  * a(t) and b(t). gamma is all it needs from CVODE. CVODE's setup requests (call_setup) are
  * ignored: no Jacobian or matrix is formed. CVODE adds the counts to its own after every
  * solve: they are per solve. */
@@ -204,7 +204,7 @@ static int newton2_solve(SUNNonlinearSolver S, N_Vector y0, N_Vector ycor, N_Vec
   int flag = c->sys(ycor, c->res, mem);
   if (flag != SUN_NLS_SUCCESS) return flag; /* CVODE's code: < 0 fatal, > 0 recoverable */
   double d[2];
-  if (rs_roll_corrector_quadratic(gamma, c->p, c->q, yp[0] + yc[0], r, d) != 0) {
+  if (rsi_roll_corrector_quadratic(gamma, c->p, c->q, yp[0] + yc[0], r, d) != 0) {
     c->nconvfails = 1;
     return SUN_NLS_CONV_RECVR;
   }
@@ -257,8 +257,8 @@ static int newton2_free(SUNNonlinearSolver S)
   return SUN_NLS_SUCCESS;
 }
 
-SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *cvode_mem,
-                                          double p, double q)
+SUNNonlinearSolver rsi_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *cvode_mem,
+                                           double p, double q)
 {
   SUNNonlinearSolver S = SUNNonlinSolNewEmpty(ctx);
   if (!S) return NULL;
@@ -285,7 +285,7 @@ SUNNonlinearSolver rs_roll_newton2_create(SUNContext ctx, N_Vector tmpl, void *c
   return S;
 }
 
-int rs_roll_newton2_attach(SUNNonlinearSolver S)
+int rsi_roll_newton2_attach(SUNNonlinearSolver S)
 {
   return CVodeSetNonlinearSolver(NEWTON2(S)->cvode, S) == CV_SUCCESS ? 0 : -1;
 }

@@ -25,6 +25,7 @@
 #include "reelsim/reel.h"
 #include "roll/roll.h"
 #include "reelsim/scene.h"
+#include "roll_frozen.h"
 #include "roll_helpers.h"
 
 /* ---- helpers ------------------------------------------------------------------------ */
@@ -309,9 +310,8 @@ static void thin_film_100k(void)
   p.rtol = 1e-7;
   p.atol = 0;
   /* the closed form below is that of the first lumping scheme (the block's load at its outer
-   * radius); the default scheme places each layer's load at its own radius */
-  p.lumping = RS_LUMP_FROZEN;
-  rs_roll *roll = wind(&p, n, m, T);
+   * radius, tests/roll_frozen.h); the engine places each layer's load at its own radius */
+  rs_roll *roll = wind_by(&p, n, m, T, roll_add_layers_frozen);
   if (!roll) return;
   CHECK(all_finite(roll));
   rs_roll_stats stats;

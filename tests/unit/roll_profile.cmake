@@ -1,1 +1,1 @@
-rs_test(test_roll_profile unit SOURCES unit/test_roll_profile.c CASES profile_first_order constant_modulus failed_reference frozen_block failed_deep_reference VALIDATION_CASES vs_tight_reference film_span deep_reference)
+rs_test(test_roll_profile unit SOURCES unit/test_roll_profile.c CASES profile_first_order constant_modulus failed_reference lumped_block failed_deep_reference VALIDATION_CASES vs_tight_reference film_span deep_reference)

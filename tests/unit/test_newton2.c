@@ -64,7 +64,7 @@ static run integrate_eq(riccati p, double w0, double x1, double rtol, int mode, 
   SUNContext ctx = NULL;
   CHECK(rs_sundials_context_create(&ctx) == 0);
   N_Vector y = N_VNew_Serial(2, ctx);
-  CHECK(y && rs_roll_vector2_specialise(y) == 0);
+  CHECK(y && rsi_roll_vector2_specialise(y) == 0);
   N_VGetArrayPointer(y)[0] = w0;
   N_VGetArrayPointer(y)[1] = 0.0;
   void *cv = CVodeCreate(CV_BDF, ctx);
@@ -75,8 +75,8 @@ static run integrate_eq(riccati p, double w0, double x1, double rtol, int mode, 
   SUNMatrix A = NULL;
   SUNLinearSolver LS = NULL;
   if (mode == EXACT) {
-    nls = rs_roll_newton2_create(ctx, y, cv, p.p, p.q);
-    CHECK(nls && rs_roll_newton2_attach(nls) == 0);
+    nls = rsi_roll_newton2_create(ctx, y, cv, p.p, p.q);
+    CHECK(nls && rsi_roll_newton2_attach(nls) == 0);
   } else {
     A = SUNDenseMatrix(2, 2, ctx);
     LS = A ? SUNLinSol_Dense(y, A, ctx) : NULL;
@@ -179,7 +179,7 @@ static void corrector_solves_residual(void)
     double f0 = a + p * yp[0] + q * yp[0] * yp[0], f1 = b + yp[0];
     const double R[2] = {c[0] - gamma * f0, c[1] - gamma * f1};
     double d[2];
-    if (rs_roll_corrector_quadratic(gamma, p, q, yp[0], R, d) != 0) {
+    if (rsi_roll_corrector_quadratic(gamma, p, q, yp[0], R, d) != 0) {
       ++refused;
       continue;
     }

@@ -38,8 +38,8 @@ static void wind_checked(rs_roll *roll, int m, int *lazy, int *prof)
     if (rs_roll_add_layers(roll, m, T) != RS_OK) break;
     const char *why = rsi_roll_check_invariants(roll, 1);
     if (why && !bad++) fprintf(stderr, "layer %d: %s\n", rs_roll_layers(roll), why);
-    *lazy = roll->lazy_top > *lazy ? roll->lazy_top : *lazy;
-    *prof = roll->prof_top > *prof ? roll->prof_top : *prof;
+    *lazy = roll->lazy.top > *lazy ? roll->lazy.top : *lazy;
+    *prof = roll->prof.top > *prof ? roll->prof.top : *prof;
   }
   CHECK(rs_roll_layers(roll) > N - m);
   CHECK(bad == 0);
@@ -81,25 +81,28 @@ static void catches_broken(void)
   const double T = 682.5;
   for (int k = 0; k < N - 50; ++k) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
   CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
-  CHECK(roll->lazy_top > 10 && roll->prof_top > 10);
-  if (!(roll->lazy_top > 10 && roll->prof_top > 10)) goto done;
-  const int F = roll->lazy_top, P = roll->prof_top;
-  const double a = roll->lazy_a[5], pL = roll->prof_L[P / 2], e = roll->shape_e[3];
-  roll->lazy_a[5] = roll->lazy_a[F - 1] + 1.0;
+  CHECK(roll->lazy.top > 10 && roll->prof.top > 10);
+  if (!(roll->lazy.top > 10 && roll->prof.top > 10)) goto done;
+  const int F = roll->lazy.top, P = roll->prof.top;
+  const double a = roll->lazy.a[5], pL = roll->prof.L[P / 2], e = roll->ref.shape_e[3];
+  roll->lazy.a[5] = roll->lazy.a[F - 1] + 1.0;
   expect_broken(roll, "prefix maxima");
-  roll->lazy_a[5] = a;
-  roll->prof_L[P / 2] = 2.0 * roll->prof_max + 1.0;
-  expect_broken(roll, "prof_max");
-  roll->prof_L[P / 2] = pL;
-  roll->shape_e[3] = 2.0 * roll->shape_max;
+  roll->lazy.a[5] = a;
+  roll->prof.L[P / 2] = 2.0 * roll->prof.max + 1.0;
+  expect_broken(roll, "prof.max");
+  roll->prof.L[P / 2] = pL;
+  roll->ref.shape_e[3] = 2.0 * roll->ref.shape_max;
   expect_broken(roll, "shape_max");
-  roll->shape_e[3] = e;
-  roll->lazy_top = 0;
+  roll->ref.shape_e[3] = e;
+  roll->lazy.top = 0;
   expect_broken(roll, "pending scale");
-  roll->lazy_top = F;
-  roll->ref_top = roll->n + 1;
-  expect_broken(roll, "ref_top");
-  roll->ref_top = roll->n - roll->shift;
+  roll->lazy.top = F;
+  roll->ref.top = roll->n + 1;
+  expect_broken(roll, "ref.top");
+  roll->ref.top = roll->n - roll->shift;
+  roll->ode.lg2_range_max = -1; /* the ODE workspace's */
+  expect_broken(roll, "lg2_range_max");
+  roll->ode.lg2_range_max = RS_LG2_RANGE_MAX;
   CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
   /* and the roll winds on as before */
   CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);

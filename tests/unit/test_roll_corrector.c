@@ -26,7 +26,7 @@ static void selftest_passes(void)
   if (!roll) return;
   rs_roll_stats s;
   rs_roll_get_stats(roll, &s);
-  CHECK(roll->NLS != NULL && roll->fallback_LS == NULL);
+  CHECK(roll->ode.NLS != NULL && roll->ode.fallback_LS == NULL);
   CHECK(s.jac_evals == 0);
   rs_roll_destroy(&roll);
 }
@@ -66,8 +66,8 @@ static void agree(const rs_roll_params *p, int n, int per_step, double tol)
   rs_roll *newton = wind(p, n, per_step, 500.0);
   rsi_roll_corrector_force_newton(0);
   if (!exact || !newton) goto done;
-  CHECK(exact->NLS != NULL);
-  CHECK(newton->NLS == NULL && newton->fallback_LS != NULL && newton->fallback_A != NULL);
+  CHECK(exact->ode.NLS != NULL);
+  CHECK(newton->ode.NLS == NULL && newton->ode.fallback_LS != NULL && newton->ode.fallback_A != NULL);
   rs_roll_stats se, sn;
   rs_roll_get_stats(exact, &se);
   rs_roll_get_stats(newton, &sn);

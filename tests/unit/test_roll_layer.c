@@ -68,9 +68,9 @@ static rs_roll *newsprint(int quadratic_air)
 static rs_status add_two_step(rs_roll *roll, double T0)
 {
   const int k_old = roll->n, k = k_old + 1, top = k - roll->shift;
-  roll->lazy_ok = roll->lazy_allowed;
+  roll->lazy.ok = roll->lazy.allowed;
   roll->w_lazy = 0;
-  roll->prof_on = roll->lazy_ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
+  roll->prof.on = roll->lazy.ok && roll->shift && roll->p.reuse == RS_REUSE_ON;
   rs_status st = rsi_roll_set_modulus_stress(roll, top);
   if (st == RS_OK) st = rsi_roll_integrate(roll, top);
   if (st == RS_OK) {
@@ -106,7 +106,7 @@ static int wind_both(rs_roll *a, rs_roll *b, int layers, double T, int *mismatch
       CHECK(0);
       return fused;
     }
-    if (a->start >= 1 && n - a->start >= 256 && a->deep_lo == a->start) ++fused;
+    if (a->ref.start >= 1 && n - a->ref.start >= 256 && a->deep_lo == a->ref.start) ++fused;
     if ((rs_roll_layers(a) % 50 == 0) && !same(a, b)) ++*mismatch;
   }
   return fused;
@@ -164,7 +164,7 @@ static void lg2_check(int range, double tol)
   rs_roll *r = NULL;
   CHECK(rs_roll_create(&p, &r) == RS_OK);
   if (!r) return;
-  if (!range) r->lg2_range_max = 0;
+  if (!range) r->ode.lg2_range_max = 0;
   double worst = 0.0;
   long samples = 0;
   for (int i = 0; i < M; ++i) {
@@ -174,10 +174,10 @@ static void lg2_check(int range, double tol)
       break;
     }
     if (i % 97 != 0 && i != M - 1) continue;
-    for (int j = 0; j < r->nodes_in_use; ++j) {
-      const int in_range = r->lg2_range_epoch == r->epoch && j >= r->lg2_lo && j <= r->lg2_hi;
-      if (range ? in_range : r->lg2_epoch[j] == r->epoch) {
-        const double d = fabs(r->lg2[j] - log(r->p.E_theta / r->Er[j]));
+    for (int j = 0; j < r->ode.nodes_in_use; ++j) {
+      const int in_range = r->ode.lg2_range_epoch == r->ode.epoch && j >= r->ode.lg2_lo && j <= r->ode.lg2_hi;
+      if (range ? in_range : r->ode.lg2_epoch[j] == r->ode.epoch) {
+        const double d = fabs(r->ode.lg2[j] - log(r->p.E_theta / r->ode.Er[j]));
         worst = d > worst ? d : worst;
         ++samples;
       }
@@ -210,7 +210,7 @@ static void lg2_range_same_roll(void)
 {
   rs_roll *a = newsprint(0), *b = newsprint(0);
   if (!a || !b) return;
-  b->lg2_range_max = 0;
+  b->ode.lg2_range_max = 0;
   int passes = 0; /* increments of roll a whose integration took the pass */
   for (int i = 0; i < CAP; ++i) {
     const double T = 500.0 * (1.0 + 0.3 * sin(0.003 * i));
@@ -218,9 +218,9 @@ static void lg2_range_same_roll(void)
       CHECK(0);
       break;
     }
-    passes += a->lg2_range_epoch == a->epoch;
+    passes += a->ode.lg2_range_epoch == a->ode.epoch;
   }
-  CHECK(b->lg2_range_epoch == 0); /* roll b never took it */
+  CHECK(b->ode.lg2_range_epoch == 0); /* roll b never took it */
   const int n = rs_roll_layers(a);
   const double *sa = rs_roll_sigma_r(a), *sb = rs_roll_sigma_r(b);
   double big = 0.0, diff = 0.0;
@@ -255,8 +255,8 @@ static void nonfinite_case(rs_load_placement placement)
   const int fused = wind_both(a, b, M, 500.0, &mismatch);
   CHECK(mismatch == 0);
   (void)fused;
-  printf("  start %d deep_lo %d lazy_top %d\n", a->start, a->deep_lo, a->lazy_top);
-  CHECK(a->lazy_top > M / 2 && a->deep_lo > M / 2); /* the deep part lazy, below the start */
+  printf("  start %d deep_lo %d lazy_top %d\n", a->ref.start, a->deep_lo, a->lazy.top);
+  CHECK(a->lazy.top > M / 2 && a->deep_lo > M / 2); /* the deep part lazy, below the start */
   static double sr[M], sth[M];
   memcpy(sr, rs_roll_sigma_r(a), sizeof sr);
   memcpy(sth, rs_roll_sigma_theta(a), sizeof sth);

@@ -13,6 +13,7 @@
 
 #include "check.h"
 #include "roll/roll.h"
+#include "roll_frozen.h"
 #include "roll_helpers.h"
 
 static void compare_altmann(double Ec, double nu, double rtol_check, rs_load_placement placement)
@@ -328,10 +329,10 @@ static void converges_in_layers_per_step(void)
   rs_roll *ref = wind(&p, n, 1, 682.5);
   const int steps[] = {40, 20, 10, 5, 2};
   for (int scheme = 0; scheme < 2 && ref; ++scheme) {
-    p.lumping = scheme == 0 ? RS_LUMP_FROZEN : RS_LUMP_CORRECTED;
     double prev = INFINITY;
     for (int i = 0; i < 5; ++i) {
-      rs_roll *r = wind(&p, n, steps[i], 682.5);
+      rs_roll *r = wind_by(&p, n, steps[i], 682.5,
+                           scheme == 0 ? roll_add_layers_frozen : rs_roll_add_layers);
       if (!r) break;
       double ec = fabs(rs_roll_core_pressure(r) / rs_roll_core_pressure(ref) - 1);
       printf("  %s layers/step %3d core pressure %.6e Pa  rel error %.3e\n",
@@ -359,18 +360,16 @@ static void lumping_corrected(void)
   p.rtol = 1e-8;
   p.atol = 0;
   rs_roll *ref = wind(&p, n, 1, 682.5);
-  p.lumping = RS_LUMP_FROZEN;
-  rs_roll *ref_frozen = wind(&p, n, 1, 682.5);
+  rs_roll *ref_frozen = wind_by(&p, n, 1, 682.5, roll_add_layers_frozen);
   if (!ref || !ref_frozen) return;
   CHECK(memcmp(rs_roll_sigma_r(ref), rs_roll_sigma_r(ref_frozen), n * sizeof(double)) == 0);
   CHECK(memcmp(rs_roll_sigma_theta(ref), rs_roll_sigma_theta(ref_frozen), n * sizeof(double)) == 0);
   CHECK(rs_roll_core_pressure(ref) == rs_roll_core_pressure(ref_frozen));
   const double P_ref = rs_roll_core_pressure(ref);
 
-  rs_roll *r = wind(&p, n, 10, 682.5);
+  rs_roll *r = wind_by(&p, n, 10, 682.5, roll_add_layers_frozen);
   double e_frozen = r ? fabs(rs_roll_core_pressure(r) / P_ref - 1) : NAN;
   rs_roll_destroy(&r);
-  p.lumping = RS_LUMP_CORRECTED;
   const int ms[] = {2, 3, 5, 10};
   double lx[4], ly[4], per_min = INFINITY, per_max = 0;
   for (int i = 0; i < 4; ++i) {
