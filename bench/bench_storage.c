@@ -42,10 +42,11 @@ int main(int argc, char **argv)
   double t2 = rs_clock_wall();
   printf("layers %d: winding %.3f s; storage (10 stages, %.0f h) %.4f s = %.2f %% of the "
          "winding; %ld elastic solves, at most %d sub-steps a change\n",
-         res->n_layers, t1 - t0, sr->hours[sr->n_stages - 1], t2 - t1,
-         100.0 * (t2 - t1) / (t1 - t0), sr->elastic_solves, sr->max_substeps);
+         res->n_layers, t1 - t0, rs_storage_result_hours(sr, NULL)[rs_storage_result_stages(sr) - 1], t2 - t1,
+         100.0 * (t2 - t1) / (t1 - t0), rs_storage_result_elastic_solves(sr), rs_storage_result_max_substeps(sr));
   printf("core pressure by stage (kPa):");
-  for (int s = 0; s < sr->n_stages; ++s) printf(" %.1f", sr->core_pressure[s] / 1e3);
+  for (int s = 0; s < rs_storage_result_stages(sr); ++s)
+    printf(" %.1f", rs_storage_result_core_pressure(sr, NULL)[s] / 1e3);
   printf("\n");
   rs_storage_result_destroy(&sr);
   rs_reel_result_destroy(&res);

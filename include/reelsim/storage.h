@@ -15,20 +15,9 @@
 #include "reelsim/export.h"
 RS_BEGIN_DECLS
 
-typedef struct rs_storage_result {
-  int n_stages;              /* S = storage stages + 1: stage 0 is the wound roll */
-  int n_layers;              /* N */
-  double *hours;             /* S: h of storage at the end of each stage, cumulative (0 first) */
-  double *temperature;       /* S: C */
-  double *humidity;          /* S: % RH */
-  double *core_pressure;     /* S: Pa, compression positive */
-  double *sigma_r;           /* S x N, row-major: Pa at each layer's outer radius */
-  double *sigma_theta;       /* S x N: Pa, each layer's mean hoop stress */
-  rs_defect_report **defects;/* S: the defect rules after each stage */
-  long elastic_solves;       /* tridiagonal solves of the temperature/humidity changes */
-  int max_substeps;          /* the most sub-steps one change needed */
-  double wall_seconds;
-} rs_storage_result;
+/* The stages a stored roll went through: an opaque handle, read through the typed
+ * accessors below (rs_storage_result_<field>); created by rs_storage_run. */
+typedef struct rs_storage_result rs_storage_result;
 
 /* 1 when the problem has storage stages (problem->storage.n_stages > 0). */
 int rs_storage_requested(const rs_problem *problem);
@@ -83,6 +72,9 @@ const double *rs_storage_result_humidity(const rs_storage_result *res, int *n); 
 const double *rs_storage_result_core_pressure(const rs_storage_result *res, int *n); /* Pa */
 const double *rs_storage_result_sigma_r(const rs_storage_result *res, int *n);     /* Pa, S x N */
 const double *rs_storage_result_sigma_theta(const rs_storage_result *res, int *n); /* Pa, S x N */
+long rs_storage_result_elastic_solves(const rs_storage_result *res); /* tridiagonal solves of the changes */
+int rs_storage_result_max_substeps(const rs_storage_result *res);    /* the most sub-steps one change took */
+double rs_storage_result_wall_seconds(const rs_storage_result *res); /* s, the stages' wall time */
 const rs_defect_report *rs_storage_result_defects(const rs_storage_result *res, int s);
 /* rs_defects_assess with the problem's limits (rs_defect_limits_from_problem). */
 rs_status rs_defects_of_problem(const rs_problem *problem, const rs_reel_result *res,

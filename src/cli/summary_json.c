@@ -124,14 +124,14 @@ void cli_json_storage(cli_json *j, const rs_storage_result *sr)
     cli_json_null(j, "storage");
     return;
   }
-  const int S = sr->n_stages;
+  const int S = rs_storage_result_stages(sr);
   const struct {
     const char *key;
     const double *v;
-  } rows[] = {{"hours", sr->hours},
-              {"temperature", sr->temperature},
-              {"humidity", sr->humidity},
-              {"core_pressure", sr->core_pressure}};
+  } rows[] = {{"hours", rs_storage_result_hours(sr, NULL)},
+              {"temperature", rs_storage_result_temperature(sr, NULL)},
+              {"humidity", rs_storage_result_humidity(sr, NULL)},
+              {"core_pressure", rs_storage_result_core_pressure(sr, NULL)}};
   cli_json_object(j, "storage");
   cli_json_int(j, "stages", S - 1);
   for (size_t r = 0; r < sizeof rows / sizeof rows[0]; ++r) {
@@ -150,7 +150,8 @@ void cli_json_storage(cli_json *j, const rs_storage_result *sr)
   cli_json_end(j);
   cli_json_array(j, "defects");
   for (int s = 0; s < S; ++s) {
-    if (sr->defects && sr->defects[s]) defects(j, NULL, sr->defects[s]);
+    const rs_defect_report *d = rs_storage_result_defects(sr, s);
+    if (d) defects(j, NULL, d);
     else cli_json_null(j, NULL);
   }
   cli_json_end(j);

@@ -5,21 +5,31 @@
 
 #include "cli/cli.h"
 
+/* stage s's defect report (NULL when not assessed) */
+static const rs_defect_report *report(const rs_storage_result *sr, int s)
+{
+  return rs_storage_result_defects(sr, s);
+}
+
 static void stage_line(FILE *out, const rs_storage_result *sr, int s)
 {
   char a[64], b[64], c[64];
-  const int n = sr->n_layers;
-  const double *r = sr->sigma_r + (size_t)s * n, *t = sr->sigma_theta + (size_t)s * n;
-  double peak = sr->core_pressure[s], hoop = INFINITY;
+  const int n = rs_storage_result_n_layers(sr);
+  const double *r = rs_storage_result_sigma_r(sr, NULL) + (size_t)s * n;
+  const double *t = rs_storage_result_sigma_theta(sr, NULL) + (size_t)s * n;
+  const double *cp = rs_storage_result_core_pressure(sr, NULL);
+  const double *hours = rs_storage_result_hours(sr, NULL);
+  double peak = cp[s], hoop = INFINITY;
   for (int j = 0; j < n; ++j) {
     if (-r[j] > peak) peak = -r[j]; /* no libm in the program: plain comparisons */
     if (t[j] < hoop) hoop = t[j];
   }
-  cli_fmt_stress(a, sizeof a, sr->core_pressure[s]);
+  cli_fmt_stress(a, sizeof a, cp[s]);
   cli_fmt_stress(b, sizeof b, peak);
   cli_fmt_stress(c, sizeof c, hoop);
-  fprintf(out, "  %5d %8.1f %7.1f %6.1f  %14s %14s %14s\n", s, sr->hours[s], sr->temperature[s],
-          sr->humidity[s], a, b, c);
+  fprintf(out, "  %5d %8.1f %7.1f %6.1f  %14s %14s %14s\n", s, hours[s],
+          rs_storage_result_temperature(sr, NULL)[s], rs_storage_result_humidity(sr, NULL)[s], a, b,
+          c);
 }
 
 static void worst_line(FILE *out, const char *rule, const rs_storage_result *sr, int s,
@@ -29,10 +39,12 @@ static void worst_line(FILE *out, const char *rule, const rs_storage_result *sr,
     fprintf(out, "  %-18s not assessed\n", rule);
     return;
   }
-  fprintf(out, "  %-18s worst at stage %d (%.1f h): %s\n", rule, s, sr->hours[s], what);
+  const double hours = rs_storage_result_hours(sr, NULL)[s];
+  fprintf(out, "  %-18s worst at stage %d (%.1f h): %s\n", rule, s, hours, what);
   if (v == RS_DEFECT_RISK)
     fprintf(out, "  WARNING: %s at risk after storage stage %d (%.1f h, %.1f C, %.1f %% RH)\n",
-            rule, s, sr->hours[s], sr->temperature[s], sr->humidity[s]);
+            rule, s, hours, rs_storage_result_temperature(sr, NULL)[s],
+            rs_storage_result_humidity(sr, NULL)[s]);
 }
 
 void cli_print_storage(FILE *out, const rs_storage_result *sr)
@@ -40,52 +52,55 @@ void cli_print_storage(FILE *out, const rs_storage_result *sr)
   char a[96], x[64];
   rs_storage_worst w;
   if (!sr) return;
+  const int S = rs_storage_result_stages(sr), N = rs_storage_result_n_layers(sr);
+  const int substeps = rs_storage_result_max_substeps(sr);
+  const double *sigma_r = rs_storage_result_sigma_r(sr, NULL);
   fprintf(out, "storage:\n");
   fprintf(out, "  %d stage%s after winding, %.1f h; %ld elastic solves, at most %d sub-step%s a "
                "change, %.3f s\n",
-          sr->n_stages - 1, sr->n_stages == 2 ? "" : "s", sr->hours[sr->n_stages - 1],
-          sr->elastic_solves, sr->max_substeps, sr->max_substeps == 1 ? "" : "s", sr->wall_seconds);
+          S - 1, S == 2 ? "" : "s", rs_storage_result_hours(sr, NULL)[S - 1],
+          rs_storage_result_elastic_solves(sr), substeps, substeps == 1 ? "" : "s",
+          rs_storage_result_wall_seconds(sr));
   fprintf(out, "  %5s %8s %7s %6s  %14s %14s %14s\n", "stage", "hours", "T (C)", "RH (%)",
           "core pressure", "peak pressure", "min hoop");
-  for (int s = 0; s < sr->n_stages; ++s) stage_line(out, sr, s);
+  for (int s = 0; s < S; ++s) stage_line(out, sr, s);
   /* an interface in radial tension: real layers would part there (docs/storage.md, Limits) */
-  for (int s = 1; s < sr->n_stages; ++s) {
+  for (int s = 1; s < S; ++s) {
     int apart = 0;
-    for (int j = 0; j < sr->n_layers - 1; ++j) apart += sr->sigma_r[(size_t)s * sr->n_layers + j] > 0.0;
+    for (int j = 0; j < N - 1; ++j) apart += sigma_r[(size_t)s * N + j] > 0.0;
     if (apart > 0)
       fprintf(out, "  note: stage %d leaves %d interface%s in radial tension (sigma_r > 0): the "
                    "layers would part there\n", s, apart, apart == 1 ? "" : "s");
   }
   rs_storage_worst_stages(sr, &w);
-  const rs_defect_report *const *d = (const rs_defect_report *const *)sr->defects;
   if (w.hoop >= 0) {
-    cli_fmt_stress(x, sizeof x, d[w.hoop]->hoop.min);
+    cli_fmt_stress(x, sizeof x, report(sr, w.hoop)->hoop.min);
     snprintf(a, sizeof a, "least %s", x);
   }
   worst_line(out, "hoop stress", sr, w.hoop, RS_DEFECT_OK, a);
-  if (w.starring >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.starring]->starring.margin_min);
+  if (w.starring >= 0) snprintf(a, sizeof a, "margin %.3g", report(sr, w.starring)->starring.margin_min);
   worst_line(out, "starring", sr, w.starring,
-             w.starring >= 0 ? d[w.starring]->starring.verdict : RS_DEFECT_NOT_ASSESSED, a);
+             w.starring >= 0 ? report(sr, w.starring)->starring.verdict : RS_DEFECT_NOT_ASSESSED, a);
   if (w.pressure >= 0) {
-    cli_fmt_stress(x, sizeof x, d[w.pressure]->pressure.max);
-    if (d[w.pressure]->pressure.verdict == RS_DEFECT_NOT_ASSESSED)
+    cli_fmt_stress(x, sizeof x, report(sr, w.pressure)->pressure.max);
+    if (report(sr, w.pressure)->pressure.verdict == RS_DEFECT_NOT_ASSESSED)
       snprintf(a, sizeof a, "%s (no material.pressure_limit)", x);
     else
-      snprintf(a, sizeof a, "%s (%.3g of the limit)", x, d[w.pressure]->pressure.ratio);
+      snprintf(a, sizeof a, "%s (%.3g of the limit)", x, report(sr, w.pressure)->pressure.ratio);
   }
   worst_line(out, "pressure", sr, w.pressure,
-             w.pressure >= 0 ? d[w.pressure]->pressure.verdict : RS_DEFECT_NOT_ASSESSED, a);
-  if (w.slip >= 0) snprintf(a, sizeof a, "margin %.3g", d[w.slip]->slip.margin_min);
+             w.pressure >= 0 ? report(sr, w.pressure)->pressure.verdict : RS_DEFECT_NOT_ASSESSED, a);
+  if (w.slip >= 0) snprintf(a, sizeof a, "margin %.3g", report(sr, w.slip)->slip.margin_min);
   worst_line(out, "interlayer slip", sr, w.slip,
-             w.slip >= 0 ? d[w.slip]->slip.verdict : RS_DEFECT_NOT_ASSESSED, a);
+             w.slip >= 0 ? report(sr, w.slip)->slip.verdict : RS_DEFECT_NOT_ASSESSED, a);
   if (w.core >= 0) {
-    cli_fmt_stress(x, sizeof x, d[w.core]->core.pressure);
-    if (d[w.core]->core.verdict == RS_DEFECT_NOT_ASSESSED)
+    cli_fmt_stress(x, sizeof x, report(sr, w.core)->core.pressure);
+    if (report(sr, w.core)->core.verdict == RS_DEFECT_NOT_ASSESSED)
       snprintf(a, sizeof a, "%s (no core.rating)", x);
     else
-      snprintf(a, sizeof a, "%s (%.3g of the rating)", x, d[w.core]->core.ratio);
+      snprintf(a, sizeof a, "%s (%.3g of the rating)", x, report(sr, w.core)->core.ratio);
   }
-  worst_line(out, "core pressure", sr, w.core, w.core >= 0 ? d[w.core]->core.verdict : RS_DEFECT_NOT_ASSESSED,
+  worst_line(out, "core pressure", sr, w.core, w.core >= 0 ? report(sr, w.core)->core.verdict : RS_DEFECT_NOT_ASSESSED,
              a);
 }
 
@@ -118,12 +133,11 @@ void cli_print_compare_storage(FILE *out, int n, const char (*names)[256],
     if (!sr) continue;
     rs_storage_worst w;
     rs_storage_worst_stages(sr, &w);
-    const rs_defect_report *const *d = (const rs_defect_report *const *)sr->defects;
-    fprintf(out, "%-24s %-13s %-13s %-13s %-13s %s\n", names[i],
-            rs_defect_verdict_name(w.hoop >= 0 ? d[w.hoop]->hoop.verdict : RS_DEFECT_NOT_ASSESSED),
-            rs_defect_verdict_name(w.starring >= 0 ? d[w.starring]->starring.verdict : RS_DEFECT_NOT_ASSESSED),
-            rs_defect_verdict_name(w.pressure >= 0 ? d[w.pressure]->pressure.verdict : RS_DEFECT_NOT_ASSESSED),
-            rs_defect_verdict_name(w.slip >= 0 ? d[w.slip]->slip.verdict : RS_DEFECT_NOT_ASSESSED),
-            rs_defect_verdict_name(w.core >= 0 ? d[w.core]->core.verdict : RS_DEFECT_NOT_ASSESSED));
+      fprintf(out, "%-24s %-13s %-13s %-13s %-13s %s\n", names[i],
+            rs_defect_verdict_name(w.hoop >= 0 ? report(sr, w.hoop)->hoop.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.starring >= 0 ? report(sr, w.starring)->starring.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.pressure >= 0 ? report(sr, w.pressure)->pressure.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.slip >= 0 ? report(sr, w.slip)->slip.verdict : RS_DEFECT_NOT_ASSESSED),
+            rs_defect_verdict_name(w.core >= 0 ? report(sr, w.core)->core.verdict : RS_DEFECT_NOT_ASSESSED));
   }
 }

@@ -14,6 +14,7 @@
 #include "util/shortest.h"
 #include "reelsim/output.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 rs_status rs_output_check_csv_dir(const char *dir)
 {

@@ -11,6 +11,7 @@
 #include "reel/result_internal.h"
 #include "reelsim/output.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 void rs_output_run_name(int i, int n, const char *scene_path, char *buf, size_t size)
 {

@@ -8,6 +8,7 @@
 #include "reelsim/output.h"
 #include "reelsim/storage.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 rs_status rs_h5_write_storage(hid_t loc, const rs_storage_result *sr)
 {

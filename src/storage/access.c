@@ -4,9 +4,13 @@
 #include <stddef.h>
 
 #include "reelsim/storage.h"
+#include "storage/storage_result.h"
 
 int rs_storage_result_stages(const rs_storage_result *sr) { return sr ? sr->n_stages : 0; }
 int rs_storage_result_n_layers(const rs_storage_result *sr) { return sr ? sr->n_layers : 0; }
+long rs_storage_result_elastic_solves(const rs_storage_result *sr) { return sr ? sr->elastic_solves : 0; }
+int rs_storage_result_max_substeps(const rs_storage_result *sr) { return sr ? sr->max_substeps : 0; }
+double rs_storage_result_wall_seconds(const rs_storage_result *sr) { return sr ? sr->wall_seconds : 0.0; }
 
 /* an array of `count` values: the field and its length, or NULL and 0 for NULL or a result
  * without it */

@@ -6,6 +6,7 @@
 #include "storage/creep.h"
 #include "storage/storage_internal.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 struct rs_storage_creep {
   rs_creep *c;

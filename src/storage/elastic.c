@@ -26,6 +26,7 @@
 
 #include "storage/storage_internal.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 /* expm1(z)/z, 1 at z = 0 */
 static double expm1_over(double z) { return fabs(z) < 1e-300 ? 1.0 : expm1(z) / z; }

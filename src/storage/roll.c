@@ -8,6 +8,7 @@
 #include "reelsim/material.h"
 #include "storage/storage_internal.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 rs_status rs_storage_roll_init(rs_storage_roll *roll, const rs_problem *problem,
                                const rs_reel_result *wound)

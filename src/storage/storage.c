@@ -10,6 +10,7 @@
 #include "reelsim/storage.h"
 #include "storage/storage_internal.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 int rs_storage_requested(const rs_problem *problem)
 {

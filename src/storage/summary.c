@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "reelsim/storage.h"
+#include "storage/storage_result.h"
 
 void rs_storage_summarize(const rs_storage_result *sr, rs_storage_summary *sum)
 {

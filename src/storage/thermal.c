@@ -15,6 +15,7 @@
 
 #include "storage/storage_internal.h"
 #include "util/error.h"
+#include "storage/storage_result.h"
 
 enum { MAX_SUBSTEPS = 1 << 12 };
 

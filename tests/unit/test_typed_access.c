@@ -9,6 +9,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"
+#include "storage/storage_result.h"
 
 #ifndef RS_TESTS_DIR
 #error "RS_TESTS_DIR must name tests/"
@@ -124,8 +125,13 @@ static void storage_arrays_are_the_fields(void)
     CHECK(rs_storage_result_core_pressure(sr, NULL)[0] == rs_reel_result_core_pressure(res));
     CHECK(rs_storage_result_defects(sr, S - 1) == sr->defects[S - 1]);
     CHECK(rs_storage_result_defects(sr, S) == NULL);
+    CHECK(rs_storage_result_elastic_solves(sr) == sr->elastic_solves && sr->elastic_solves > 0);
+    CHECK(rs_storage_result_max_substeps(sr) == sr->max_substeps && sr->max_substeps >= 1);
+    CHECK(rs_storage_result_wall_seconds(sr) == sr->wall_seconds && sr->wall_seconds >= 0.0);
   }
   CHECK(rs_storage_result_stages(NULL) == 0 && rs_storage_result_n_layers(NULL) == 0);
+  CHECK(rs_storage_result_elastic_solves(NULL) == 0 && rs_storage_result_max_substeps(NULL) == 0 &&
+        rs_storage_result_wall_seconds(NULL) == 0.0);
   rs_storage_result_destroy(&sr);
   rs_reel_result_destroy(&res);
   rs_scene_destroy(&sc);

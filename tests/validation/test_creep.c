@@ -11,6 +11,7 @@
 #include "reelsim/status.h"
 #include "reelsim/storage.h"
 #include "storage/creep.h"
+#include "storage/storage_result.h"
 
 /* the wound roll's stresses, copied out of the winding engine */
 typedef struct wound {

@@ -18,6 +18,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/scene.h"
 #include "reelsim/storage.h"
+#include "storage/storage_result.h"
 
 enum { N_SOFT = 400 };
 static const double T_SOFT = 1500.0, T_CAL = 70e-6;

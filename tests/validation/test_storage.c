@@ -14,6 +14,7 @@
 #include "reelsim/reel.h"
 #include "reelsim/storage.h"
 #include "storage/storage_internal.h"
+#include "storage/storage_result.h"
 
 /* ---- a hand-made problem and wound roll ------------------------------------------------ */
 typedef struct fake_roll {
