@@ -30,11 +30,6 @@ rs_status rs_storage_run(const rs_problem *problem, const rs_reel_result *wound,
                          rs_storage_result **out);
 void rs_storage_result_destroy(rs_storage_result **res);
 
-/* Stage s of a storage result as a reel result (radius from `wound`, the stage's stresses
- * and core pressure): a view into both, valid while they live; nothing to free. The
- * winding-only fields (tensions, history, nip) are those of `wound`. */
-void rs_storage_stage_view(const rs_storage_result *res, const rs_reel_result *wound, int s,
-                           rs_reel_result *view);
 
 /* The stage (0 .. S-1) where each defect rule reads worst, -1 when it was assessed at no
  * stage: hoop compression and starring by the least hoop stress / margin, pressure by the

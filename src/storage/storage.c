@@ -55,8 +55,11 @@ static rs_storage_result *result_new(int S, int N)
   return r;
 }
 
-void rs_storage_stage_view(const rs_storage_result *res, const rs_reel_result *wound, int s,
-                           rs_reel_result *view)
+/* Stage s as a reel result (radius from `wound`, the stage's stresses and core pressure):
+ * a view into both, valid while they live; nothing to free. The winding-only fields
+ * (tensions, history, nip) are those of `wound`. */
+static void stage_view(const rs_storage_result *res, const rs_reel_result *wound, int s,
+                       rs_reel_result *view)
 {
   *view = *wound;
   view->n_layers = res->n_layers;
@@ -80,7 +83,7 @@ static rs_status record(rs_storage_result *res, const rs_storage_roll *roll,
   }
   res->n_stages = s + 1;
   rs_reel_result view;
-  rs_storage_stage_view(res, wound, s, &view);
+  stage_view(res, wound, s, &view);
   return rs_defects_assess(&view, lim, &res->defects[s]);
 }
 
