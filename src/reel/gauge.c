@@ -76,6 +76,14 @@ void rs_reel_strain_free(rs_reel_strain **s)
   *s = NULL;
 }
 
+/* u_c = -r_c P_c / E_c (m): the core face's radial displacement under the core pressure
+ * P_c (compression positive; a pressure below zero, or a rigid core, moves it by 0) */
+double rs_reel_core_displacement(const rs_problem *pb, double core_pressure)
+{
+  const double Ec = rs_core_stiffness(&pb->core);
+  return isfinite(Ec) ? -pb->core.radius * (core_pressure > 0.0 ? core_pressure : 0.0) / Ec : 0.0;
+}
+
 rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, const double *sigma_r,
                                   const double *film, int n, double *out)
 {
@@ -89,9 +97,8 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
     if (P > Pmax || isnan(Pmax)) Pmax = P;
   }
   strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
-  const double Ec = rs_core_stiffness(&pb->core);
-  double r = pb->core.radius, P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
-  if (isfinite(Ec)) r -= pb->core.radius * (core_pressure > 0.0 ? core_pressure : 0.0) / Ec;
+  double r = pb->core.radius + rs_reel_core_displacement(pb, core_pressure);
+  double P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
   for (int j = 0; j < n; ++j) {
     const double P_out = j + 1 < n ? -sigma_r[j] : 0.0, e_out = strain_table_eval(tb, P_out);
     r += t * (1.0 - 0.5 * (e_in + e_out));

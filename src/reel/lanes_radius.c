@@ -29,13 +29,6 @@ void rs_lane_radius_free(rs_lane_radius *g)
   *g = (rs_lane_radius){.k_r = -1, .k_p = -1};
 }
 
-/* u_c = -r_c P_c / E_c (compression positive; a rigid core 0), as rs_reel_deformed_radius */
-static double core_shift(const rs_problem *pb, double Pc)
-{
-  const double Ec = rs_core_stiffness(&pb->core);
-  return isfinite(Ec) ? -pb->core.radius * (Pc > 0.0 ? Pc : 0.0) / Ec : 0.0;
-}
-
 /* eps(P) tabulated to twice the largest pressure P it is asked for (a new table when P
  * exceeds its range) */
 static rs_status strain_cover(rs_lane_radius *g, const rs_problem *pb, double P)
@@ -60,7 +53,8 @@ static rs_status radius_full(rs_lane_radius *g, const rs_problem *pb, const rs_r
   double *t = g->prev;
   g->prev = g->prefix;
   g->prefix = t;
-  const double base = pb->core.radius + core_shift(pb, Pc), cal = pb->material.caliper;
+  const double base = pb->core.radius + rs_reel_core_displacement(pb, Pc);
+  const double cal = pb->material.caliper;
   double Pmax = Pc;
   g->prefix[0] = 0.0;
   for (int j = 0; j < k; ++j) {
@@ -113,6 +107,7 @@ rs_status rs_lane_radius_update(rs_lane_radius *g, const rs_problem *pb, const r
     P_in = P_out;
   }
   g->top_layers += k - g->j0;
-  *R = pb->core.radius + core_shift(pb, Pc) + k * cal - g->deep - 0.5 * cal * top + films;
+  *R = pb->core.radius + rs_reel_core_displacement(pb, Pc) + k * cal - g->deep -
+       0.5 * cal * top + films;
   return RS_OK;
 }

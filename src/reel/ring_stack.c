@@ -16,22 +16,8 @@
 
 #include "reelsim/defects.h"
 
-/* Diagonal a_j and off-diagonal b_j (between j and j+1) of the form at (m, lambda). */
-static void assemble(const rs_ring_stack *s, double m, double lambda, double *a, double *b)
-{
-  const double x = m * m - 1.0;
-  for (int j = 0; j < s->n; ++j) {
-    const double r2 = s->rho[j] * s->rho[j];
-    a[j] = s->rho[j] * (s->D[j] * x * x / (r2 * r2) - lambda * s->N[j] * x / r2) +
-           s->r_spring[j] * s->k[j];
-    if (j + 1 < s->n) {
-      a[j] += s->r_spring[j + 1] * s->k[j + 1];
-      b[j] = -s->r_spring[j + 1] * s->k[j + 1];
-    }
-  }
-}
-
-/* a_j of assemble, alone (the same operations in the same order: the same bits) */
+/* The form at x = m^2 - 1 and load factor lambda: its diagonal a_j and its off-diagonal
+ * b_j (between rings j and j + 1), the one formula assemble and definite share. */
 static inline double diagonal(const rs_ring_stack *s, int j, double x, double lambda)
 {
   const double r2 = s->rho[j] * s->rho[j];
@@ -39,6 +25,21 @@ static inline double diagonal(const rs_ring_stack *s, int j, double x, double la
              s->r_spring[j] * s->k[j];
   if (j + 1 < s->n) a += s->r_spring[j + 1] * s->k[j + 1];
   return a;
+}
+
+static inline double off_diagonal(const rs_ring_stack *s, int j)
+{
+  return -s->r_spring[j + 1] * s->k[j + 1];
+}
+
+/* Diagonal a_j and off-diagonal b_j (between j and j+1) of the form at (m, lambda). */
+static void assemble(const rs_ring_stack *s, double m, double lambda, double *a, double *b)
+{
+  const double x = m * m - 1.0;
+  for (int j = 0; j < s->n; ++j) {
+    a[j] = diagonal(s, j, x, lambda);
+    if (j + 1 < s->n) b[j] = off_diagonal(s, j);
+  }
 }
 
 /* 1 when the form at (m, lambda) is positive definite (every LDL^T pivot > 0). The form is
@@ -50,7 +51,7 @@ static int definite(const rs_ring_stack *s, double m, double lambda)
   double d = diagonal(s, 0, x, lambda);
   if (!(d > 0.0)) return 0;
   for (int j = 1; j < s->n; ++j) {
-    const double b = -s->r_spring[j] * s->k[j]; /* b_(j-1) of assemble */
+    const double b = off_diagonal(s, j - 1);
     d = diagonal(s, j, x, lambda) - b * b / d;
     if (!(d > 0.0)) return 0;
   }
