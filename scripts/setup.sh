@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-PKGS="build-essential cmake pkg-config libsundials-dev libhdf5-dev liblapacke-dev libyaml-dev hdf5-tools gnuplot-nox valgrind libopenblas0-serial clang libclang-rt-14-dev python3-numpy python3-h5py python3-pytest python3-matplotlib libopenmpi-dev openmpi-bin libnlopt-dev libudunits2-dev"
+PKGS="build-essential cmake pkg-config libsundials-dev libhdf5-dev liblapacke-dev libyaml-dev hdf5-tools gnuplot-nox valgrind libopenblas0-serial libopenblas-serial-dev clang libclang-rt-14-dev python3-numpy python3-h5py python3-pytest python3-matplotlib libopenmpi-dev openmpi-bin libnlopt-dev libudunits2-dev"
 missing=""
 for p in $PKGS; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
