@@ -4,6 +4,7 @@
 #   lib/pkgconfig/reelsim.pc                 pkg-config --cflags --libs reelsim
 #   include/reelsim/*.h                      the public headers (reelsim/reelsim.h: all of them)
 #   bin/reelsim                              the command-line program
+#   lib/reelsim/reelsim-mpi.so               its MPI module (a build with MPI)
 #   share/reelsim/models/*.yaml              the shipped material models
 include(CMakePackageConfigHelpers)
 
@@ -14,6 +15,9 @@ install(TARGETS reelsim EXPORT reelsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS reelsim_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(RS_HAVE_MPI) # the program's MPI module (src/sweep/mpi_module.h), where it looks for it
+  install(TARGETS reelsim_mpi LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/reelsim)
+endif()
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/reelsim.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME reelsim)
 install(DIRECTORY include/reelsim DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}

@@ -16,6 +16,7 @@
 #include <mpi.h>
 
 #include "reelsim/clock.h"
+#include "sweep/mpi_module.h"
 #include "sweep/mpi_wait.h"
 
 static int started, rank, size = 1;
@@ -29,21 +30,12 @@ static MPI_Request *sends;
 static int n_sends;
 static double last_probe;
 
-/* Launched by mpirun (Open MPI, or a PMI/PMIx launcher such as srun)? A program run on its
- * own does not start MPI at all: no singleton start-up, no MPI in plain runs. */
-static int launched(void)
-{
-  static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE",
-                                     "PMI_RANK"};
-  for (size_t i = 0; i < sizeof vars / sizeof vars[0]; ++i)
-    if (getenv(vars[i])) return 1;
-  return 0;
-}
-
+/* A program run on its own (not launched by mpirun: sweep_mpi_launched) does not start MPI
+ * at all: no singleton start-up, no MPI in plain runs. */
 void sweep_mpi_begin(void)
 {
   int already = 0;
-  if (!launched() || MPI_Initialized(&already) != MPI_SUCCESS || already) return;
+  if (!sweep_mpi_launched() || MPI_Initialized(&already) != MPI_SUCCESS || already) return;
   if (MPI_Init(NULL, NULL) != MPI_SUCCESS) return;
   started = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

@@ -33,7 +33,7 @@ if(RS_HAVE_MPI AND RS_MPIEXEC)
   # issue 36: a rank's failure, a different scene on a rank, a signal to any rank, a huge
   # plan, under mpirun -n 3 with each rank in its own folder (sweep.sh says what each asserts)
   foreach(c rank_fails scene_differs signal_worker signal_root signal_checking run_failed
-            grid_1e12)
+            grid_1e12 module)
     add_test(NAME cli.sweep.mpi_${c}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/sweep/sweep.sh mpi_${c}
                      $<TARGET_FILE:reelsim_cli> ${SWEEP_SCENE} ${RS_MPIEXEC})

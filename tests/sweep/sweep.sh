@@ -33,6 +33,8 @@
 #                 before winding", every rank gone within 10 s
 #   mpi_run_failed    runs that fail on a worker rank: their messages printed by rank 0, exit 0
 #   mpi_grid_1e12     a 10^12-run grid refused (exit 2) before any scene is loaded, said once
+#   mpi_module    a copy of the program without its MPI module (reelsim-mpi.so beside it)
+#                 under mpirun -n 1: says the module does not load, winds as one process
 set -u
 case_=$1 bin=$2 scene=$3 mpirun=${4:-}
 . "$(dirname "$0")/../cli/lib.sh" # fail, run, has
@@ -161,6 +163,16 @@ mpi_same)
   cmp <(h5dump -g /sweep/profiles one.h5 | sed 1d) <(h5dump -g /sweep/profiles three.h5 | sed 1d) ||
     fail "the profiles differ"
   echo "3 ranks: the same figures and profiles as 1 process" ;;
+mpi_module)
+  [ -n "$mpirun" ] || fail "no mpirun given"
+  export TMPDIR=$tmp
+  mkdir bin && cp "$bin" bin/reelsim
+  run "$mpirun" --allow-run-as-root --oversubscribe -n 1 bin/reelsim sweep "$scene" \
+      --vary winding.tension=100:400:2 -o one.h5
+  [ "$got" -eq 0 ] || fail "exit $got, expected 0"
+  has "^reelsim: sweep: started by mpirun, but its MPI module does not load \(.*/reelsim-mpi\.so.*\): running as one process$"
+  has "^sweep: 2 runs on [0-9]+ threads? in "
+  [ -s one.h5 ] || fail "no file" ;;
 plot)
   figs="core_pressure peak_pressure min_sigma_theta final_radius layers starring_layers wall_seconds"
   # slip_margin is NaN in every run (no material.friction_layer): not drawn
