@@ -1,39 +1,63 @@
-# The applications' dependencies (included from the top CMakeLists.txt; docs/performance.md,
-# "Start-up"). The reelsim program links the library's objects (reelsim_app) with HDF5 and
-# LAPACKE/OpenBLAS as static archives where Debian ships them: the shared libhdf5_serial brings 25 more libraries (its ROS3 driver's curl, OpenSSL,
-# GnuTLS, Kerberos, LDAP; no object of that driver is linked from the archive) and the
-# shared LAPACKE/OpenBLAS huge symbol tables to relocate: 15 ms and 6 ms of a start-up that
-# was 37 ms. libreelsim.so (the Python package's, a C user's) links the shared ones as before.
+# The program's dependencies (included from the top CMakeLists.txt; docs/performance.md,
+# "What remains outside the engine", docs/development.md). The reelsim program links the
+# library's objects (reelsim_app) with HDF5 and LAPACKE/OpenBLAS as static archives where
+# Debian ships them: the shared libhdf5_serial brings 25 more libraries (its ROS3 driver's
+# curl, OpenSSL, GnuTLS, Kerberos, LDAP; the archive's objects that reelsim uses reference
+# none of that driver) and the shared LAPACKE/OpenBLAS huge symbol tables to relocate:
+# about 15 ms and 6 ms of a start-up that was 33-44 ms of CPU. libreelsim.so (the Python
+# package's, a C program's), the tests and the benchmarks link the shared ones as before.
 #   REELSIM_STATIC_DEPS  AUTO: each archive when found and a test program links with it
 #                        (not in the fuzzing build: its LeakSanitizer suppressions name
 #                        libhdf5.so); ON: the HDF5 archive is required; OFF: the shared
 #                        libraries, the program linking libreelsim.
-# Sets RS_APP_HDF5 and RS_APP_LAPACKE (what the applications link for each) and
-# RS_STATIC_APPS (ON when either is an archive: the program then links reelsim_app).
+# Sets RS_APP_HDF5, RS_APP_LAPACKE, RS_APP_YAML, RS_APP_UDUNITS (what the program links for
+# each) and RS_STATIC_APPS (ON when HDF5 or LAPACKE is an archive: the program then links
+# reelsim_app; libyaml and UDUNITS-2 are archives only then).
 set(REELSIM_STATIC_DEPS AUTO CACHE STRING
     "Link the reelsim program with static HDF5 and LAPACKE/OpenBLAS: AUTO (when found), ON, OFF")
 set_property(CACHE REELSIM_STATIC_DEPS PROPERTY STRINGS AUTO ON OFF)
 
 set(RS_APP_HDF5 hdf5::hdf5)
 set(RS_APP_LAPACKE PkgConfig::RS_LAPACKE)
+set(RS_APP_YAML PkgConfig::RS_YAML_0_1)
+set(RS_APP_UDUNITS PkgConfig::RS_UDUNITS)
 set(RS_STATIC_APPS OFF)
 
 if(REELSIM_STATIC_DEPS STREQUAL "ON" OR (REELSIM_STATIC_DEPS STREQUAL "AUTO" AND NOT REELSIM_FUZZ))
   include(CheckCSourceCompiles)
   include(CMakePushCheckState)
 
+  # rs_archives(VAR name...): the archives lib<name>.a of every name, or empty if one is
+  # missing (then the shared libraries serve)
+  function(rs_archives var)
+    set(found "")
+    foreach(n IN LISTS ARGN)
+      find_library(RS_ARCHIVE_${n} NAMES lib${n}.a)
+      if(NOT RS_ARCHIVE_${n})
+        set(${var} "" PARENT_SCOPE)
+        return()
+      endif()
+      list(APPEND found ${RS_ARCHIVE_${n}})
+    endforeach()
+    set(${var} ${found} PARENT_SCOPE)
+  endfunction()
+
   # HDF5: the archive beside the shared library CMake found (Debian: hdf5/serial/libhdf5.a),
-  # with the compression libraries its filters call.
+  # with the compression libraries its filters call (their archives too: libaec-dev,
+  # zlib1g-dev; 0.2 ms each as shared libraries).
   get_filename_component(rs_hdf5_dir "${HDF5_C_LIBRARY_hdf5}" DIRECTORY)
   find_library(RS_HDF5_ARCHIVE NAMES libhdf5.a PATHS "${rs_hdf5_dir}" NO_DEFAULT_PATH)
-  set(rs_hdf5_libs ${RS_HDF5_ARCHIVE})
-  foreach(l sz z)
-    find_library(RS_HDF5_DEP_${l} NAMES ${l})
-    if(RS_HDF5_DEP_${l})
-      list(APPEND rs_hdf5_libs ${RS_HDF5_DEP_${l}})
-    endif()
-  endforeach()
-  list(APPEND rs_hdf5_libs Threads::Threads m ${CMAKE_DL_LIBS})
+  rs_archives(rs_hdf5_deps sz aec z)
+  set(RS_HDF5_DEPS_STATIC ${rs_hdf5_deps}) # for tests/cli/startup.cmake
+  if(NOT rs_hdf5_deps)
+    foreach(l sz z)
+      find_library(RS_HDF5_DEP_${l} NAMES ${l})
+      if(RS_HDF5_DEP_${l})
+        list(APPEND rs_hdf5_deps ${RS_HDF5_DEP_${l}})
+      endif()
+    endforeach()
+  endif()
+  set(rs_hdf5_libs ${RS_HDF5_ARCHIVE} ${rs_hdf5_deps} Threads::Threads m ${CMAKE_DL_LIBS})
   if(RS_HDF5_ARCHIVE)
     cmake_push_check_state(RESET)
     set(CMAKE_REQUIRED_INCLUDES ${HDF5_C_INCLUDE_DIRS} ${HDF5_INCLUDE_DIRS})
@@ -98,5 +122,36 @@ if(REELSIM_STATIC_DEPS STREQUAL "ON" OR (REELSIM_STATIC_DEPS STREQUAL "AUTO" AND
       set(RS_STATIC_APPS ON)
     endif()
   endif()
+
+  # libyaml and UDUNITS-2 (with expat): small, but each shared library costs its loading
+  rs_archives(rs_small yaml udunits2 expat)
+  if(rs_small)
+    cmake_push_check_state(RESET)
+    set(CMAKE_REQUIRED_INCLUDES ${RS_YAML_0_1_INCLUDE_DIRS} ${RS_UDUNITS_INCLUDE_DIRS})
+    set(CMAKE_REQUIRED_LIBRARIES ${rs_small} m)
+    set(CMAKE_REQUIRED_QUIET ON)
+    check_c_source_compiles([[
+      #include <udunits2.h>
+      #include <yaml.h>
+      int main(void) {
+        yaml_parser_t p;
+        ut_system *u = ut_read_xml(0);
+        ut_free_system(u);
+        return yaml_parser_initialize(&p) ? 0 : 1;
+      }]] RS_SMALL_ARCHIVES_LINK)
+    cmake_pop_check_state()
+    if(RS_SMALL_ARCHIVES_LINK)
+      list(GET rs_small 0 rs_yaml_a)
+      list(SUBLIST rs_small 1 2 rs_udunits_a)
+      add_library(rs_yaml_static INTERFACE)
+      target_include_directories(rs_yaml_static INTERFACE ${RS_YAML_0_1_INCLUDE_DIRS})
+      target_link_libraries(rs_yaml_static INTERFACE ${rs_yaml_a})
+      add_library(rs_udunits_static INTERFACE)
+      target_include_directories(rs_udunits_static INTERFACE ${RS_UDUNITS_INCLUDE_DIRS})
+      target_link_libraries(rs_udunits_static INTERFACE ${rs_udunits_a} m)
+      set(RS_APP_YAML rs_yaml_static)
+      set(RS_APP_UDUNITS rs_udunits_static)
+    endif()
+  endif()
 endif()
-message(STATUS "reelsim program with static HDF5: ${RS_APP_HDF5}; LAPACKE/OpenBLAS: ${RS_APP_LAPACKE}")
+message(STATUS "reelsim program with static HDF5: ${RS_APP_HDF5}; LAPACKE/OpenBLAS: ${RS_APP_LAPACKE}; libyaml, UDUNITS-2: ${RS_APP_YAML} ${RS_APP_UDUNITS}")

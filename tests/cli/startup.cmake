@@ -1,5 +1,7 @@
-# The program's start-up (docs/performance.md, "Start-up"): what it does not load at start.
-#   cli.startup_libraries  no libreelsim, HDF5, LAPACKE/OpenBLAS (linked statically: CMake
+# The program's start-up (docs/performance.md, "What remains outside the engine"): what
+# it does not load at start.
+#   cli.startup_libraries  no libreelsim, HDF5 (and its compression libraries),
+#                          LAPACKE/OpenBLAS, libyaml, UDUNITS-2 (linked statically: CMake
 #                          REELSIM_STATIC_DEPS) nor Open MPI (its module, opened under mpirun)
 set(RS_NOT_AT_START "")
 if(RS_STATIC_APPS)
@@ -7,6 +9,12 @@ if(RS_STATIC_APPS)
 endif()
 if(NOT RS_APP_HDF5 STREQUAL "hdf5::hdf5")
   list(APPEND RS_NOT_AT_START "libhdf5")
+  if(RS_HDF5_DEPS_STATIC)
+    list(APPEND RS_NOT_AT_START "libsz" "libaec" "libz\\.")
+  endif()
+endif()
+if(RS_STATIC_APPS AND NOT RS_APP_YAML STREQUAL "PkgConfig::RS_YAML_0_1")
+  list(APPEND RS_NOT_AT_START "libyaml" "libudunits2" "libexpat")
 endif()
 if(NOT RS_APP_LAPACKE STREQUAL "PkgConfig::RS_LAPACKE")
   list(APPEND RS_NOT_AT_START "liblapack" "libopenblas" "libblas" "libgfortran")
