@@ -1,15 +1,17 @@
 /* The folders of shipped material models (model_dirs.h).
  *
  * An installed libreelsim or reelsim program finds <prefix>/share/reelsim/models from
- * where its own code sits (dladdr): <prefix>/lib/libreelsim.so or <prefix>/bin/reelsim,
+ * where its own code sits (dladdr1): <prefix>/lib/libreelsim.so or <prefix>/bin/reelsim,
  * plus the configured relative path from that folder to the models. A program run from
  * the build tree uses the source tree's models/ instead, so an edit there is seen at once
  * and an older install never shadows it. */
-#define _GNU_SOURCE /* dladdr */
+#define _GNU_SOURCE /* dladdr1 */
 #include "scene/model_dirs.h"
 
 #include <dlfcn.h>
 #include <limits.h>
+#include <link.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,13 +39,25 @@ static int add(char dirs[][RS_PATH_MAX], int n, int max, const char *dir)
   return n + 1;
 }
 
-/* The folder of the shared library or program holding this code, resolved; 0 if unknown. */
+/* The folder of the shared library or program holding this code, resolved; 0 if unknown.
+ * In a program (the reelsim program links the library's objects) glibc names it by its
+ * argv[0], bare when it was found through PATH: the kernel's /proc/self/exe then. */
 static int module_dir(char *out, size_t size)
 {
   Dl_info info;
-  char real[PATH_MAX];
-  if (!dladdr(&module_anchor, &info) || !info.dli_fname || !realpath(info.dli_fname, real))
+  struct link_map *map = NULL;
+  char real[PATH_MAX], exe[PATH_MAX];
+  if (!dladdr1(&module_anchor, &info, (void **)&map, RTLD_DL_LINKMAP) || !info.dli_fname)
     return 0;
+  const char *name = info.dli_fname;
+  if (map && map->l_name && map->l_name[0] == '\0') { /* the main program */
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+      exe[n] = '\0';
+      name = exe;
+    }
+  }
+  if (!realpath(name, real)) return 0;
   char *slash = strrchr(real, '/');
   if (!slash) return 0;
   *slash = '\0';

@@ -3,7 +3,7 @@
 # material model, finds it under <prefix>/<datadir>/reelsim/models (the prefix is not the
 # one the build was configured for: the lookup follows the installed files); without the
 # installed models it is a clear input error naming where it looked; $REELSIM_MODELS
-# comes before the installed models.
+# comes before the installed models. The same when the program is found through PATH.
 set -u
 . "$RS_SOURCE/tests/install/lib.sh"
 install_prefix
@@ -16,6 +16,12 @@ cd "$tmp/work" || fail "cd"
 run "$bin" check scene.yaml
 [ "$got" -eq 0 ] || fail "check failed"
 has "^  source: $models/newsprint\.yaml$"
+# found through PATH (its argv[0] is then the bare name), from a folder named like it
+mkdir reelsim
+run env PATH="$prefix/$RS_BINDIR:$PATH" reelsim check scene.yaml
+[ "$got" -eq 0 ] || fail "check through PATH failed"
+has "^  source: $models/newsprint\.yaml$"
+rmdir reelsim
 run "$bin" run scene.yaml -o out.h5
 [ "$got" -eq 0 ] || fail "run failed"
 has "core pressure +[0-9.]+ [kM]?Pa"
