@@ -54,6 +54,10 @@ double rs_radial_strain(const rs_radial_law *law, double P);
 /* eps(b) - eps(a) for 0 <= a <= b: Gauss-Legendre (8 points) on [a, b], split at a table's
  * points; accurate where 1/E_r varies little over [a, b] (a tabulation's step). */
 double rs_radial_strain_step(const rs_radial_law *law, double a, double b);
+/* d[i] = rs_radial_strain_step(law, P[i], P[i + 1]) for i = 0..n-1, the same numbers, the
+ * moduli of all the steps' Gauss points formed in one rs_radial_modulus_n (a tabulation of
+ * eps at n + 1 pressures) */
+void rs_radial_strain_steps(const rs_radial_law *law, const double *P, int n, double *d);
 
 /* A Prony series of the web's relaxation (storage creep, docs/storage.md): term i relaxes
  * the fraction w_i of a modulus with relaxation time tau_i,

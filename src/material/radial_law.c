@@ -204,16 +204,19 @@ double rs_radial_modulus(const rs_radial_law *law, double P)
  * on panels graded geometrically towards 0 (P 2^-k, k = 0..30: the laws' 1/E_r varies
  * most at low pressure), each split at the table's points (the monotone cubic is C^1
  * only there); below P 2^-30 the zero-pressure modulus. Linear: P/E_r exactly. */
+/* the 8-point Gauss-Legendre rule on [-1, 1]: the abscissae +-x[i] and their weights w[i] */
+static const double gl8_x[4] = {0.18343464249564980, 0.52553240991632899, 0.79666647741362674,
+                                0.96028985649753623};
+static const double gl8_w[4] = {0.36268378337836198, 0.31370664587788729, 0.22238103445337447,
+                                0.10122853629037626};
+
 static double strain_panel(const rs_radial_law *law, double a, double b)
 {
-  static const double x[4] = {0.18343464249564980, 0.52553240991632899, 0.79666647741362674,
-                              0.96028985649753623};
-  static const double w[4] = {0.36268378337836198, 0.31370664587788729, 0.22238103445337447,
-                              0.10122853629037626};
   const double c = 0.5 * (a + b), h = 0.5 * (b - a);
   double s = 0.0;
   for (int i = 0; i < 4; ++i)
-    s += w[i] * (1.0 / rs_radial_modulus(law, c - h * x[i]) + 1.0 / rs_radial_modulus(law, c + h * x[i]));
+    s += gl8_w[i] * (1.0 / rs_radial_modulus(law, c - h * gl8_x[i]) +
+                     1.0 / rs_radial_modulus(law, c + h * gl8_x[i]));
   return s * h;
 }
 
@@ -228,6 +231,37 @@ double rs_radial_strain_step(const rs_radial_law *law, double a, double b)
         x = law->P[i];
       }
   return eps + strain_panel(law, x, b);
+}
+
+/* rs_radial_strain_step a block of steps at a time: their Gauss points' moduli in one call
+ * (rs_radial_modulus_n, which gives what rs_radial_modulus gives point by point), then
+ * each step's sum in strain_panel's order. A table's steps are split at its points: one
+ * by one. */
+void rs_radial_strain_steps(const rs_radial_law *law, const double *P, int n, double *d)
+{
+  enum { STEPS = 64 };
+  if (law->law == RS_RADIAL_TABLE) {
+    for (int i = 0; i < n; ++i) d[i] = rs_radial_strain_step(law, P[i], P[i + 1]);
+    return;
+  }
+  double pts[8 * STEPS], E[8 * STEPS];
+  for (int i0 = 0; i0 < n; i0 += STEPS) {
+    const int m = n - i0 < STEPS ? n - i0 : STEPS;
+    for (int i = 0; i < m; ++i) {
+      const double a = P[i0 + i], b = P[i0 + i + 1], c = 0.5 * (a + b), h = 0.5 * (b - a);
+      for (int k = 0; k < 4; ++k) {
+        pts[8 * i + 2 * k] = c - h * gl8_x[k];
+        pts[8 * i + 2 * k + 1] = c + h * gl8_x[k];
+      }
+    }
+    rs_radial_modulus_n(law, pts, E, 8 * m);
+    for (int i = 0; i < m; ++i) {
+      const double a = P[i0 + i], b = P[i0 + i + 1], h = 0.5 * (b - a);
+      double s = 0.0;
+      for (int k = 0; k < 4; ++k) s += gl8_w[k] * (1.0 / E[8 * i + 2 * k] + 1.0 / E[8 * i + 2 * k + 1]);
+      d[i0 + i] = b > a ? 0.0 + s * h : 0.0;
+    }
+  }
 }
 
 double rs_radial_strain(const rs_radial_law *law, double P)

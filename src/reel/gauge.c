@@ -31,15 +31,19 @@ typedef struct strain_table {
 
 static void strain_table_fill(strain_table *tb, const rs_radial_law *law, double Pmax)
 {
+  double P[STRAIN_TABLE + 1], E[STRAIN_TABLE + 1], d[STRAIN_TABLE];
   tb->Pmax = Pmax;
+  for (int i = 0; i <= STRAIN_TABLE; ++i) {
+    const double s = (double)i / STRAIN_TABLE;
+    P[i] = Pmax * s * s;
+  }
+  rs_radial_strain_steps(law, P, STRAIN_TABLE, d);
+  rs_radial_modulus_n(law, P, E, STRAIN_TABLE + 1);
   tb->eps[0] = 0.0;
-  tb->inv[0] = 1.0 / rs_radial_modulus(law, 0.0);
-  double prev = 0.0;
+  tb->inv[0] = 1.0 / E[0];
   for (int i = 1; i <= STRAIN_TABLE; ++i) {
-    const double s = (double)i / STRAIN_TABLE, P = Pmax * s * s;
-    tb->eps[i] = tb->eps[i - 1] + rs_radial_strain_step(law, prev, P);
-    tb->inv[i] = 1.0 / rs_radial_modulus(law, P);
-    prev = P;
+    tb->eps[i] = tb->eps[i - 1] + d[i - 1];
+    tb->inv[i] = 1.0 / E[i];
   }
 }
 

@@ -137,6 +137,40 @@ static void modulus_of_stresses(void)
   CHECK(E[7] > 0.0 && !(E[8] > 0.0));
 }
 
+/* rs_radial_strain_steps: each step bit for bit rs_radial_strain_step's (the moduli of the
+ * Gauss points formed as one array), for every law, over more steps than one block, with a
+ * step of no length and one backwards (0); summed, Pfeiffer's closed form
+ * eps(P) = ln(1 + P/K1)/K2. */
+static void strain_steps_batched(void)
+{
+  enum { N = 150 };
+  rs_radial_law laws[] = {
+      {.law = RS_RADIAL_LINEAR, .E_r = 3e6},
+      {.law = RS_RADIAL_PFEIFFER, .K1 = 5e3, .K2 = 60},
+      {.law = RS_RADIAL_HAKIEL, .C = {1.0e6, 60.0, 2.0e-6}, .n_coef = 3},
+      {.law = RS_RADIAL_HAKIEL, .C = {1e5, 20.0, -1e-6, 2e-13}, .n_coef = 4},
+      {.law = RS_RADIAL_TABLE, .n_points = 3, .P = {0, 1e4, 1e6}, .E = {2e5, 3e5, 9e6}},
+  };
+  const double Pmax = 4e5;
+  double P[N + 1], d[N];
+  for (int i = 0; i <= N; ++i) P[i] = Pmax * (double)i * i / ((double)N * N);
+  P[41] = P[40];     /* a step of no length */
+  P[71] = P[70] / 2; /* and one backwards, then a longer one up */
+  for (size_t l = 0; l < sizeof laws / sizeof laws[0]; ++l) {
+    CHECK(rs_radial_law_prepare(&laws[l]) == RS_OK);
+    rs_radial_strain_steps(&laws[l], P, N, d);
+    int same = 1;
+    for (int i = 0; i < N; ++i) same &= d[i] == rs_radial_strain_step(&laws[l], P[i], P[i + 1]);
+    CHECK(same);
+    CHECK(d[40] == 0.0 && d[70] == 0.0);
+  }
+  for (int i = 0; i <= N; ++i) P[i] = Pmax * (double)i * i / ((double)N * N);
+  rs_radial_strain_steps(&laws[1], P, N, d);
+  double eps = 0.0;
+  for (int i = 0; i < N; ++i) eps += d[i];
+  CHECK_CLOSE(eps, log(1.0 + Pmax / laws[1].K1) / laws[1].K2, 1e-9);
+}
+
 static const check_case cases[] = {
     {"pfeiffer_is_tangent_of_stack_law", pfeiffer_is_tangent_of_stack_law},
     {"hakiel_polynomial", hakiel_polynomial},
@@ -144,5 +178,6 @@ static const check_case cases[] = {
     {"tube_core_is_lame", tube_core_is_lame},
     {"recipes", recipes},
     {"modulus_of_stresses", modulus_of_stresses},
+    {"strain_steps_batched", strain_steps_batched},
 };
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
