@@ -69,6 +69,8 @@ struct rs_nip_contact {
   double H11[2];             /* half-plane compliance H11 of roll and drum: E* = 2/(H1 + H2) */
   /* linear algebra: the assembled system (column-major, unscaled) and its solver */
   double *A, *rhs, *z;
+  signed char *A_state;      /* the stick/slip rows A was last assembled with (2 (M-1)) */
+  int A_valid;               /* A holds an assembly (its untouched entries are zero) */
   rs_nipc_lin lin;
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
   long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
