@@ -140,6 +140,7 @@ void rs_nip_contact_forget(rs_nip_contact *nc)
   if (!nc) return;
   nc->have_warm = 0;
   nc->hist_n = 0;
+  nc->hist_slope_n = 0;
   nc->k_a = 0; /* also drop the kernels and the factorization: a cold solve recomputes */
   nc->lin.valid = 0;
 }

@@ -61,6 +61,9 @@ struct rs_nip_contact {
   signed char *state;        /* 2 (M-1) */
   int have_warm;             /* state holds a converged set */
   double warm_slope;         /* d ln P / d ln a of the last load search */
+  double hist_slope[2], hist_slope_Rs[2]; /* the last two searches' slopes and their R*
+                                             (the first step's slope, contact_load.c) */
+  int hist_slope_n;
   /* the last converged load searches, newest first: R*, P, E*, a (the half-width
    * predictor, contact_load.c) */
   int hist_n;
