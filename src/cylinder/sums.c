@@ -20,6 +20,7 @@
 #include "cylinder/internal.h"
 
 #include <math.h>
+#include <string.h>
 
 /* zeta(2k), k = 1..30 (for k > 30, 1 + 4^-k + 9^-k is exact in double) */
 static const double zeta_even[30] = {
@@ -197,14 +198,24 @@ int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, d
   double I[K_COUNT] = {0};
   double jumpsum = 0; /* coefficient of ln|0| in the 1/u kernel */
   double gsm[3] = {0, 0, 0};
+  /* the antiderivatives at the upper and lower ends of a piece; a piece's upper end is
+   * the one before's lower end (t - b[k]), taken over */
+  double P0h[K_COUNT], P1h[K_COUNT], P0l[K_COUNT], P1l[K_COUNT], Sh[6], Sl[6];
   for (int k = 0; k < P.np; ++k) {
     double uhi = t - P.b[k], ulo = t - P.b[k + 1];
     if (fabs(uhi) < snap) uhi = 0;
     if (fabs(ulo) < snap) ulo = 0;
     double A = P.v[k] + P.s[k] * (t - P.b[k]);
-    double P0h[K_COUNT], P1h[K_COUNT], P0l[K_COUNT], P1l[K_COUNT];
-    antider(uhi, mask, P0h, P1h);
+    if (k == 0) {
+      antider(uhi, mask, P0h, P1h);
+      smooth_antider(uhi, mask, Sh);
+    } else {
+      memcpy(P0h, P0l, sizeof P0h);
+      memcpy(P1h, P1l, sizeof P1h);
+      memcpy(Sh, Sl, sizeof Sh);
+    }
     antider(ulo, mask, P0l, P1l);
+    smooth_antider(ulo, mask, Sl);
     static const int jc[4] = {K_LOG, K_ABS, K_ONE, K_U2}, js[4] = {K_INV, K_ULOG, K_SGN, K_U};
     for (int f = 0; f < 2; ++f) {
       if (!(mask & (1u << f))) continue;
@@ -218,9 +229,6 @@ int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, d
     if (uhi == 0) jumpsum += A;
     if (ulo == 0) jumpsum -= A;
     /* the smooth remainders against f = A - s u, term by term */
-    double Sh[6], Sl[6];
-    smooth_antider(uhi, mask, Sh);
-    smooth_antider(ulo, mask, Sl);
     if (mask & 1) gsm[0] += A * (Sh[0] - Sl[0]) - P.s[k] * (Sh[1] - Sl[1]);
     if (mask & 2) {
       gsm[1] += A * (Sh[2] - Sl[2]) - P.s[k] * (Sh[3] - Sl[3]);
