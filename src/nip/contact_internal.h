@@ -102,6 +102,10 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
 rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
 
+/* contact_lu.c: x <- A^-1 x with dgetrf's factors of the n x n column-major A (LU, ipiv),
+ * as dgetrs does for one right-hand side, the triangles swept four columns at a time. */
+void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x);
+
 /* contact_assemble.c: assembles A z = rhs for the active set in nc->state. */
 void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);
 
