@@ -626,18 +626,25 @@ static void stiff_sheet_full_slip(void)
  * (newsprint, M = 24, the inputs of the reel test's scene), the old clamp changed the T0
  * increment per 20 um step from 0.002 to 1.1 N/m; now neighbouring increments differ by
  * less than half the largest one. */
-static void thin_roll_no_kink(void)
+/* a newsprint-like stack (Pfeiffer K1 5e3, K2 60, 70 um, E_theta 3.5 GPa) of shear modulus G */
+static rs_material newsprint(double G)
 {
   rs_material m = {0};
   snprintf(m.name, sizeof m.name, "newsprint");
   m.caliper = 70e-6;
   m.E_theta = 3.5e9;
-  m.G_rtheta = 1e9;
+  m.G_rtheta = G;
   m.nu_rtheta = 0.01;
   m.nu_md_cd = 0.3;
   m.radial.law = RS_RADIAL_PFEIFFER;
   m.radial.K1 = 5e3;
   m.radial.K2 = 60;
+  return m;
+}
+
+static void thin_roll_no_kink(void)
+{
+  rs_material m = newsprint(1e9);
   rs_nip_spec sp = {0};
   sp.model = RS_NIP_CONTACT;
   sp.mu_roll = 0.19;
@@ -847,16 +854,7 @@ static void warm_equals_cold(void)
  * with a cold one (a new handle) to the search's tolerance. */
 static void warm_search_along_reel(void)
 {
-  rs_material m = {0};
-  snprintf(m.name, sizeof m.name, "newsprint-like");
-  m.caliper = 70e-6;
-  m.E_theta = 3.5e9;
-  m.G_rtheta = 5e7;
-  m.nu_rtheta = 0.01;
-  m.nu_md_cd = 0.3;
-  m.radial.law = RS_RADIAL_PFEIFFER;
-  m.radial.K1 = 5e3;
-  m.radial.K2 = 60;
+  rs_material m = newsprint(5e7);
   rs_nip_spec sp = {0};
   sp.model = RS_NIP_CONTACT;
   sp.mu_roll = 0.19;
