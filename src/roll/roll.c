@@ -203,9 +203,12 @@ rs_status rs_roll_add_layers(rs_roll *roll, int m, const double *T0)
 #ifdef RS_ROLL_CHECKS
   /* the state's invariants (roll_check.c): the O(1) ones at every increment; those over
    * the nodes (O(n) each) at every increment up to 512 layers, then at powers of two and
-   * every 2048th, so that they cost a bounded share of the winding (O(n^2 / 2048) in all) */
+   * every 2048th, beyond 32,768 layers at every n/16th (rounded to a power of two): sixteen
+   * a doubling, so that they cost O(n) in all, a bounded share of a winding of any length */
   const int n_now = roll->n;
-  const int full = n_now <= 512 || (n_now & (n_now - 1)) == 0 || n_now % 2048 == 0;
+  int every = 2048;
+  while (every < n_now / 16) every *= 2;
+  const int full = n_now <= 512 || (n_now & (n_now - 1)) == 0 || n_now % every == 0;
   const char *why = rsi_roll_check_invariants(roll, full);
   if (why)
     return RS_ERROR(RS_ERR_INTERNAL, "the roll's state broke an invariant at layer %d: %s",
