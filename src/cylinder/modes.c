@@ -260,10 +260,10 @@ static rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
 }
 
 /* Coefficients of the unit loads (P = 1: column 0, Q = 1: column 1):
- * U(R0) = V(R0) = 0, nf * (Tr, Tt)(R) = (-P, Q). */
-static rs_status mode_coefficients(const mode_basis *b, double coef[4][2])
+ * U(R0) = V(R0) = 0, nf * (Tr, Tt)(R) = (-P, Q). at1: the basis at r = R (rho 1). */
+static rs_status mode_coefficients(const mode_basis *b, double coef[4][2], double at1[4][4])
 {
-  double at0[4][4], at1[4][4], A[4][4];
+  double at0[4][4], A[4][4];
   double l0 = log(b->rho0);
   basis_eval(b, b->rho0, l0, 0.0, at0);
   basis_eval(b, 1.0, 0.0, l0, at1);
@@ -287,9 +287,8 @@ rs_status rs_cyl_mode_solve(const rs_cyl_nd *nd, double rho0, long n, double F[2
   double coef[4][2], at1[4][4];
   rs_status st = basis_init(nd, rho0, n, &b);
   if (st) return st;
-  st = mode_coefficients(&b, coef);
+  st = mode_coefficients(&b, coef, at1); /* the surface values come with them */
   if (st) return st;
-  basis_eval(&b, 1.0, 0.0, log(rho0), at1);
   double nf = (n >= 1) ? (double)n : 1.0;
   for (int k = 0; k < 2; ++k) {
     double U = 0, V = 0;
@@ -308,11 +307,11 @@ rs_status rs_cyl_mode_eval(const rs_cyl_nd *nd, double rho0, long n, double P, d
                            double rho, double L, double L0, double *U, double *V)
 {
   mode_basis b;
-  double coef[4][2], at[4][4];
+  double coef[4][2], at[4][4], at1[4][4];
   if (!(rho > 0)) return RS_ERROR(RS_ERR_INPUT, "r must be positive");
   rs_status st = basis_init(nd, rho0, n, &b);
   if (st) return st;
-  st = mode_coefficients(&b, coef);
+  st = mode_coefficients(&b, coef, at1);
   if (st) return st;
   basis_eval(&b, rho, L, L0, at);
   double u = 0, v = 0;

@@ -17,8 +17,20 @@ void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
   const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
   double *A = nc->A, *b = nc->rhs;
   const int cD = 3 * M - 4, cE = 3 * M - 3, cX = 3 * M - 2, cT = 3 * M - 1;
-  memset(A, 0, (size_t)n * n * sizeof *A);
 #define AT(r, c) A[(size_t)(c) * n + (r)]
+  /* Every entry this assembly leaves untouched is zero. The rows' pattern of nonzeros
+   * depends only on their stick/slip kind, so the whole matrix is zeroed once, and after
+   * that only the rows whose kind changed since the last assembly (nc->A_state) are
+   * cleared; the others are overwritten entry for entry. */
+  if (!nc->A_valid) {
+    memset(A, 0, (size_t)n * n * sizeof *A);
+    nc->A_valid = 1;
+  } else {
+    for (int k = 0; k < 2 * E; ++k)
+      if ((nc->state[k] == 0) != (nc->A_state[k] == 0))
+        for (int c = 0; c < n; ++c) AT(M + k, c) = 0.0;
+  }
+  memcpy(nc->A_state, nc->state, (size_t)2 * E);
   /* indentation (12) at node i, with v_k = -w_k, the corrected eq. (11) and
    * N(x_i) = Ti + dx sum_{e < i} (q1 + q2):
    *   w1 + w2 + 2h c22 p - c12 N - delta0 - eps0 x / R* = -x^2 / (2 R*) */
@@ -61,7 +73,8 @@ void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
         for (int kk = 0; kk < 2; ++kk)
           for (int ee = 0; ee <= e; ++ee)
             AT(r, COL_Q(kk, ee)) = f * dx * (ee == e ? 0.125 : ee == e - 1 ? 0.875 : 1.0);
-        for (int ee = 0; ee < E; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
+        for (int ee = 0; ee <= e; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
+        for (int ee = e + 1; ee < E; ++ee) AT(r, COL_Q(k, ee)) = 0.0 - nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
         if (k == 1) AT(r, cX) = 1.0;
         if (k == 0) {
           AT(r, cT) = -f;

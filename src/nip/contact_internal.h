@@ -61,6 +61,9 @@ struct rs_nip_contact {
   signed char *state;        /* 2 (M-1) */
   int have_warm;             /* state holds a converged set */
   double warm_slope;         /* d ln P / d ln a of the last load search */
+  double hist_slope[2], hist_slope_Rs[2]; /* the last two searches' slopes and their R*
+                                             (the first step's slope, contact_load.c) */
+  int hist_slope_n;
   /* the last converged load searches, newest first: R*, P, E*, a (the half-width
    * predictor, contact_load.c) */
   int hist_n;
@@ -69,6 +72,8 @@ struct rs_nip_contact {
   double H11[2];             /* half-plane compliance H11 of roll and drum: E* = 2/(H1 + H2) */
   /* linear algebra: the assembled system (column-major, unscaled) and its solver */
   double *A, *rhs, *z;
+  signed char *A_state;      /* the stick/slip rows A was last assembled with (2 (M-1)) */
+  int A_valid;               /* A holds an assembly (its untouched entries are zero) */
   rs_nipc_lin lin;
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
   long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
@@ -96,6 +101,10 @@ void rs_nipc_lin_free(rs_nip_contact *nc);
 rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
 rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
+
+/* contact_lu.c: x <- A^-1 x with dgetrf's factors of the n x n column-major A (LU, ipiv),
+ * as dgetrs does for one right-hand side, the triangles swept four columns at a time. */
+void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x);
 
 /* contact_assemble.c: assembles A z = rhs for the active set in nc->state. */
 void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);

@@ -58,8 +58,10 @@ rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *dat
 rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data, size_t rows,
                                  size_t cols, const char *units, const char *description);
 
-/* The chunk shape rs_h5_write_2d_chunked picks: whole rows up to 4096 columns and
- * about 256 KiB per chunk, so reading one stage or one layer touches few chunks. */
+/* The chunk shape rs_h5_write_2d_chunked picks: rows cut into equal pieces of at most
+ * 4096 columns, as many rows as make about 256 KiB, the rows cut into equal chunks too (so
+ * the last chunks, stored and deflated whole, are not mostly fill), so reading one stage
+ * or one layer touches few chunks. */
 void rs_h5_chunk_shape(size_t rows, size_t cols, hsize_t chunk[2]);
 
 /* A 1-D dataset of fixed-length UTF-8 strings as wide as the longest (h5py reads bytes),

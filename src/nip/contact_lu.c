@@ -1,0 +1,70 @@
+/* The solve with the kept LU factors of the nip system (dgetrf's P A = L U, column-major),
+ * what LAPACK's dgetrs does for one right-hand side, with the triangles swept four columns
+ * at a time: x is read and written once per four columns instead of once per column
+ * (OpenBLAS's dgetrs took ~72 k instructions per solve at n = 192, this ~25 k; it is the
+ * preconditioner of every GMRES iteration, docs/performance.md). The same arithmetic up
+ * to the order of the sums. */
+#include "nip/contact_internal.h"
+
+/* y(0..m-1) -= a0 x0 + a1 x1 + a2 x2 + a3 x3 (vectorised: restrict, a multiple of 4 first) */
+static void sub4(int m, double *restrict y, double x0, double x1, double x2, double x3,
+                 const double *restrict a0, const double *restrict a1, const double *restrict a2,
+                 const double *restrict a3)
+{
+  int m4 = m & ~3;
+  for (int i = 0; i < m4; ++i) y[i] -= (a0[i] * x0 + a1[i] * x1) + (a2[i] * x2 + a3[i] * x3);
+  for (int i = m4; i < m; ++i) y[i] -= (a0[i] * x0 + a1[i] * x1) + (a2[i] * x2 + a3[i] * x3);
+}
+
+void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x)
+{
+#define COLUMN(j) (LU + (size_t)(j) * (size_t)n)
+  for (int i = 0; i < n; ++i) { /* the row interchanges, in dgetrf's order */
+    int p = (int)ipiv[i] - 1;
+    if (p != i) {
+      double t = x[i];
+      x[i] = x[p];
+      x[p] = t;
+    }
+  }
+  /* L y = x, L unit lower triangular: a block of four columns solves its own 4 x 4
+   * triangle, then updates the rows below it */
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    const double *c0 = COLUMN(j), *c1 = COLUMN(j + 1), *c2 = COLUMN(j + 2), *c3 = COLUMN(j + 3);
+    double x0 = x[j];
+    double x1 = x[j + 1] - c0[j + 1] * x0;
+    double x2 = x[j + 2] - c0[j + 2] * x0 - c1[j + 2] * x1;
+    double x3 = x[j + 3] - c0[j + 3] * x0 - c1[j + 3] * x1 - c2[j + 3] * x2;
+    x[j + 1] = x1;
+    x[j + 2] = x2;
+    x[j + 3] = x3;
+    int k = j + 4;
+    sub4(n - k, x + k, x0, x1, x2, x3, c0 + k, c1 + k, c2 + k, c3 + k);
+  }
+  for (; j < n; ++j) {
+    const double *c = COLUMN(j);
+    for (int i = j + 1; i < n; ++i) x[i] -= c[i] * x[j];
+  }
+  /* U z = y, U upper triangular: the columns beyond the last whole block first, one by
+   * one, then blocks of four from the end, each its 4 x 4 triangle and the rows above */
+  int r = n % 4;
+  for (j = n - 1; j >= n - r; --j) {
+    const double *c = COLUMN(j);
+    x[j] /= c[j];
+    for (int i = 0; i < j; ++i) x[i] -= c[i] * x[j];
+  }
+  for (j = n - r - 4; j >= 0; j -= 4) {
+    const double *c0 = COLUMN(j), *c1 = COLUMN(j + 1), *c2 = COLUMN(j + 2), *c3 = COLUMN(j + 3);
+    double x3 = x[j + 3] / c3[j + 3];
+    double x2 = (x[j + 2] - c3[j + 2] * x3) / c2[j + 2];
+    double x1 = (x[j + 1] - c2[j + 1] * x2 - c3[j + 1] * x3) / c1[j + 1];
+    double x0 = (x[j] - c1[j] * x1 - c2[j] * x2 - c3[j] * x3) / c0[j];
+    x[j] = x0;
+    x[j + 1] = x1;
+    x[j + 2] = x2;
+    x[j + 3] = x3;
+    sub4(j, x, x0, x1, x2, x3, c0, c1, c2, c3);
+  }
+#undef COLUMN
+}
