@@ -60,6 +60,24 @@ static int has_filter(hid_t dcpl, H5Z_filter_t id)
   return 0;
 }
 
+/* The first filter of the dataset's pipeline that is not one reelsim writes (HDF5's own
+ * shuffle, deflate and Fletcher-32), or -1: any other would have HDF5 look for a filter
+ * library on its plugin path to read the values, code a file would choose */
+static int foreign_filter(hid_t dcpl)
+{
+  int n = H5Pget_nfilters(dcpl);
+  if (n < 0) return H5Z_FILTER_ERROR;
+  for (int i = 0; i < n; ++i) {
+    unsigned flags, cd[8], config;
+    size_t ncd = 8;
+    char name[64];
+    H5Z_filter_t id = H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof name, name, &config);
+    if (id != H5Z_FILTER_SHUFFLE && id != H5Z_FILTER_DEFLATE && id != H5Z_FILTER_FLETCHER32)
+      return id;
+  }
+  return -1;
+}
+
 /* The type checks shared by datasets and attributes: NULL when fine, else why not. */
 static const char *type_problem(const rs_h5_bounds *b, hid_t type, int want_strings)
 {
@@ -98,6 +116,11 @@ static rs_status check_storage(const rs_h5_bounds *b, const char *path, hid_t d,
     if (k <= 0 || bytes > (double)RS_H5_MAX_CHUNK)
       return RS_ERROR(RS_ERR_INPUT, "%s: '%s' declares chunks of %.3g bytes (at most %zu): "
                       "damaged", b->name, path, bytes, RS_H5_MAX_CHUNK);
+    const int foreign = foreign_filter(dcpl);
+    if (foreign != -1)
+      return RS_ERROR(RS_ERR_INPUT, "%s: '%s' is filtered by HDF5 filter %d, which reelsim never "
+                      "writes (no filter library is loaded to read a file): refused", b->name,
+                      path, foreign);
     if (b->checksummed && !has_filter(dcpl, H5Z_FILTER_FLETCHER32))
       return RS_ERROR(RS_ERR_INPUT, "%s: '%s' has no Fletcher-32 checksum, which every "
                       "dataset of a checksummed reelsim file has: damaged", b->name, path);

@@ -162,6 +162,21 @@ def _replace(path, key, data):
         f.create_dataset(key, data=data, chunks=True, fletcher32=True)
 
 
+def test_foreign_filter(reelsim, run_file, tmp_path):
+    """A dataset compressed with a filter reelsim never writes (h5py's LZF, filter 32000,
+    which HDF5 itself does not have: a reader would look for it on the plugin path) is
+    refused before its values are read, by the Python reader and by `reelsim plot`."""
+    path = _copy(run_file, tmp_path, "lzf.h5")
+    with h5py.File(path, "a") as f:
+        data = f["final/sigma_r"][...]
+        del f["final/sigma_r"]
+        f.create_dataset("final/sigma_r", data=data, compression="lzf", fletcher32=True)
+    with pytest.raises(reelsim.InputError, match="filtered by HDF5 filter 32000"):
+        reelsim.read(path)
+    p = cli("plot", str(path), "-o", str(tmp_path / "p-lzf"))
+    assert p.returncode == 2 and "filtered by HDF5 filter 32000" in p.stderr, p.stderr
+
+
 def test_external_and_soft_links(reelsim, run_file, tmp_path):
     other = tmp_path / "other.h5"
     with h5py.File(other, "w") as f:
