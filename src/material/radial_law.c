@@ -210,14 +210,30 @@ static const double gl8_x[4] = {0.18343464249564980, 0.52553240991632899, 0.7966
 static const double gl8_w[4] = {0.36268378337836198, 0.31370664587788729, 0.22238103445337447,
                                 0.10122853629037626};
 
-static double strain_panel(const rs_radial_law *law, double a, double b)
+/* the panel [a, b]'s eight Gauss points, in the pairs c - h x_i, c + h x_i */
+static void gl8_points(double a, double b, double pts[8])
 {
   const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  for (int i = 0; i < 4; ++i) {
+    pts[2 * i] = c - h * gl8_x[i];
+    pts[2 * i + 1] = c + h * gl8_x[i];
+  }
+}
+
+/* the integral over the panel [a, b] of 1/E_r, from the moduli E at its gl8_points */
+static double gl8_sum(double a, double b, const double E[8])
+{
   double s = 0.0;
-  for (int i = 0; i < 4; ++i)
-    s += gl8_w[i] * (1.0 / rs_radial_modulus(law, c - h * gl8_x[i]) +
-                     1.0 / rs_radial_modulus(law, c + h * gl8_x[i]));
-  return s * h;
+  for (int i = 0; i < 4; ++i) s += gl8_w[i] * (1.0 / E[2 * i] + 1.0 / E[2 * i + 1]);
+  return s * (0.5 * (b - a));
+}
+
+static double strain_panel(const rs_radial_law *law, double a, double b)
+{
+  double pts[8], E[8];
+  gl8_points(a, b, pts);
+  for (int k = 0; k < 8; ++k) E[k] = rs_radial_modulus(law, pts[k]);
+  return gl8_sum(a, b, E);
 }
 
 double rs_radial_strain_step(const rs_radial_law *law, double a, double b)
@@ -247,19 +263,11 @@ void rs_radial_strain_steps(const rs_radial_law *law, const double *P, int n, do
   double pts[8 * STEPS], E[8 * STEPS];
   for (int i0 = 0; i0 < n; i0 += STEPS) {
     const int m = n - i0 < STEPS ? n - i0 : STEPS;
-    for (int i = 0; i < m; ++i) {
-      const double a = P[i0 + i], b = P[i0 + i + 1], c = 0.5 * (a + b), h = 0.5 * (b - a);
-      for (int k = 0; k < 4; ++k) {
-        pts[8 * i + 2 * k] = c - h * gl8_x[k];
-        pts[8 * i + 2 * k + 1] = c + h * gl8_x[k];
-      }
-    }
+    for (int i = 0; i < m; ++i) gl8_points(P[i0 + i], P[i0 + i + 1], pts + 8 * i);
     rs_radial_modulus_n(law, pts, E, 8 * m);
     for (int i = 0; i < m; ++i) {
-      const double a = P[i0 + i], b = P[i0 + i + 1], h = 0.5 * (b - a);
-      double s = 0.0;
-      for (int k = 0; k < 4; ++k) s += gl8_w[k] * (1.0 / E[8 * i + 2 * k] + 1.0 / E[8 * i + 2 * k + 1]);
-      d[i0 + i] = b > a ? 0.0 + s * h : 0.0;
+      const double a = P[i0 + i], b = P[i0 + i + 1];
+      d[i0 + i] = b > a ? 0.0 + gl8_sum(a, b, E + 8 * i) : 0.0;
     }
   }
 }

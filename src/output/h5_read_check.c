@@ -47,16 +47,20 @@ rs_status rs_h5_walk_error(const rs_h5_bounds *b, const char *path, int walk)
 }
 
 /* 1 when dcpl's pipeline holds filter `id`. */
+/* the id of filter i of the dataset's pipeline (H5Z_FILTER_ERROR when it cannot be read) */
+static H5Z_filter_t filter_at(hid_t dcpl, int i)
+{
+  unsigned flags, cd[8], config;
+  size_t ncd = 8;
+  char name[64];
+  return H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof name, name, &config);
+}
+
 static int has_filter(hid_t dcpl, H5Z_filter_t id)
 {
   int n = H5Pget_nfilters(dcpl);
-  for (int i = 0; i < n; ++i) {
-    unsigned flags, cd[8], config;
-    size_t ncd = 8;
-    char name[64];
-    if (H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof name, name, &config) == id)
-      return 1;
-  }
+  for (int i = 0; i < n; ++i)
+    if (filter_at(dcpl, i) == id) return 1;
   return 0;
 }
 
@@ -68,10 +72,7 @@ static int foreign_filter(hid_t dcpl)
   int n = H5Pget_nfilters(dcpl);
   if (n < 0) return H5Z_FILTER_ERROR;
   for (int i = 0; i < n; ++i) {
-    unsigned flags, cd[8], config;
-    size_t ncd = 8;
-    char name[64];
-    H5Z_filter_t id = H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof name, name, &config);
+    H5Z_filter_t id = filter_at(dcpl, i);
     if (id != H5Z_FILTER_SHUFFLE && id != H5Z_FILTER_DEFLATE && id != H5Z_FILTER_FLETCHER32)
       return id;
   }

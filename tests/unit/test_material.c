@@ -107,19 +107,29 @@ static void recipes(void)
   CHECK(rs_recipe_prepare(&tab, r0, r1) == RS_ERR_INPUT);
 }
 
-/* rs_radial_modulus_stress_n at n radial stresses: P = -sigma exactly and E_r bit for bit
- * what the law gives at P (rs_radial_modulus, one pressure at a time), for every law; the
- * index of the first modulus that is not positive, or -1. */
-static void modulus_of_stresses(void)
+/* One law of each kind (Hakiel's with 3 and 4 terms), for the checks that the array forms
+ * give what the one-point forms give */
+enum { RS_EVERY_LAW = 5 };
+static void every_law(rs_radial_law laws[RS_EVERY_LAW])
 {
-  enum { N = 37 };
-  rs_radial_law laws[] = {
+  const rs_radial_law all[RS_EVERY_LAW] = {
       {.law = RS_RADIAL_LINEAR, .E_r = 3e6},
       {.law = RS_RADIAL_PFEIFFER, .K1 = 5e3, .K2 = 60},
       {.law = RS_RADIAL_HAKIEL, .C = {1.0e6, 60.0, 2.0e-6}, .n_coef = 3},
       {.law = RS_RADIAL_HAKIEL, .C = {1e5, 20.0, -1e-6, 2e-13}, .n_coef = 4},
       {.law = RS_RADIAL_TABLE, .n_points = 3, .P = {0, 1e4, 1e6}, .E = {2e5, 3e5, 9e6}},
   };
+  for (int i = 0; i < RS_EVERY_LAW; ++i) laws[i] = all[i];
+}
+
+/* rs_radial_modulus_stress_n at n radial stresses: P = -sigma exactly and E_r bit for bit
+ * what the law gives at P (rs_radial_modulus, one pressure at a time), for every law; the
+ * index of the first modulus that is not positive, or -1. */
+static void modulus_of_stresses(void)
+{
+  enum { N = 37 };
+  rs_radial_law laws[RS_EVERY_LAW];
+  every_law(laws);
   double sigma[N], P[N], E[N];
   for (int i = 0; i < N; ++i) sigma[i] = i == 3 ? 25.0 : -1.7e4 * i * i; /* one in tension */
   for (size_t l = 0; l < sizeof laws / sizeof laws[0]; ++l) {
@@ -144,13 +154,8 @@ static void modulus_of_stresses(void)
 static void strain_steps_batched(void)
 {
   enum { N = 150 };
-  rs_radial_law laws[] = {
-      {.law = RS_RADIAL_LINEAR, .E_r = 3e6},
-      {.law = RS_RADIAL_PFEIFFER, .K1 = 5e3, .K2 = 60},
-      {.law = RS_RADIAL_HAKIEL, .C = {1.0e6, 60.0, 2.0e-6}, .n_coef = 3},
-      {.law = RS_RADIAL_HAKIEL, .C = {1e5, 20.0, -1e-6, 2e-13}, .n_coef = 4},
-      {.law = RS_RADIAL_TABLE, .n_points = 3, .P = {0, 1e4, 1e6}, .E = {2e5, 3e5, 9e6}},
-  };
+  rs_radial_law laws[RS_EVERY_LAW];
+  every_law(laws);
   const double Pmax = 4e5;
   double P[N + 1], d[N];
   for (int i = 0; i <= N; ++i) P[i] = Pmax * (double)i * i / ((double)N * N);

@@ -642,16 +642,25 @@ static rs_material newsprint(double G)
   return m;
 }
 
-static void thin_roll_no_kink(void)
+/* A contact nip against a steel drum of radius 0.3 m over a rigid core of radius
+ * drum_core (m; the cover is the rest), the roll's friction 0.19, the drum's 0.35, on
+ * `nodes` nodes */
+static rs_nip_spec steel_drum_contact(rs_winder_kind winder, double drum_core, int nodes)
 {
-  rs_material m = newsprint(1e9);
   rs_nip_spec sp = {0};
   sp.model = RS_NIP_CONTACT;
   sp.mu_roll = 0.19;
   sp.mu_drum = 0.35;
-  sp.winder = RS_WINDER_CENTER;
-  sp.drum = (rs_drum){0.3, 0.05, 0, 2.1e11, 0.3, 0, 0, 0, 0};
-  sp.nodes = 24;
+  sp.winder = winder;
+  sp.drum = (rs_drum){0.3, drum_core, 0, 2.1e11, 0.3, 0, 0, 0, 0};
+  sp.nodes = nodes;
+  return sp;
+}
+
+static void thin_roll_no_kink(void)
+{
+  rs_material m = newsprint(1e9);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_CENTER, 0.05, 24);
   rs_nip_contact *nc = NULL;
   CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
   const double core = 0.0762, Rc = core / 0.99;
@@ -855,13 +864,7 @@ static void warm_equals_cold(void)
 static void warm_search_along_reel(void)
 {
   rs_material m = newsprint(5e7);
-  rs_nip_spec sp = {0};
-  sp.model = RS_NIP_CONTACT;
-  sp.mu_roll = 0.19;
-  sp.mu_drum = 0.35;
-  sp.winder = RS_WINDER_SURFACE;
-  sp.drum = (rs_drum){0.3, 0.28, 0, 2.1e11, 0.3, 0, 0, 0, 0};
-  sp.nodes = 64;
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
   rs_nip_contact *nc = NULL, *cold = NULL;
   CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
   rs_nip_solution w = {0}, c = {0};
