@@ -150,6 +150,13 @@ static inline int rs_kernel_index(int M, int d) { return d + M - 1; }
 rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, double shift, int M,
                               unsigned what, const rs_series_opts *opts, rs_kernels *out);
 
+/* The nip's two shear kernels at the same offsets in one sweep over the modes: the box's qu
+ * into box_qu and the hat's qe into hat_qe, each bit for bit what rs_cylinder_kernels gives
+ * (RS_BASIS_BOX, RS_KERNEL_QU; RS_BASIS_HAT, RS_KERNEL_QE) with the same opts; for a given
+ * number of terms (opts->terms > 0), else the two calls. */
+rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, int M,
+                                    const rs_series_opts *opts, rs_kernels *box_qu, rs_kernels *hat_qe);
+
 /* ---- frictionless normal contact of two cylinders (no sheet) -------------------------- */
 
 typedef struct rs_contact_result {

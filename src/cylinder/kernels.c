@@ -360,3 +360,79 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
   kernel_sum_free(&ks);
   return st;
 }
+
+/* Modes n1..n2 of the two shear kernels of the nip at once, on the same offsets: the box's
+ * qu (partial sums in bx->wk.acc[KQU]) and the hat's qe (hx->wk.acc[KQE]). The arithmetic
+ * of each is add_modes' (the same multipliers, sweeps and rotation), so each kernel is bit
+ * for bit the one rs_cylinder_kernels gives; the offsets' cos/sin advance once for both. */
+static void add_modes_shear(const rs_cylinder *cyl, double wb, double wh, int accel, const double e[NK][3],
+                            long n1, long n2, work *bx, work *hx)
+{
+  const int K = bx->K;
+  double *c = bx->c, *s = bx->s, *aqu = bx->acc[KQU], *aqe = hx->acc[KQE];
+  for (long n = n1; n <= n2; ++n) {
+    if ((n - n1) % 256 == 0)
+      for (int k = 0; k < K; ++k) {
+        c[k] = cos((double)n * bx->t[k]);
+        s[k] = sin((double)n * bx->t[k]);
+      }
+    const double(*F)[2] = cyl->cache[n].F;
+    double in = 1.0 / (double)n;
+    double ab = rs_cyl_basis_coef(RS_BASIS_BOX, wb, n), ah = rs_cyl_basis_coef(RS_BASIS_HAT, wh, n);
+    double mqu = -F[0][1] * in, mqe = F[0][1] * in - F[1][1];
+    if (accel) {
+      mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
+      mqe -= e[KQE][0] + in * (e[KQE][1] + in * e[KQE][2]);
+    }
+    sweep2(K, aqu, mqu * ab, aqe, mqe * ah, s);
+    rotate(K, c, s, bx->ct, bx->st);
+  }
+}
+
+rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, int M,
+                                    const rs_series_opts *opts, rs_kernels *box_qu, rs_kernels *hat_qe)
+{
+  if (!cyl || !box_qu || !hat_qe || !opts) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
+  rs_status st;
+  if (opts->terms <= 0) { /* the automatic series decides per kernel: one at a time */
+    st = rs_cylinder_kernels(cyl, RS_BASIS_BOX, dx, shift, M, RS_KERNEL_QU, opts, box_qu);
+    return st ? st : rs_cylinder_kernels(cyl, RS_BASIS_HAT, dx, shift, M, RS_KERNEL_QE, opts, hat_qe);
+  }
+  double wb = 0, wh = 0;
+  st = kernel_check(cyl, RS_BASIS_BOX, dx, shift, M, &wb);
+  if (!st) st = kernel_check(cyl, RS_BASIS_HAT, dx, shift, M, &wh);
+  if (!st) st = ensure_capacity(box_qu, 2 * M - 1);
+  if (!st) st = ensure_capacity(hat_qe, 2 * M - 1);
+  if (st) return st;
+  kernel_sum kb = {0}, kh = {0};
+  double e[NK][3];
+  const long N = opts->terms;
+  multiplier_expansion(cyl, e);
+  st = offsets_build(cyl, dx, shift, M, &kb);
+  if (!st) st = offsets_build(cyl, dx, shift, M, &kh);
+  if (!st) st = closed_parts(cyl, RS_BASIS_BOX, wb, opts->accelerate, e, RS_KERNEL_QU, shift, M, &kb);
+  if (!st) st = closed_parts(cyl, RS_BASIS_HAT, wh, opts->accelerate, e, RS_KERNEL_QE, shift, M, &kh);
+  if (!st) st = rs_cyl_cache_reserve(cyl, N);
+  for (long n1 = 1; !st && n1 <= N; n1 += 16 * 256) {
+    if (rs_cancel_requested())
+      st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted while summing the kernel series");
+    else
+      add_modes_shear(cyl, wb, wh, opts->accelerate, e, n1, n1 + 16 * 256 - 1 < N ? n1 + 16 * 256 - 1 : N,
+                      &kb.wk, &kh.wk);
+  }
+  if (!st) {
+    kernels_scatter(cyl, &kb, RS_KERNEL_QU, box_qu);
+    kernels_scatter(cyl, &kh, RS_KERNEL_QE, hat_qe);
+    rs_kernels *out[2] = {box_qu, hat_qe};
+    for (int j = 0; j < 2; ++j) {
+      out[j]->M = M;
+      out[j]->basis = j ? RS_BASIS_HAT : RS_BASIS_BOX;
+      out[j]->dx = dx;
+      out[j]->shift = shift;
+      out[j]->terms = N;
+    }
+  }
+  kernel_sum_free(&kb);
+  kernel_sum_free(&kh);
+  return st;
+}

@@ -164,9 +164,8 @@ rs_status rs_nipc_kernels(rs_nip_contact *nc, double a)
     rs_status st = rs_cylinder_kernels(c, RS_BASIS_HAT, dx, 0.0, M, RS_KERNEL_PU | RS_KERNEL_PE, &o, &k[KP]);
     if (!st) {
       if (o.terms <= 0) o.terms = k[KP].terms;
-      st = rs_cylinder_kernels(c, RS_BASIS_BOX, dx, -0.5 * dx, M, RS_KERNEL_QU, &o, &k[KQU]);
+      st = rs_cylinder_kernels_shear(c, dx, -0.5 * dx, M, &o, &k[KQU], &k[KQE]);
     }
-    if (!st) st = rs_cylinder_kernels(c, RS_BASIS_HAT, dx, -0.5 * dx, M, RS_KERNEL_QE, &o, &k[KQE]);
     if (st) {
       nc->k_a = 0;
       return rs_error_wrap("%s kernels at half-width a = %g m (M = %d)", b ? "drum" : "roll", a, M);

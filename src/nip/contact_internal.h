@@ -7,6 +7,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_nvector.h>
 
+#include "nip/contact_woodbury.h"
 #include "nip/nip_contact.h"
 
 /* per body: [KP] hat pressure -> w and eps at the nodes (pu, pe, shift 0);
@@ -40,6 +41,11 @@ typedef struct rs_nipc_lin {
   SUNLinearSolver spgmr;
   N_Vector nx, nb;        /* solution and right-hand side (own data) */
   double *gm_rs;          /* the row scales of the system SPGMR is on */
+  /* the rank-k correction of the kept LU for the rows whose stick/slip kind changed */
+  double *B0;             /* n x n: the equilibrated matrix the LU was made of */
+  double *colsum;         /* n: its column sums of |entries| */
+  int *krows;             /* n: the changed rows */
+  rs_nipc_wb wb;
 } rs_nipc_lin;
 
 struct rs_nip_contact {
@@ -67,7 +73,7 @@ struct rs_nip_contact {
   /* the last converged load searches, newest first: R*, P, E*, a (the half-width
    * predictor, contact_load.c) */
   int hist_n;
-  double hist_Rs[3], hist_P[3], hist_Es[3], hist_a[3];
+  double hist_Rs[4], hist_P[4], hist_Es[4], hist_a[4];
   double last_a;             /* the half-width returned last (its kernels are cached) */
   double H11[2];             /* half-plane compliance H11 of roll and drum: E* = 2/(H1 + H2) */
   /* linear algebra: the assembled system (column-major, unscaled) and its solver */
@@ -105,6 +111,15 @@ rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
 /* contact_lu.c: x <- A^-1 x with dgetrf's factors of the n x n column-major A (LU, ipiv),
  * as dgetrs does for one right-hand side, the triangles swept four columns at a time. */
 void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x);
+/* y(0..m-1) -= a0 x0 + a1 x1 + a2 x2 + a3 x3, and d[m] = sum_i c_m[i] x[i] for four
+ * columns: the vectorised four-column sweeps of the solves (contact_lu.c) */
+void rs_nipc_sub4(int m, double *restrict y, double x0, double x1, double x2, double x3,
+                  const double *restrict a0, const double *restrict a1, const double *restrict a2,
+                  const double *restrict a3);
+void rs_nipc_dot4(int len, const double *restrict x, const double *restrict c0, const double *restrict c1,
+                  const double *restrict c2, const double *restrict c3, double d[4]);
+/* x <- A^-T x with the same factors (dgetrs 'T' for one right-hand side) */
+void rs_nipc_lu_solve_t(int n, const double *LU, const lapack_int *ipiv, double *x);
 
 /* contact_assemble.c: assembles A z = rhs for the active set in nc->state. */
 void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);

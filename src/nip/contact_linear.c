@@ -32,8 +32,13 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 
 /* up to 4 cycles of 10 iterations (the hand-written GMRES: 40, stagnation test at 10) */
-enum { KRYLOV_MAXL = 10, KRYLOV_CYCLES = 4, KRYLOV_MAX_ROWS = 16 };
+enum { KRYLOV_MAXL = 10, KRYLOV_CYCLES = 4, KRYLOV_MAX_ROWS = 32 };
+/* the kept LU serves while the half-width is within this fraction of its own */
+static const double KRYLOV_MAX_DRIFT = 0.05;
 static const double KRYLOV_RTOL = 1e-14; /* ||b - A x|| / ||b||, equilibrated system */
+/* the least reciprocal condition number of the rank-k correction's capacitance matrix */
+static const double WB_RCOND_MIN = 1e-8;
+enum { WB_MAX_NODES = 1024 };
 
 static int krylov_atimes(void *data, N_Vector v, N_Vector z);
 static int krylov_psolve(void *data, N_Vector r, N_Vector z, sunrealtype tol, int lr);
@@ -50,9 +55,16 @@ rs_status rs_nipc_lin_alloc(rs_nip_contact *nc)
   L->state = malloc((size_t)(nc->M - 1) * 2);
   L->work = malloc(5 * n * sizeof(double)); /* dgecon needs 4 n */
   L->iwork = malloc(n * sizeof(lapack_int));
+  /* the rank-k correction keeps a copy of the equilibrated matrix: up to M = 1024 nodes
+   * (75 MB); beyond, GMRES refines from the kept LU alone */
+  L->B0 = n <= 3 * WB_MAX_NODES ? malloc(n * n * sizeof(double)) : NULL;
+  L->colsum = malloc(n * sizeof(double));
+  L->krows = malloc(n * sizeof(int));
   L->valid = 0;
-  if (!L->LU || !L->ipiv || !L->rs || !L->cs || !L->gm_rs || !L->state || !L->work || !L->iwork)
+  if (!L->LU || !L->ipiv || !L->rs || !L->cs || !L->gm_rs || !L->state || !L->work || !L->iwork ||
+      (!L->B0 && n <= 3 * WB_MAX_NODES) || !L->colsum || !L->krows)
     return RS_ERROR(RS_ERR_MEMORY, "nip linear solver work space (n = %d)", nc->n);
+  if (rs_nipc_wb_alloc(&L->wb, nc->n, L->B0 ? KRYLOV_MAX_ROWS : 0)) return RS_ERR_MEMORY;
   if (rs_sundials_context_create(&L->sunctx) != 0)
     return RS_ERROR(RS_ERR_MEMORY, "nip linear solver: SUNContext_Create failed");
   L->nx = N_VNew_Serial((sunindextype)n, L->sunctx);
@@ -78,6 +90,10 @@ void rs_nipc_lin_free(rs_nip_contact *nc)
   free(L->state);
   free(L->work);
   free(L->iwork);
+  free(L->B0);
+  free(L->colsum);
+  free(L->krows);
+  rs_nipc_wb_free(&L->wb);
   if (L->spgmr) SUNLinSolFree(L->spgmr);
   if (L->nb) N_VDestroy(L->nb);
   if (L->nx) N_VDestroy(L->nx);
@@ -127,9 +143,10 @@ static void scaled_matvec(const rs_nip_contact *nc, const double *rs, const doub
   for (int r = 0; r < n; ++r) y[r] *= rs[r];
 }
 
+/* x <- the kept LU's inverse, with the rank-k correction of the changed rows when set */
 static rs_status lu_solve(rs_nip_contact *nc, double *x)
 {
-  rs_nipc_lu_solve(nc->n, nc->lin.LU, nc->lin.ipiv, x);
+  rs_nipc_wb_solve(&nc->lin.wb, nc->lin.LU, nc->lin.ipiv, x);
   return RS_OK;
 }
 
@@ -200,6 +217,8 @@ rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
       Bc[r] *= er[r] * ec[c];
       s += fabs(Bc[r]);
     }
+    if (L->B0) memcpy(L->B0 + (size_t)c * n, Bc, (size_t)n * sizeof *Bc);
+    L->colsum[c] = s;
     anorm = fmax(anorm, s);
   }
   for (int r = 0; r < n; ++r) er[r] /= row[r];
@@ -207,6 +226,7 @@ rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a)
   L->anorm = anorm;
   L->rcond = -1;
   L->a = a;
+  rs_nipc_wb_forget(&L->wb);
   memcpy(L->state, nc->state, (size_t)(nc->M - 1) * 2);
   lapack_int N = (lapack_int)n;
   lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, N, N, B, N, L->ipiv);
@@ -261,6 +281,7 @@ static int krylov(rs_nip_contact *nc, int changed_rows)
   /* row scales: the factorization's, fresh ones for the rows whose stick/slip state changed */
   const int M = nc->M, E = M - 1;
   memcpy(rsc, L->rs, (size_t)n * sizeof *rsc);
+  int nk = 0;
   if (changed_rows)
     for (int k = 0; k < 2 * E; ++k) {
       if (nc->state[k] == L->state[k]) continue;
@@ -269,7 +290,13 @@ static int krylov(rs_nip_contact *nc, int changed_rows)
       for (int c = 0; c < n; ++c) mx = max_of(mx, fabs(nc->A[(size_t)c * n + row] * L->cs[c]));
       if (!(mx > 0)) return 0;
       rsc[row] = 1 / mx;
+      if (!L->B0) continue;
+      double *d = rs_nipc_wb_row(&L->wb, nk);
+      for (int c = 0; c < n; ++c) d[c] = rsc[row] * (nc->A[(size_t)c * n + row] * L->cs[c]);
+      L->krows[nk++] = row;
     }
+  /* the preconditioner: the kept LU corrected for these rows (rank nk) */
+  if (L->B0 && rs_nipc_wb_set(&L->wb, L->LU, L->ipiv, L->B0, nk, L->krows, WB_RCOND_MIN)) return 0;
   for (int i = 0; i < n; ++i) b[i] = rsc[i] * nc->rhs[i];
   double tol = KRYLOV_RTOL * norm2(n, b);
   memcpy(x, b, (size_t)n * sizeof *x);
@@ -304,7 +331,7 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
 {
   const int n = nc->n, E = nc->M - 1;
   rs_nipc_lin *L = &nc->lin;
-  if (L->valid && fabs(a / L->a - 1) < 0.1) {
+  if (L->valid && fabs(a / L->a - 1) < KRYLOV_MAX_DRIFT) {
     int changed = 0;
     for (int k = 0; k < 2 * E; ++k) changed += nc->state[k] != L->state[k];
     if (changed <= KRYLOV_MAX_ROWS && krylov(nc, changed)) {
@@ -337,6 +364,15 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond)
 {
   rs_nipc_lin *L = &nc->lin;
+  if (L->valid && L->solved_state_differs && L->wb.k > 0) {
+    /* the kept LU with its rank-k correction for the changed rows */
+    double anorm = rs_nipc_wb_norm1(&L->wb, L->B0, L->colsum);
+    double ainv = rs_nipc_wb_inv_norm1(&L->wb, L->LU, L->ipiv, L->work);
+    *cond = anorm * ainv;
+    if (!(isfinite(*cond) && *cond < 1 / (1e3 * 2.2e-16)))
+      return RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
+    return RS_OK;
+  }
   if (!L->valid || L->solved_state_differs) {
     rs_status st = rs_nipc_lin_refactor(nc, a);
     if (st) return st;

@@ -58,33 +58,48 @@ static double cold_guess(const rs_nip_contact *nc, double P, double Rs, double E
   return exp(x);
 }
 
+/* The polynomial through (x[i], y[i]), i < m, at x0 (Lagrange). */
+static double lagrange(int m, const double *x, const double *y, double x0)
+{
+  double p = 0;
+  for (int i = 0; i < m; ++i) {
+    double l = 1;
+    for (int j = 0; j < m; ++j)
+      if (j != i) l *= (x0 - x[j]) / (x[i] - x[j]);
+    p += l * y[i];
+  }
+  return p;
+}
+
 /* First half-width to try. Cold: cold_guess. Warm: the ratio phi = a / a_Hertz of the last
- * converged searches, extrapolated in R* (polynomial through up to three, Lagrange) and
- * times the Hertz half-width now; a reel calls with R growing by one caliper per layer,
- * where phi is smooth, so the prediction usually meets the load to load_rtol at once.
- * The same nip again (P, R*, E* unchanged) starts exactly at the previous a (its kernels
- * and factorization are kept). A prediction more than 1 % off the last phi is not trusted. */
+ * converged searches, extrapolated in ln R* and times the Hertz half-width now; a reel
+ * calls with R growing by one caliper per layer, or (the adaptive policy) by steps that
+ * grow with R, about evenly spaced in ln R*, where phi is smooth. The cubic through the
+ * last four searches, unless it differs from the quadratic through the last three by more
+ * than 1e-3 (then the extrapolation reaches too far for either: the quadratic); on the
+ * adaptive reel's large radii the cubic meets the load to 1e-8, the quadratic in R* missed
+ * by 1e-6 - 4e-5 (docs/nip.md, "Load -> half-width"). The same nip again (P, R*, E*
+ * unchanged) starts exactly at the previous a (its kernels and factorization are kept).
+ * A prediction more than 1 % off the last phi is not trusted. */
 static double predict(const rs_nip_contact *nc, double P, double Rs, double Es)
 {
   if (!(Es > 0)) return 1e-3 * fmin(nc->R[0], nc->R[1]);
   double aH = hertz(P, Rs, Es);
   if (nc->hist_n == 0) return cold_guess(nc, P, Rs, Es);
   if (P == nc->hist_P[0] && Rs == nc->hist_Rs[0] && Es == nc->hist_Es[0]) return nc->last_a;
-  double phi[3], x[3];
+  double phi[4], x[4];
   int m = 0;
   for (int i = 0; i < nc->hist_n; ++i) {
     int distinct = 1;
-    for (int j = 0; j < m; ++j) distinct &= fabs(nc->hist_Rs[i] - x[j]) > 1e-12 * Rs;
+    for (int j = 0; j < m; ++j) distinct &= fabs(nc->hist_Rs[i] - nc->hist_Rs[j]) > 1e-12 * Rs;
     if (!distinct) break;
-    x[m] = nc->hist_Rs[i];
+    x[m] = log(nc->hist_Rs[i]);
     phi[m++] = nc->hist_a[i] / hertz(nc->hist_P[i], nc->hist_Rs[i], nc->hist_Es[i]);
   }
-  double p = 0;
-  for (int i = 0; i < m; ++i) {
-    double l = 1;
-    for (int j = 0; j < m; ++j)
-      if (j != i) l *= (Rs - x[j]) / (x[i] - x[j]);
-    p += l * phi[i];
+  double p = lagrange(m < 3 ? m : 3, x, phi, log(Rs));
+  if (m == 4) {
+    double p3 = lagrange(4, x, phi, log(Rs));
+    if (fabs(p3 / p - 1) <= 1e-3) p = p3;
   }
   if (!(fabs(p / phi[0] - 1) <= 0.01)) p = phi[0];
   return p * aH;
@@ -106,7 +121,7 @@ static double first_slope(const rs_nip_contact *nc, double Rs)
 
 static void remember(rs_nip_contact *nc, double P, double Rs, double Es, double a)
 {
-  for (int i = 2; i > 0; --i) {
+  for (int i = 3; i > 0; --i) {
     nc->hist_Rs[i] = nc->hist_Rs[i - 1];
     nc->hist_P[i] = nc->hist_P[i - 1];
     nc->hist_Es[i] = nc->hist_Es[i - 1];
@@ -116,7 +131,7 @@ static void remember(rs_nip_contact *nc, double P, double Rs, double Es, double 
   nc->hist_P[0] = P;
   nc->hist_Es[0] = Es;
   nc->hist_a[0] = a;
-  if (nc->hist_n < 3) ++nc->hist_n;
+  if (nc->hist_n < 4) ++nc->hist_n;
 }
 
 /* The load search's state in x = ln a: the bracket [lo, hi] once found (P(lo) < P <

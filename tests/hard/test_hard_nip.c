@@ -210,9 +210,14 @@ static void check_nip(const stack *s, const rs_nip_solution *r, double P, nip_co
   CHECK_ABS(Iu + r->T0, sh * Ti, 1e-12 * scale);
   CHECK_ABS(-Il, (1 - sh) * Ti, 1e-12 * scale);
   CHECK(fabs(r->T0 - sh * Ti) <= s->mu_roll * r->load * (1 + 1e-12) + 1e-12 * scale);
-  CHECK(r->dissipation >= -1e-12 * fabs(r->dissipation) - 1e-300);
   CHECK(r->pressure[0] == 0 && r->pressure[M - 1] == 0);
   double pm = pmax_of(r);
+  /* the round-off of the shears: 1e-12 of p_max and of the tension over the contact (a
+   * slip element of a frictionless contact has the exact shear 0, the solve gives ~1e-17
+   * p_max, of either sign, when it refines from a kept LU with a rank-k correction) */
+  double qfloor = 1e-12 * (pm + (fabs(Ti) + fabs(r->T0)) / (2 * r->a)), sabs = 0;
+  for (int e = 0; e < E; ++e) sabs += r->dx * (fabs(r->slip_rate_upper[e]) + fabs(r->slip_rate_lower[e]));
+  CHECK(r->dissipation >= -1e-12 * fabs(r->dissipation) - qfloor * sabs - 1e-300);
   int bad_slip = 0, bad_stick = 0, bad_dir = 0, negp = 0;
   for (int i = 0; i < M; ++i) negp += r->pressure[i] < -1e-12 * pm;
   for (int e = 0; e < E; ++e) {
@@ -223,8 +228,8 @@ static void check_nip(const stack *s, const rs_nip_solution *r, double P, nip_co
     int edge = e < E / 5 || e >= E - E / 5;
     for (int k = 0; k < 2; ++k) {
       if (sl[k]) {
-        bad_slip += !(fabs(fabs(q[k]) - mu[k] * pb) <= 1e-10 * mu[k] * pm);
-        bad_dir += !(q[k] * sr[k] >= 0);
+        bad_slip += !(fabs(fabs(q[k]) - mu[k] * pb) <= 1e-10 * mu[k] * pm + qfloor);
+        bad_dir += !(q[k] * sr[k] >= 0 || fabs(q[k]) <= qfloor);
         if (k) {
           cnt->slip_l++;
           cnt->edge_l += edge;
@@ -236,8 +241,7 @@ static void check_nip(const stack *s, const rs_nip_solution *r, double P, nip_co
         /* the solver's acceptance: the limit to 1e-8 mu p_max, and the round-off of the
          * shears (1e-12 of p_max and of the tension over the contact): a stuck element of
          * a frictionless contact (the rider's, defining xi2) has the exact shear 0 */
-        bad_stick += !(fabs(q[k]) <= mu[k] * pb + 1e-8 * mu[k] * pm +
-                       1e-12 * (pm + (fabs(Ti) + fabs(r->T0)) / (2 * r->a)));
+        bad_stick += !(fabs(q[k]) <= mu[k] * pb + 1e-8 * mu[k] * pm + qfloor);
       }
     }
   }

@@ -357,6 +357,37 @@ static void parity(void)
   rs_cylinder_destroy(&c);
 }
 
+/* The nip's two shear kernels in one sweep (rs_cylinder_kernels_shear) are bit for bit the
+ * two separate calls: accelerated and plain, 256 terms (the nip's default) and more than
+ * one 256-mode restart, the nip's offsets (shift -dx/2) */
+static void shear_one_sweep(void)
+{
+  rs_ortho o = ortho_complex();
+  rs_cylinder *c = NULL;
+  CHECK(rs_cylinder_create(&o, 0.5, 0.05, &c) == RS_OK);
+  const int M = 64;
+  const double dx = 2 * 0.004 / (M - 1);
+  long differ = 0;
+  for (int accel = 0; accel < 2; ++accel)
+    for (long terms = 256; terms <= 600; terms += 344) {
+      rs_series_opts opt = {terms, 0, 0, accel};
+      rs_kernels qu = {0}, qe = {0}, qu1 = {0}, qe1 = {0};
+      CHECK(rs_cylinder_kernels(c, RS_BASIS_BOX, dx, -0.5 * dx, M, RS_KERNEL_QU, &opt, &qu) == RS_OK);
+      CHECK(rs_cylinder_kernels(c, RS_BASIS_HAT, dx, -0.5 * dx, M, RS_KERNEL_QE, &opt, &qe) == RS_OK);
+      CHECK(rs_cylinder_kernels_shear(c, dx, -0.5 * dx, M, &opt, &qu1, &qe1) == RS_OK);
+      for (int i = 0; i < 2 * M - 1; ++i) differ += qu.qu[i] != qu1.qu[i] || qe.qe[i] != qe1.qe[i];
+      CHECK(qu1.terms == terms && qe1.terms == terms && qu1.basis == RS_BASIS_BOX && qe1.basis == RS_BASIS_HAT);
+      CHECK(qu.qu[rs_kernel_index(M, 3)] != 0 && qe.qe[rs_kernel_index(M, 3)] != 0);
+      rs_kernels_free(&qu);
+      rs_kernels_free(&qe);
+      rs_kernels_free(&qu1);
+      rs_kernels_free(&qe1);
+    }
+  CHECK_LOG("kernel values that differ", (double)differ);
+  CHECK(differ == 0);
+  rs_cylinder_destroy(&c);
+}
+
 static double rel_err(const double *a, const double *ref, int K)
 {
   double mx = 0, e = 0;
@@ -464,6 +495,7 @@ static void errors(void)
 
 static const check_case cases[] = {
     {"engineering", engineering},
+    {"shear_one_sweep", shear_one_sweep},
     {"halfplane_isotropic", halfplane_isotropic},
     {"lame_n0", lame_n0},
     {"betti_and_limit", betti_and_limit},
