@@ -76,9 +76,10 @@ typedef struct rs_nip_solution {
   double delta0;            /* m, approach of the cylinder centres */
   double eps0;              /* m, shift of the nip centre */
   double E_r;               /* Pa, radial modulus used for the roll (0 if set by hand) */
-  double condition_number;  /* 1-norm estimate (dgecon) of the equilibrated final matrix, or
-                               of the kept one it was refined from with the same stick/slip
-                               rows (they differ by the kernels' drift, docs/nip.md) */
+  double condition_number;  /* 1-norm estimate (dgecon's algorithm) of the equilibrated final
+                               matrix, or of the kept one it was refined from with the final
+                               stick/slip rows put in (they differ by the kernels' drift,
+                               docs/nip.md) */
   int iterations;           /* active-set solves at the final half-width */
   int lcp_pivots;           /* Lemke pivots at the final half-width (0: the active-set
                                iteration found the state without the LCP) */
