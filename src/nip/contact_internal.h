@@ -81,6 +81,7 @@ struct rs_nip_contact {
   signed char *A_state;      /* the stick/slip rows A was last assembled with (2 (M-1)) */
   int A_valid;               /* A holds an assembly (its untouched entries are zero) */
   rs_nipc_lin lin;
+  int defer_cond;            /* the load search: the condition number of its last state only */
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
   long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
   signed char *visited;      /* max_iterations states of 2(M-1) */

@@ -212,6 +212,35 @@ static rs_status load_step(load_search *ls, double x, double f, const rs_nip_sol
   return RS_OK;
 }
 
+/* The search's half-widths from x until P(a) meets load_rtol. Only the state it ends with
+ * is reported, so the condition number is estimated for that one alone (the earlier states
+ * are screened by the factorizations' pivots and the rank-k correction's conditioning). */
+static rs_status search(rs_nip_contact *nc, double Ti, load_search *ls, double *x, double *f,
+                        rs_nip_solution *out)
+{
+  rs_status st = RS_OK;
+  nc->defer_cond = 1;
+  for (;;) {
+    st = load_misfit(nc, Ti, ls, *x, out, f);
+    if (st || fabs(*f) <= nc->cfg.load_rtol) break;
+    if (ls->evals >= 80) {
+      st = RS_ERROR(RS_ERR_SOLVER, "load search for nip.load = %g N/m did not converge in %d "
+                    "half-widths (last a = %g m, P(a) = %g N/m)", ls->P, ls->evals, exp(*x), out->load);
+      break;
+    }
+    st = load_step(ls, *x, *f, out, x);
+    if (st) break;
+  }
+  nc->defer_cond = 0;
+  if (st) return st;
+  st = rs_nipc_lin_cond(nc, out->a, &out->condition_number);
+  if (st) {
+    nc->have_warm = 0;
+    return rs_error_wrap("converged stick/slip state at a = %g m", out->a);
+  }
+  return RS_OK;
+}
+
 rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_nip_solution *out)
 {
   if (!nc || !out) return RS_ERROR(RS_ERR_INPUT, "NULL argument");
@@ -233,16 +262,8 @@ rs_status rs_nip_contact_solve_load(rs_nip_contact *nc, double P, double Ti, rs_
   if (nc->hist_n > 0 && nc->warm_slope > 0.5 && nc->warm_slope < 4) ls.slope = first_slope(nc, Rs);
   if (!(a0 > 0) || !isfinite(a0)) a0 = 1e-3 * amax;
   double x = fmin(fmax(log(a0), ls.xmin), ls.xmax), f = 0;
-  for (;;) {
-    rs_status st = load_misfit(nc, Ti, &ls, x, out, &f);
-    if (st) return st;
-    if (fabs(f) <= nc->cfg.load_rtol) break;
-    if (ls.evals >= 80)
-      return RS_ERROR(RS_ERR_SOLVER, "load search for nip.load = %g N/m did not converge in %d "
-                      "half-widths (last a = %g m, P(a) = %g N/m)", P, ls.evals, exp(x), out->load);
-    st = load_step(&ls, x, f, out, &x);
-    if (st) return st;
-  }
+  rs_status st = search(nc, Ti, &ls, &x, &f, out);
+  if (st) return st;
   out->width_iterations = ls.evals;
   out->total_solves = ls.solves;
   out->E_r = 0;

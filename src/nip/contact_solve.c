@@ -377,7 +377,7 @@ rs_status rs_nipc_solve_fixed(rs_nip_contact *nc, double a, double Ti, rs_nip_so
   st = iterate(nc, a, Ti, nc->cfg.max_iterations, srate_all, next, &it);
   if (st == RS_ERR_SOLVER && it < nc->cfg.max_iterations && !cold_lcp)
     st = retry_from_lcp(nc, a, Ti, srate_all, next, lcp, &it, &pivots);
-  if (!st) {
+  if (!st && !nc->defer_cond) {
     st = rs_nipc_lin_cond(nc, a, &cond);
     if (st) rs_error_wrap("converged stick/slip state at a = %g m", a);
   }
