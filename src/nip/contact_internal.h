@@ -82,6 +82,8 @@ struct rs_nip_contact {
   int A_valid;               /* A holds an assembly (its untouched entries are zero) */
   rs_nipc_lin lin;
   int defer_cond;            /* the load search: the condition number of its last state only */
+  int stiff_body_terms;      /* the default series: a much stiffer body takes fewer terms
+                                (contact.c, body_terms) */
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
   long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
   signed char *visited;      /* max_iterations states of 2(M-1) */

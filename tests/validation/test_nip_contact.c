@@ -893,6 +893,47 @@ static void warm_search_along_reel(void)
   rs_nip_contact_destroy(&nc);
 }
 
+/* The default series gives a body much stiffer than the other fewer terms (contact.c,
+ * body_terms): the steel drum under the newsprint roll (H11 4e4 times smaller) 64 instead of
+ * 256. The reference is the same nip with nip.terms = 256 given, which holds for both
+ * bodies: T0 and the half-width agree far inside the load search's tolerance (1e-6). */
+static void stiff_drum_terms(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64), full = sp;
+  full.terms = 256;
+  double worst_T0 = 0, worst_a = 0;
+  long drum_terms = 0, roll_terms = 0;
+  for (int k = 0; k < 3; ++k) {
+    rs_nip_state st = {0.08 + 0.15 * k, 0.0762, 350, 1750, 0, 2e5};
+    rs_nip_contact *nc = NULL, *ref = NULL;
+    rs_nip_solution w = {0}, r = {0};
+    CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+    CHECK(rs_nip_contact_create_from_spec(&full, &m, &ref) == RS_OK);
+    /* the load search's tolerance tightened, so that the comparison sees the kernels */
+    nc->cfg.load_rtol = ref->cfg.load_rtol = 1e-12;
+    CHECK(rs_nip_contact_solve_state(nc, &st, &w) == RS_OK);
+    CHECK(rs_nip_contact_solve_state(ref, &st, &r) == RS_OK);
+    worst_T0 = fmax(worst_T0, fabs(w.T0 / r.T0 - 1));
+    worst_a = fmax(worst_a, fabs(w.a / r.a - 1));
+    drum_terms = nc->ker[1][KP].terms;
+    roll_terms = nc->ker[0][KP].terms;
+    CHECK(ref->ker[1][KP].terms == 256 && ref->ker[0][KP].terms == 256);
+    CHECK(nc->ker[1][KQU].terms == drum_terms && nc->ker[1][KQE].terms == drum_terms);
+    rs_nip_solution_free(&w);
+    rs_nip_solution_free(&r);
+    rs_nip_contact_destroy(&nc);
+    rs_nip_contact_destroy(&ref);
+  }
+  CHECK_LOG("drum terms", (double)drum_terms);
+  CHECK_LOG("roll terms", (double)roll_terms);
+  CHECK_LOG("largest |T0 / T0_256 - 1|", worst_T0);
+  CHECK_LOG("largest |a / a_256 - 1|", worst_a);
+  CHECK(drum_terms == 64 && roll_terms == 256);
+  CHECK_LT(worst_T0, 1e-7);
+  CHECK_LT(worst_a, 1e-7);
+}
+
 static const check_case cases[] = {
     {"equilibrium_center", equilibrium_center},
     {"equilibrium_surface", equilibrium_surface},
@@ -914,5 +955,6 @@ static const check_case cases[] = {
     {"bad_input", bad_input},
     {"iteration_cap", iteration_cap},
     {"warm_equals_cold", warm_equals_cold},
-    {"warm_search_along_reel", warm_search_along_reel}};
+    {"warm_search_along_reel", warm_search_along_reel},
+    {"stiff_drum_terms", stiff_drum_terms}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
