@@ -104,6 +104,15 @@ static void rotate(int K, double *restrict c, double *restrict s, const double *
   }
 }
 
+/* (c, s) <- cos, sin of n t from the library functions (the rotation's restart) */
+static void reseed(int K, const double *t, long n, double *c, double *s)
+{
+  for (int k = 0; k < K; ++k) {
+    c[k] = cos((double)n * t[k]);
+    s[k] = sin((double)n * t[k]);
+  }
+}
+
 /* Adds modes n1..n2 to the partial sums of the requested kernels (cos: pu, pe; sin: qu,
  * qe). cos/sin(n t) advance by rotation, restarted from the library functions every 256
  * modes (error growth stays ~ 256 eps). */
@@ -116,11 +125,7 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
   const int cpu = !!(what & RS_KERNEL_PU), cpe = !!(what & RS_KERNEL_PE);
   const int squ = !!(what & RS_KERNEL_QU), sqe = !!(what & RS_KERNEL_QE);
   for (long n = n1; n <= n2; ++n) {
-    if ((n - n1) % 256 == 0)
-      for (int k = 0; k < K; ++k) {
-        c[k] = cos((double)n * wk->t[k]);
-        s[k] = sin((double)n * wk->t[k]);
-      }
+    if ((n - n1) % 256 == 0) reseed(K, wk->t, n, c, s);
     const double(*F)[2] = cyl->cache[n].F;
     double in = 1.0 / (double)n, an = rs_cyl_basis_coef(basis, w, n);
     double mpu = F[0][0] * in, mpe = F[1][0] - F[0][0] * in;
@@ -371,11 +376,7 @@ static void add_modes_shear(const rs_cylinder *cyl, double wb, double wh, int ac
   const int K = bx->K;
   double *c = bx->c, *s = bx->s, *aqu = bx->acc[KQU], *aqe = hx->acc[KQE];
   for (long n = n1; n <= n2; ++n) {
-    if ((n - n1) % 256 == 0)
-      for (int k = 0; k < K; ++k) {
-        c[k] = cos((double)n * bx->t[k]);
-        s[k] = sin((double)n * bx->t[k]);
-      }
+    if ((n - n1) % 256 == 0) reseed(K, bx->t, n, c, s);
     const double(*F)[2] = cyl->cache[n].F;
     double in = 1.0 / (double)n;
     double ab = rs_cyl_basis_coef(RS_BASIS_BOX, wb, n), ah = rs_cyl_basis_coef(RS_BASIS_HAT, wh, n);
