@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
 #include "util/error.h"
 
 /* The decay over one layer is exp(d), d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
@@ -37,13 +38,14 @@ void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, i
    * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
    * operations, not five) and the pass that follows at the sums. The flag
    * is a compare mask as wide as a double, so that the OR stays in the vector registers */
-  int64_t bad = 0;
+  uint64_t bad = 0;
+  const uint64_t limit = rs_double_bits(0.0299);
   for (int j = lo; j < top; ++j) {
     const double d = L[j] - L[j + 1];
-    bad |= -(int64_t)(fabs(d) >= 0.0299);
+    bad |= rs_flag_not_below(d, limit);
     e[j] = roll_exp_small(d);
   }
-  if (bad)
+  if (rs_flag_raised(bad))
     for (int j = lo; j < top; ++j)
       if (!(e[j] > 0.9705 && e[j] < 1.0304)) e[j] = roll_exp_step(L[j] - L[j + 1]);
   const int n = top - lo;

@@ -12,6 +12,7 @@
 
 #include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
 #include "roll/vector2.h"
 #include "util/error.h"
 #include "util/log_vec.h"
@@ -127,13 +128,13 @@ void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->ode.lg2;
   const double *restrict E = roll->ode.Er, Eth = roll->p.E_theta;
-  int64_t odd = 0;
+  uint64_t odd = 0;
   for (int j = lo; j <= hi; ++j) {
     const double g2 = Eth / E[j];
-    odd |= (int64_t)!(g2 >= DBL_MIN) | (int64_t)(g2 > DBL_MAX);
+    odd |= rs_flag_not_positive_normal(g2);
     lg[j] = rs_log_positive(g2);
   }
-  for (int j = lo; odd && j <= hi; ++j) {
+  for (int j = lo; rs_flag_raised(odd) && j <= hi; ++j) {
     const double g2 = Eth / E[j];
     if (!(g2 >= DBL_MIN && g2 <= DBL_MAX)) lg[j] = log(g2);
   }
@@ -226,9 +227,9 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
     const double *restrict E = roll->ode.Er;
-    int64_t bad = 0; /* a double's width: the OR stays in the vector registers */
-    for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
-    for (int j = lo; bad && j < hi; ++j)
+    uint64_t bad = 0;
+    for (int j = lo; j < hi; ++j) bad |= rs_flag_not_positive_finite(E[j]);
+    for (int j = lo; rs_flag_raised(bad) && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return roll_modulus_refused(roll, j);
   }
