@@ -5,6 +5,7 @@
 
 #include "util/bracket.h"
 #include "util/float_flags.h"
+#include "util/vector_clones.h"
 
 #include "reelsim/material.h"
 #include "util/error.h"
@@ -138,7 +139,7 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
 /* rs_radial_modulus_n at P = -sigma, checked. The check's flag is as wide as a double's
  * compare mask, so that it stays in the vector registers; the loops are the same
  * operations as rs_radial_modulus_n's, so the same moduli bit for bit. */
-int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict sigma,
+RS_VECTOR_CLONES static int modulus_stress_pass(const rs_radial_law *law, const double *restrict sigma,
                                double *restrict P, double *restrict E, int n)
 {
   uint64_t bad = 0; /* the checks' flags from the moduli's bits: the loops vectorise */
@@ -166,6 +167,12 @@ int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict 
   for (int i = 0; rs_flag_raised(bad) && i < n; ++i)
     if (!(E[i] > 0.0 && E[i] < INFINITY)) return i;
   return -1;
+}
+
+int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict sigma,
+                               double *restrict P, double *restrict E, int n)
+{
+  return modulus_stress_pass(law, sigma, P, E, n);
 }
 
 /* E_r(P), Pa:

@@ -7,6 +7,7 @@
 
 #include "roll/roll_internal.h"
 #include "util/float_flags.h"
+#include "util/vector_clones.h"
 #include "util/error.h"
 
 /* The decay over one layer is exp(d), d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
@@ -30,8 +31,8 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
  * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
  * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
-void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
-                     roll_segments *seg)
+RS_VECTOR_CLONES static void roll_decays_pass(const double *restrict L, double *restrict e, int lo, int top,
+                         roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
@@ -95,6 +96,12 @@ void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, i
   *seg = (roll_segments){4, {b0, b1, b2, b3, top}, {0.0, 0.0, p3, 1.0}, {M0, M1, M2, M3}};
   seg->s[1] = seg->s[2] * p2;
   seg->s[0] = seg->s[1] * p1;
+}
+
+void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
+                         roll_segments *seg)
+{
+  roll_decays_pass(L, e, lo, top, seg);
 }
 
 /* rsi_roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a

@@ -16,6 +16,7 @@
 #include "roll/vector2.h"
 #include "util/error.h"
 #include "util/log_vec.h"
+#include "util/vector_clones.h"
 #include "util/sundials_compat.h"
 
 /* ln g^2 at node j: from the pass over the integration's nodes (rsi_roll_lg2_range), or else
@@ -124,7 +125,7 @@ double rsi_roll_layer_coord_at(rs_roll *roll, double x)
  * below 2.2e-308 of it) takes log() instead, as the lazy path does: an infinite g^2 gives
  * the right-hand side the infinity that makes CVODE say so (the flag is a compare mask as
  * wide as a double: it stays in the vector registers) */
-void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
+RS_VECTOR_CLONES static void roll_lg2_pass(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->ode.lg2;
   const double *restrict E = roll->ode.Er, Eth = roll->p.E_theta;
@@ -141,6 +142,11 @@ void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
   roll->ode.lg2_lo = lo;
   roll->ode.lg2_hi = hi;
   roll->ode.lg2_range_epoch = roll->ode.epoch;
+}
+
+void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
+{
+  roll_lg2_pass(roll, lo, hi);
 }
 
 /* g^2 at x for the error correction's look inside a step, on a copy of the right-hand

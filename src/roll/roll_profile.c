@@ -25,6 +25,7 @@
 
 #include "roll/roll_internal.h"
 #include "util/float_flags.h"
+#include "util/vector_clones.h"
 
 /* the profile's block of nodes (its moduli a block at a time) */
 enum { RS_PROFILE_BLOCK = 256 };
@@ -99,7 +100,7 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
  * where the Taylor sums hold, in a loop over arrays passed as such, that vectorises;
  * returns a flag raised (rs_flag_raised) when some layer's sums do not hold (the caller does
  * those again) */
-static uint64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
+RS_VECTOR_CLONES static uint64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
                                   double *restrict Cf, double *restrict A, double *restrict B)
@@ -138,7 +139,7 @@ static uint64_t roll_profile_inner(int in, int top, const double *restrict d, co
  * between the nodes would be 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
-int rsi_roll_profile_build(rs_roll *roll, int from, int top)
+RS_VECTOR_CLONES static int roll_profile_pass(rs_roll *roll, int from, int top)
 {
   double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->ref.shape_e;
@@ -201,6 +202,11 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   if (nan || m != m) m = NAN;
   roll->prof.max = m;
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
+}
+
+int rsi_roll_profile_build(rs_roll *roll, int from, int top)
+{
+  return roll_profile_pass(roll, from, top);
 }
 
 /* The start-node search's error bound for a start s0 (rsi_roll_reuse_start), in units of T0/s,
