@@ -14,8 +14,11 @@ echo "== tests (build/) =="
 (cd build && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)
 
 echo "== tests under AddressSanitizer + UBSan (build-asan/) =="
+# built for the baseline x86-64 (REELSIM_SIMD off), as the portable build is: its functions
+# compiled for both AVX2 and the baseline (src/util/vector_clones.h) run here too
 RS_BUILD_DIR=build-asan RS_BUILD_TYPE=Debug \
-  RS_CMAKE_ARGS="-DREELSIM_SANITIZE=ON -DREELSIM_BENCH=OFF" bash scripts/setup.sh
+  RS_CMAKE_ARGS="-DREELSIM_SANITIZE=ON -DREELSIM_BENCH=OFF -DREELSIM_SIMD=OFF" \
+  bash scripts/setup.sh
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 (cd build-asan && ctest --output-on-failure -j "$(nproc)" | tee ctest-summary.log)

@@ -4,6 +4,8 @@
 #include <stdint.h>
 
 #include "util/bracket.h"
+#include "util/float_flags.h"
+#include "util/vector_clones.h"
 
 #include "reelsim/material.h"
 #include "util/error.h"
@@ -137,17 +139,17 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
 /* rs_radial_modulus_n at P = -sigma, checked. The check's flag is as wide as a double's
  * compare mask, so that it stays in the vector registers; the loops are the same
  * operations as rs_radial_modulus_n's, so the same moduli bit for bit. */
-int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict sigma,
+RS_VECTOR_CLONES static int modulus_stress_pass(const rs_radial_law *law, const double *restrict sigma,
                                double *restrict P, double *restrict E, int n)
 {
-  int64_t bad = 0;
+  uint64_t bad = 0; /* the checks' flags from the moduli's bits: the loops vectorise */
   if (law->law == RS_RADIAL_PFEIFFER) {
     const double K1 = law->K1, K2 = law->K2;
     for (int i = 0; i < n; ++i) {
       const double p = -sigma[i], v = pfeiffer_modulus(K1, K2, p);
       P[i] = p;
       E[i] = v;
-      bad |= (int64_t)!(v > 0.0) | (int64_t)!(v < INFINITY);
+      bad |= rs_flag_not_positive_finite(v);
     }
   } else if (law->law == RS_RADIAL_HAKIEL && law->n_coef == 3) {
     const double c0 = law->C[0], c1 = law->C[1], c2 = law->C[2];
@@ -155,16 +157,22 @@ int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict 
       const double p = -sigma[i], q = p > 0.0 ? p : 0.0, v = c0 + q * (c1 + q * c2);
       P[i] = p;
       E[i] = v;
-      bad |= (int64_t)!(v > 0.0) | (int64_t)!(v < INFINITY);
+      bad |= rs_flag_not_positive_finite(v);
     }
   } else {
     for (int i = 0; i < n; ++i) P[i] = -sigma[i];
     rs_radial_modulus_n(law, P, E, n);
-    for (int i = 0; i < n; ++i) bad |= (int64_t)!(E[i] > 0.0) | (int64_t)!(E[i] < INFINITY);
+    for (int i = 0; i < n; ++i) bad |= rs_flag_not_positive_finite(E[i]);
   }
-  for (int i = 0; bad && i < n; ++i)
+  for (int i = 0; rs_flag_raised(bad) && i < n; ++i)
     if (!(E[i] > 0.0 && E[i] < INFINITY)) return i;
   return -1;
+}
+
+int rs_radial_modulus_stress_n(const rs_radial_law *law, const double *restrict sigma,
+                               double *restrict P, double *restrict E, int n)
+{
+  return modulus_stress_pass(law, sigma, P, E, n);
 }
 
 /* E_r(P), Pa:

@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
+#include "util/vector_clones.h"
 #include "util/error.h"
 
 /* The decay over one layer is exp(d), d = L_j - L_{j+1} = -int w dx, |d| ~ w t / r, small:
@@ -29,21 +31,22 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
  * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
  * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
-void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
-                     roll_segments *seg)
+RS_VECTOR_CLONES static void roll_decays_pass(const double *restrict L, double *restrict e, int lo, int top,
+                         roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
    * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
    * operations, not five) and the pass that follows at the sums. The flag
    * is a compare mask as wide as a double, so that the OR stays in the vector registers */
-  int64_t bad = 0;
+  uint64_t bad = 0;
+  const uint64_t limit = rs_double_bits(0.0299);
   for (int j = lo; j < top; ++j) {
     const double d = L[j] - L[j + 1];
-    bad |= -(int64_t)(fabs(d) >= 0.0299);
+    bad |= rs_flag_not_below(d, limit);
     e[j] = roll_exp_small(d);
   }
-  if (bad)
+  if (rs_flag_raised(bad))
     for (int j = lo; j < top; ++j)
       if (!(e[j] > 0.9705 && e[j] < 1.0304)) e[j] = roll_exp_step(L[j] - L[j + 1]);
   const int n = top - lo;
@@ -93,6 +96,12 @@ void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, i
   *seg = (roll_segments){4, {b0, b1, b2, b3, top}, {0.0, 0.0, p3, 1.0}, {M0, M1, M2, M3}};
   seg->s[1] = seg->s[2] * p2;
   seg->s[0] = seg->s[1] * p1;
+}
+
+void rsi_roll_decays_raw(const double *restrict L, double *restrict e, int lo, int top,
+                         roll_segments *seg)
+{
+  roll_decays_pass(L, e, lo, top, seg);
 }
 
 /* rsi_roll_decays_raw, each segment then scaled and what fell below 1e-290 cleared; returns a

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/vector_clones.h"
 #include "util/error.h"
 
 /* The state (w, L) at x with its first two x-derivatives, from the equations:
@@ -64,7 +65,7 @@ static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const
 
 /* (w, L) at the n nodes x[0..n) inside the step (plain loops over arrays: they vectorise).
  * With w NULL, L alone (w kept as the step's quintic: roll_wstep_keep). */
-static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
+RS_VECTOR_CLONES static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
                               double *restrict L, int n)
 {
   if (w) roll_quintic_fill_w(q->a, q->inv_h, q->cw, x, w, n);

@@ -10,10 +10,11 @@
 #include <math.h>
 
 #include "roll/roll_internal.h"
+#include "util/vector_clones.h"
 
 /* The increment of one layer of tension T0 (N/m) wound onto the roll, from the integration
  * just done, committed (rs_roll_add_layers' step for m = 1). */
-rs_status rsi_roll_add_one(rs_roll *roll, double T0)
+RS_VECTOR_CLONES static rs_status roll_add_one_pass(rs_roll *roll, double T0)
 {
   const int k_old = roll->n, k = k_old + 1, bottom = k_old + 1 - roll->shift;
   const int lo = roll->ref.start;
@@ -58,4 +59,9 @@ rs_status rsi_roll_add_one(rs_roll *roll, double T0)
   sr[k - 1] = 0.0;      /* the new layer's outer face is free */
   roll->hoop_stale = 1; /* the hoop stresses follow from the radial ones when read */
   return RS_OK;
+}
+
+rs_status rsi_roll_add_one(rs_roll *roll, double T0)
+{
+  return roll_add_one_pass(roll, T0);
 }

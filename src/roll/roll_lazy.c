@@ -18,6 +18,7 @@
 #include <stdlib.h>
 
 #include "roll/roll_internal.h"
+#include "util/vector_clones.h"
 
 /* sr[j - 1] += e_j (c + c2 p_L,j) for the nodes [lo, hi), lo >= 1 (c e_j alone where c2 is
  * 0: an uncorrected deep part): arrays passed as such, so that it vectorises */
@@ -32,9 +33,14 @@ static void roll_shape_add_n(double *restrict sr, const double *restrict e,
 
 /* the radial stresses of the nodes [lo, hi) (lo >= 1) take c x shape + c2 x shape x prof_L:
  * a deep part below an increment's start, or nodes leaving or joining the lazy zone */
-void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
+RS_VECTOR_CLONES static void roll_shape_add_pass(rs_roll *roll, int lo, int hi, double c, double c2)
 {
   roll_shape_add_n(roll->sigma_r, roll->ref.shape_e, roll->prof.L, lo, hi, c, c2);
+}
+
+void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2)
+{
+  roll_shape_add_pass(roll, lo, hi, c, c2);
 }
 
 /* stored += scale x shape (+ scale2 x shape x prof_L) over the nodes [lo, hi) (node 0: the
@@ -83,7 +89,7 @@ enum { RS_FREEZE_BLOCK = 256 };
 
 /* Nodes [F, to) become lazy; their modulus E_r (roll->ode.Er) and the reference's (Er_ref) are
  * current, and the reference's shape covers them. */
-void rsi_roll_lazy_freeze(rs_roll *roll, int to)
+RS_VECTOR_CLONES static void roll_lazy_freeze_pass(rs_roll *roll, int to)
 {
   const int F = roll->lazy.top;
   /* C sums the increments since it was last 0. A node wound after that was above some of
@@ -121,6 +127,11 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
   }
   if (C != 0.0 || roll->lazy.c2 != 0.0) roll_lazy_shift(roll, F, to, -C, -roll->lazy.c2);
   roll->lazy.top = to;
+}
+
+void rsi_roll_lazy_freeze(rs_roll *roll, int to)
+{
+  roll_lazy_freeze_pass(roll, to);
 }
 
 /* sigma_r at node j (0: the core), lazy or not */

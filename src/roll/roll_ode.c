@@ -12,9 +12,11 @@
 
 #include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
 #include "roll/vector2.h"
 #include "util/error.h"
 #include "util/log_vec.h"
+#include "util/vector_clones.h"
 #include "util/sundials_compat.h"
 
 /* ln g^2 at node j: from the pass over the integration's nodes (rsi_roll_lg2_range), or else
@@ -123,23 +125,28 @@ double rsi_roll_layer_coord_at(rs_roll *roll, double x)
  * below 2.2e-308 of it) takes log() instead, as the lazy path does: an infinite g^2 gives
  * the right-hand side the infinity that makes CVODE say so (the flag is a compare mask as
  * wide as a double: it stays in the vector registers) */
-void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
+RS_VECTOR_CLONES static void roll_lg2_pass(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->ode.lg2;
   const double *restrict E = roll->ode.Er, Eth = roll->p.E_theta;
-  int64_t odd = 0;
+  uint64_t odd = 0;
   for (int j = lo; j <= hi; ++j) {
     const double g2 = Eth / E[j];
-    odd |= (int64_t)!(g2 >= DBL_MIN) | (int64_t)(g2 > DBL_MAX);
+    odd |= rs_flag_not_positive_normal(g2);
     lg[j] = rs_log_positive(g2);
   }
-  for (int j = lo; odd && j <= hi; ++j) {
+  for (int j = lo; rs_flag_raised(odd) && j <= hi; ++j) {
     const double g2 = Eth / E[j];
     if (!(g2 >= DBL_MIN && g2 <= DBL_MAX)) lg[j] = log(g2);
   }
   roll->ode.lg2_lo = lo;
   roll->ode.lg2_hi = hi;
   roll->ode.lg2_range_epoch = roll->ode.epoch;
+}
+
+void rsi_roll_lg2_range(rs_roll *roll, int lo, int hi)
+{
+  roll_lg2_pass(roll, lo, hi);
 }
 
 /* g^2 at x for the error correction's look inside a step, on a copy of the right-hand
@@ -226,9 +233,9 @@ static rs_status roll_modulus_range(rs_roll *roll, int lo, int hi)
   const rs_radial_kind law = roll->p.radial.law;
   if (law != RS_RADIAL_LINEAR && law != RS_RADIAL_PFEIFFER) {
     const double *restrict E = roll->ode.Er;
-    int64_t bad = 0; /* a double's width: the OR stays in the vector registers */
-    for (int j = lo; j < hi; ++j) bad |= (int64_t)!(E[j] > 0.0) | (int64_t)!(E[j] < INFINITY);
-    for (int j = lo; bad && j < hi; ++j)
+    uint64_t bad = 0;
+    for (int j = lo; j < hi; ++j) bad |= rs_flag_not_positive_finite(E[j]);
+    for (int j = lo; rs_flag_raised(bad) && j < hi; ++j)
       if (!(E[j] > 0.0 && E[j] < INFINITY))
         return roll_modulus_refused(roll, j);
   }

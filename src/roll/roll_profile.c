@@ -24,6 +24,8 @@
 #include <stdlib.h>
 
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
+#include "util/vector_clones.h"
 
 /* the profile's block of nodes (its moduli a block at a time) */
 enum { RS_PROFILE_BLOCK = 256 };
@@ -96,17 +98,19 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
 
 /* roll_profile_layer for the layers in..top-2 (in >= 1: both neighbours' slopes centred)
  * where the Taylor sums hold, in a loop over arrays passed as such, that vectorises;
- * returns nonzero when some layer's sums do not hold (the caller does those again) */
-static int64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
+ * returns a flag raised (rs_flag_raised) when some layer's sums do not hold (the caller does
+ * those again) */
+RS_VECTOR_CLONES static uint64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
                                   const double *restrict E, const double *restrict w,
                                   const double *restrict x, double Eth, double *restrict Q,
                                   double *restrict Cf, double *restrict A, double *restrict B)
 {
-  int64_t wide = 0; /* as wide as a double's compare mask: the OR stays in vector registers */
+  uint64_t wide = 0; /* from the bits (util/float_flags.h): the loop vectorises */
+  const uint64_t limit = rs_double_bits(0.03);
   for (int j = in; j + 1 < top; ++j) {
     const double h = x[j + 1] - x[j], z = (2.0 + (w[j] + w[j + 1])) * h;
     const double dv = 0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1]);
-    wide |= -(int64_t)(fabs(z) >= 0.03) | -(int64_t)(fabs(dv) >= 0.03); /* NaN: prof.top -1 */
+    wide |= rs_flag_not_below(z, limit) | rs_flag_not_below(dv, limit); /* NaN: prof.top -1 */
     double q, cf, a, b; /* locals, stored after: the loop vectorises */
     roll_profile_coef(h, z, 1, Eth / E[j], Eth / E[j + 1], roll_exp_small(dv), u[j], u[j + 1],
                       0.5 * (u[j + 1] - u[j - 1]), 0.5 * (u[j + 2] - u[j]), &q, &cf, &a, &b);
@@ -135,7 +139,7 @@ static int64_t roll_profile_inner(int in, int top, const double *restrict d, con
  * between the nodes would be 2 % off. Each layer's coefficients in a pass that vectorises (the
  * Taylor sums, the layers that need exp() or log() done again after), then the recurrence:
  * two multiply-adds a node on the critical path, the two chains side by side. */
-int rsi_roll_profile_build(rs_roll *roll, int from, int top)
+RS_VECTOR_CLONES static int roll_profile_pass(rs_roll *roll, int from, int top)
 {
   double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
   const double *restrict w = roll->w, *restrict x = roll->xnode, *restrict e = roll->ref.shape_e;
@@ -153,13 +157,13 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
     rsi_roll_modulus_probe(roll, P, Pp, Ep, b0, b0 + nb);
     for (int j = b0; j < b0 + nb; ++j) u[j] = (Ep[j] - E[j]) / (E[j] * (Pp[j] - P[j])) * e[j];
   }
-  /* flags as wide as a double's compare mask: the ORs stay in the vector registers */
-  int64_t wide = 0;
+  /* |dE| >= 0.015 (E_j + E_j+1) as the difference's sign (it is not -0: |dE| is not) */
+  uint64_t wide = 0;
   for (int j = lo; j < top; ++j) {
-    wide |= -(int64_t)(fabs(E[j] - E[j + 1]) >= 0.015 * (E[j] + E[j + 1]));
+    wide |= rs_flag_not_below_zero(fabs(E[j] - E[j + 1]) - 0.015 * (E[j] + E[j + 1]));
     d[j] = roll_log_ratio_small((E[j] - E[j + 1]) / (E[j] + E[j + 1]));
   }
-  for (int j = lo; wide && j < top; ++j)
+  for (int j = lo; rs_flag_raised(wide) && j < top; ++j)
     if (!(fabs(E[j] - E[j + 1]) < 0.015 * (E[j] + E[j + 1]))) d[j] = log(E[j] / E[j + 1]);
   /* the layers inside (their neighbours' slopes both centred) in a loop that vectorises,
    * the end layers on their own; then the layers whose Taylor sums do not hold */
@@ -169,7 +173,7 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   if (top - 1 > 0 && top - 1 >= from)
     roll_profile_layer(top - 1, top, d, u, E, w, x, Eth, Q + top - 1, Cf + top - 1,
                        A + top - 1, B + top - 1);
-  for (int j = in; wide && j + 1 < top; ++j) {
+  for (int j = in; rs_flag_raised(wide) && j + 1 < top; ++j) {
     const double z = (2.0 + (w[j] + w[j + 1])) * (x[j + 1] - x[j]);
     if (!(fabs(z) < 0.03 && fabs(0.5 * d[j] + 0.0625 * (d[j - 1] - d[j + 1])) < 0.03))
       roll_profile_layer(j, top, d, u, E, w, x, Eth, Q + j, Cf + j, A + j, B + j);
@@ -198,6 +202,11 @@ int rsi_roll_profile_build(rs_roll *roll, int from, int top)
   if (nan || m != m) m = NAN;
   roll->prof.max = m;
   return isfinite(m) ? top : -1; /* a profile that is not finite corrects nothing */
+}
+
+int rsi_roll_profile_build(rs_roll *roll, int from, int top)
+{
+  return roll_profile_pass(roll, from, top);
 }
 
 /* The start-node search's error bound for a start s0 (rsi_roll_reuse_start), in units of T0/s,
