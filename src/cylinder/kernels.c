@@ -16,6 +16,7 @@
 
 #include "util/cancel.h"
 #include "util/error.h"
+#include "util/vector_clones.h"
 
 enum { KPU, KPE, KQU, KQE, NK };
 
@@ -93,7 +94,7 @@ static void sweep2(int K, double *restrict a, double ma, double *restrict b, dou
 }
 
 /* (c, s) <- (c cos t - s sin t, s cos t + c sin t): cos and sin of (n + 1) t */
-static void rotate(int K, double *restrict c, double *restrict s, const double *restrict ct,
+RS_VECTOR_CLONES static void rotate(int K, double *restrict c, double *restrict s, const double *restrict ct,
                    const double *restrict st)
 {
   K &= ~3;

@@ -17,6 +17,7 @@
  * it. The result is used only as an active set: contact_solve.c re-solves and checks it. */
 #include "nip/contact_internal.h"
 #include "util/error.h"
+#include "util/vector_clones.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -32,7 +33,7 @@ static double pbar_of(int M, const double *y, int e)
 }
 
 /* x -= f y over a padded row (n a multiple of 4: -O2 vectorises it) */
-static void row_update(int n, double *restrict x, double f, const double *restrict y)
+RS_VECTOR_CLONES static void row_update(int n, double *restrict x, double f, const double *restrict y)
 {
   n &= ~3;
   for (int j = 0; j < n; ++j) x[j] -= f * y[j];

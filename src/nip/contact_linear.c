@@ -23,6 +23,7 @@
 #include "nip/contact_internal.h"
 #include "util/error.h"
 #include "util/sundials_compat.h"
+#include "util/vector_clones.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -112,8 +113,9 @@ static void axpy_col(int n, double *restrict y, double s, const double *restrict
 
 /* y += A(:, c..c+3) x(c..c+3): four columns a sweep, so y is loaded and stored once for
  * four (the product is ~half of a GMRES iteration's work) */
-static void axpy4_col(int n, double *restrict y, const double *restrict x, const double *restrict a0,
-                      const double *restrict a1, const double *restrict a2, const double *restrict a3)
+RS_VECTOR_CLONES static void axpy4_col(int n, double *restrict y, const double *restrict x,
+                                        const double *restrict a0, const double *restrict a1,
+                                        const double *restrict a2, const double *restrict a3)
 {
   const double x0 = x[0], x1 = x[1], x2 = x[2], x3 = x[3];
   int n4 = n & ~3;

@@ -5,15 +5,25 @@
  * preconditioner of every GMRES iteration, docs/performance.md). The same arithmetic up
  * to the order of the sums. */
 #include "nip/contact_internal.h"
+#include "util/vector_clones.h"
 
 /* y(0..m-1) -= a0 x0 + a1 x1 + a2 x2 + a3 x3 (vectorised: restrict, a multiple of 4 first) */
-void rs_nipc_sub4(int m, double *restrict y, double x0, double x1, double x2, double x3,
-                 const double *restrict a0, const double *restrict a1, const double *restrict a2,
-                 const double *restrict a3)
+RS_VECTOR_CLONES static void nipc_sub4_pass(int m, double *restrict y, double x0, double x1,
+                                             double x2, double x3, const double *restrict a0,
+                                             const double *restrict a1,
+                                             const double *restrict a2,
+                                             const double *restrict a3)
 {
   int m4 = m & ~3;
   for (int i = 0; i < m4; ++i) y[i] -= (a0[i] * x0 + a1[i] * x1) + (a2[i] * x2 + a3[i] * x3);
   for (int i = m4; i < m; ++i) y[i] -= (a0[i] * x0 + a1[i] * x1) + (a2[i] * x2 + a3[i] * x3);
+}
+
+void rs_nipc_sub4(int m, double *restrict y, double x0, double x1, double x2, double x3,
+                 const double *restrict a0, const double *restrict a1, const double *restrict a2,
+                 const double *restrict a3)
+{
+  nipc_sub4_pass(m, y, x0, x1, x2, x3, a0, a1, a2, a3);
 }
 
 void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x)
@@ -71,8 +81,10 @@ void rs_nipc_lu_solve(int n, const double *LU, const lapack_int *ipiv, double *x
 
 /* d[m] = sum_i c_m[i] x[i] for four columns c_0..c_3: x is loaded once for four, each sum
  * in four partial sums (lanes), so the sweep vectorises */
-void rs_nipc_dot4(int len, const double *restrict x, const double *restrict c0, const double *restrict c1,
-                 const double *restrict c2, const double *restrict c3, double d[4])
+RS_VECTOR_CLONES static void nipc_dot4_pass(int len, const double *restrict x,
+                                             const double *restrict c0, const double *restrict c1,
+                                             const double *restrict c2, const double *restrict c3,
+                                             double d[4])
 {
   double s0[4] = {0, 0, 0, 0}, s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0}, s3[4] = {0, 0, 0, 0};
   int m4 = len & ~3;
@@ -93,6 +105,12 @@ void rs_nipc_dot4(int len, const double *restrict x, const double *restrict c0, 
   d[1] = (s1[0] + s1[1]) + (s1[2] + s1[3]);
   d[2] = (s2[0] + s2[1]) + (s2[2] + s2[3]);
   d[3] = (s3[0] + s3[1]) + (s3[2] + s3[3]);
+}
+
+void rs_nipc_dot4(int len, const double *restrict x, const double *restrict c0, const double *restrict c1,
+                 const double *restrict c2, const double *restrict c3, double d[4])
+{
+  nipc_dot4_pass(len, x, c0, c1, c2, c3, d);
 }
 
 static double dot1(int len, const double *restrict c, const double *restrict x)
