@@ -14,17 +14,11 @@
 #include <string.h>
 
 #include "check.h"
+#include "splitmix.h"
 #include "util/float_flags.h"
 
-/* a deterministic 64-bit generator (splitmix64) */
 static uint64_t rng_state = 0x2545f4914f6cdd1du;
-static uint64_t rng(void)
-{
-  uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-  return z ^ (z >> 31);
-}
+static uint64_t rng(void) { return splitmix64(&rng_state); }
 
 static double from_bits(uint64_t u)
 {

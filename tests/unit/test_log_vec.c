@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "check.h"
+#include "splitmix.h"
 #include "util/log_vec.h"
 
 /* |a - b| in units of the last place of b (b = log(x), nonzero) */
@@ -26,15 +27,8 @@ static double ulps(double a, double b)
   return fabs(a - b) / u;
 }
 
-/* a deterministic 64-bit generator (splitmix64) */
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
-static uint64_t rng(void)
-{
-  uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-  return z ^ (z >> 31);
-}
+static uint64_t rng(void) { return splitmix64(&rng_state); }
 
 static void random_normals(void)
 {
