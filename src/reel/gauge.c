@@ -12,6 +12,7 @@
  * The web's Poisson strain through the thickness under its hoop stress (nu sigma_theta /
  * E_theta, ~1e-5) is left out, as the engine's compatibility cancels it. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,7 @@
 #include "reel/gauge.h"
 #include "reelsim/reel.h"
 #include "util/error.h"
+#include "util/vector_clones.h"
 
 enum { STRAIN_TABLE = 256 };
 
@@ -47,16 +49,39 @@ static void strain_table_fill(strain_table *tb, const rs_radial_law *law, double
   }
 }
 
+/* eps(P) of the table (its strains eps_t and slopes inv_t at the nodes Pmax (i/M)^2) for
+ * 0 <= P: the cubic Hermite of the interval P is in, extrapolated by the last above Pmax.
+ * One formula for a pressure and for an array of them (strain_table_eval_stress_n). */
+static inline double strain_table_at(const double *eps_t, const double *inv_t, double Pmax,
+                                     double P)
+{
+  int i = (int)(STRAIN_TABLE * sqrt(P / Pmax));
+  i = i < STRAIN_TABLE - 1 ? i : STRAIN_TABLE - 1;
+  const double s0 = (double)i / STRAIN_TABLE, s1 = (double)(i + 1) / STRAIN_TABLE;
+  const double a = Pmax * s0 * s0, h = Pmax * s1 * s1 - a, x = (P - a) / h;
+  const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+  const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+  return h00 * eps_t[i] + h10 * h * inv_t[i] + h01 * eps_t[i + 1] + h11 * h * inv_t[i + 1];
+}
+
 static double strain_table_eval(const strain_table *tb, double P)
 {
   if (!(P > 0.0) || !(tb->Pmax > 0.0)) return 0.0;
-  int i = (int)(STRAIN_TABLE * sqrt(P / tb->Pmax));
-  if (i >= STRAIN_TABLE) i = STRAIN_TABLE - 1;
-  const double s0 = (double)i / STRAIN_TABLE, s1 = (double)(i + 1) / STRAIN_TABLE;
-  const double a = tb->Pmax * s0 * s0, h = tb->Pmax * s1 * s1 - a, x = (P - a) / h;
-  const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
-  const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
-  return h00 * tb->eps[i] + h10 * h * tb->inv[i] + h01 * tb->eps[i + 1] + h11 * h * tb->inv[i + 1];
+  return strain_table_at(tb->eps, tb->inv, tb->Pmax, P);
+}
+
+/* out[j] = strain_table_eval(-sigma[j]) for j < n (Pmax > 0), the same operations in a loop
+ * over arrays that vectorises (gathers from the table: AVX2): a pressure at or below 0, or
+ * NaN, is read as 0, whose strain is 0 (the first node's eps_t[0] = 0, its other terms 0) */
+RS_VECTOR_CLONES static void strain_table_eval_stress_n(const double *restrict eps_t,
+                                                        const double *restrict inv_t, double Pmax,
+                                                        const double *restrict sigma,
+                                                        double *restrict out, int n)
+{
+  for (int j = 0; j < n; ++j) {
+    const double P = -sigma[j];
+    out[j] = strain_table_at(eps_t, inv_t, Pmax, P > 0.0 ? P : 0.0);
+  }
 }
 
 struct rs_reel_strain {
@@ -103,8 +128,14 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
   strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
   double r = pb->core.radius + rs_reel_core_displacement(pb, core_pressure);
   double P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
+  /* the strains of nodes 1..n-1 first, in one pass (out[j] holds node j + 1's until the sum
+   * writes it), unless out overlaps sigma_r (then node by node: the same values) */
+  const uintptr_t o = (uintptr_t)out, sg = (uintptr_t)sigma_r, bytes = (uintptr_t)n * sizeof(double);
+  const int batched = tb->Pmax > 0.0 && (o + bytes <= sg || sg + bytes <= o);
+  if (batched) strain_table_eval_stress_n(tb->eps, tb->inv, tb->Pmax, sigma_r, out, n - 1);
   for (int j = 0; j < n; ++j) {
-    const double P_out = j + 1 < n ? -sigma_r[j] : 0.0, e_out = strain_table_eval(tb, P_out);
+    const double P_out = j + 1 < n ? -sigma_r[j] : 0.0;
+    const double e_out = j + 1 >= n ? 0.0 : batched ? out[j] : strain_table_eval(tb, P_out);
     r += t * (1.0 - 0.5 * (e_in + e_out));
     if (film) r += rs_air_compressed_film(film[j], P_in, pa);
     out[j] = r;
