@@ -136,11 +136,12 @@ void rs_radial_modulus_n(const rs_radial_law *law, const double *restrict P, dou
   }
 }
 
-/* rs_radial_modulus_n at P = -sigma, checked. The check's flag is as wide as a double's
- * compare mask, so that it stays in the vector registers; the loops are the same
- * operations as rs_radial_modulus_n's, so the same moduli bit for bit. */
-RS_VECTOR_CLONES static int modulus_stress_pass(const rs_radial_law *law, const double *restrict sigma,
-                               double *restrict P, double *restrict E, int n)
+/* rs_radial_modulus_n at P = -sigma, checked. The check's flag is read from the moduli's
+ * bits (util/float_flags.h), so that the loops vectorise; they are the same operations as
+ * rs_radial_modulus_n's, so the same moduli bit for bit. */
+RS_VECTOR_CLONES static int modulus_stress_pass(const rs_radial_law *law,
+                                               const double *restrict sigma, double *restrict P,
+                                               double *restrict E, int n)
 {
   uint64_t bad = 0; /* the checks' flags from the moduli's bits: the loops vectorise */
   if (law->law == RS_RADIAL_PFEIFFER) {

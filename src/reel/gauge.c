@@ -130,7 +130,8 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
   double P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);
   /* the strains of nodes 1..n-1 first, in one pass (out[j] holds node j + 1's until the sum
    * writes it), unless out overlaps sigma_r (then node by node: the same values) */
-  const uintptr_t o = (uintptr_t)out, sg = (uintptr_t)sigma_r, bytes = (uintptr_t)n * sizeof(double);
+  const uintptr_t o = (uintptr_t)out, sg = (uintptr_t)sigma_r;
+  const uintptr_t bytes = (uintptr_t)n * sizeof(double);
   const int batched = tb->Pmax > 0.0 && (o + bytes <= sg || sg + bytes <= o);
   if (batched) strain_table_eval_stress_n(tb->eps, tb->inv, tb->Pmax, sigma_r, out, n - 1);
   for (int j = 0; j < n; ++j) {

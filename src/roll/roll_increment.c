@@ -37,8 +37,8 @@ RS_VECTOR_CLONES static void roll_decays_pass(const double *restrict L, double *
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum
    * outside (0.9705, 1.0304) has |d| > 0.02994, so the flag looks at |d| (three vector
-   * operations, not five) and the pass that follows at the sums. The flag
-   * is a compare mask as wide as a double, so that the OR stays in the vector registers */
+   * operations, not five) and the pass that follows at the sums. The flag is read from
+   * |d|'s bits (util/float_flags.h), so that the loop vectorises on any x86-64 */
   uint64_t bad = 0;
   const uint64_t limit = rs_double_bits(0.0299);
   for (int j = lo; j < top; ++j) {

@@ -123,8 +123,8 @@ double rsi_roll_layer_coord_at(rs_roll *roll, double x)
  * span looks at most of them: RS_LG2_RANGE_MAX). rs_log_positive holds for positive normal
  * numbers; a g^2 outside them (a modulus the law left beyond 1e308 times E_theta, or
  * below 2.2e-308 of it) takes log() instead, as the lazy path does: an infinite g^2 gives
- * the right-hand side the infinity that makes CVODE say so (the flag is a compare mask as
- * wide as a double: it stays in the vector registers) */
+ * the right-hand side the infinity that makes CVODE say so (the flag read from g^2's bits:
+ * util/float_flags.h) */
 RS_VECTOR_CLONES static void roll_lg2_pass(rs_roll *roll, int lo, int hi)
 {
   double *restrict lg = roll->ode.lg2;
