@@ -358,36 +358,41 @@ rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a)
   return RS_OK;
 }
 
-/* 1-norm condition number estimate (dgecon) of the equilibrated matrix of the last solve:
- * of its own factorization, or of the kept one when the last solve refined from it with
+/* the least reciprocal condition number of a system solved: 1e3 roundoffs */
+static const double RCOND_MIN = 1e3 * 2.2e-16;
+
+/* 1-norm condition number estimate of the equilibrated matrix of the last solve: of its
+ * own factorization (dgecon), or of the kept one when the last solve refined from it with
  * the same stick/slip rows (then the matrices differ by the small kernel drift that the
- * GMRES convergence bounds); rows that changed get a factorization of their own first.
- * RS_ERR_SOLVER if numerically singular. */
+ * GMRES convergence bounds), or, when rows changed and the kept LU carries their rank-k
+ * correction, of the corrected matrix (contact_woodbury.c); other changed rows get a
+ * factorization of their own first. RS_ERR_SOLVER if numerically singular. */
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond)
 {
   rs_nipc_lin *L = &nc->lin;
+  int ok;
   if (L->valid && L->solved_state_differs && L->wb.k > 0) {
     /* the kept LU with its rank-k correction for the changed rows */
     double anorm = rs_nipc_wb_norm1(&L->wb, L->B0, L->colsum);
     double ainv = rs_nipc_wb_inv_norm1(&L->wb, L->LU, L->ipiv, L->work);
     *cond = anorm * ainv;
-    if (!(isfinite(*cond) && *cond < 1 / (1e3 * 2.2e-16)))
-      return RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
-    return RS_OK;
+    ok = isfinite(*cond) && *cond < 1 / RCOND_MIN;
+  } else {
+    if (!L->valid || L->solved_state_differs) {
+      rs_status st = rs_nipc_lin_refactor(nc, a);
+      if (st) return st;
+      L->solved_state_differs = 0;
+    }
+    if (L->rcond < 0) {
+      lapack_int N = (lapack_int)nc->n;
+      lapack_int info = LAPACKE_dgecon_work(LAPACK_COL_MAJOR, '1', N, L->LU, N, L->anorm, &L->rcond,
+                                            L->work, L->iwork);
+      if (info != 0) return RS_ERROR(RS_ERR_INTERNAL, "dgecon info %d", (int)info);
+    }
+    *cond = L->rcond > 0 ? 1.0 / L->rcond : INFINITY;
+    ok = L->rcond > RCOND_MIN;
   }
-  if (!L->valid || L->solved_state_differs) {
-    rs_status st = rs_nipc_lin_refactor(nc, a);
-    if (st) return st;
-    L->solved_state_differs = 0;
-  }
-  if (L->rcond < 0) {
-    lapack_int N = (lapack_int)nc->n;
-    lapack_int info = LAPACKE_dgecon_work(LAPACK_COL_MAJOR, '1', N, L->LU, N, L->anorm, &L->rcond,
-                                          L->work, L->iwork);
-    if (info != 0) return RS_ERROR(RS_ERR_INTERNAL, "dgecon info %d", (int)info);
-  }
-  *cond = L->rcond > 0 ? 1.0 / L->rcond : INFINITY;
-  if (!(L->rcond > 1e3 * 2.2e-16))
+  if (!ok)
     return RS_ERROR(RS_ERR_SOLVER, "nip system is numerically singular (condition number %.3g)", *cond);
   return RS_OK;
 }
