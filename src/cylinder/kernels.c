@@ -94,8 +94,8 @@ static void sweep2(int K, double *restrict a, double ma, double *restrict b, dou
 }
 
 /* (c, s) <- (c cos t - s sin t, s cos t + c sin t): cos and sin of (n + 1) t */
-RS_VECTOR_CLONES static void rotate(int K, double *restrict c, double *restrict s, const double *restrict ct,
-                   const double *restrict st)
+RS_VECTOR_CLONES static void rotate(int K, double *restrict c, double *restrict s,
+                                    const double *restrict ct, const double *restrict st)
 {
   K &= ~3;
   for (int k = 0; k < K; ++k) {

@@ -33,7 +33,8 @@ static double pbar_of(int M, const double *y, int e)
 }
 
 /* x -= f y over a padded row (n a multiple of 4: -O2 vectorises it) */
-RS_VECTOR_CLONES static void row_update(int n, double *restrict x, double f, const double *restrict y)
+RS_VECTOR_CLONES static void row_update(int n, double *restrict x, double f,
+                                        const double *restrict y)
 {
   n &= ~3;
   for (int j = 0; j < n; ++j) x[j] -= f * y[j];

@@ -31,8 +31,8 @@ static inline void roll_scale_clear(double *restrict e, int lo, int hi, double s
  * unscaled, with the segments' bounds, scales and largest products in *seg (the scaling
  * may then be fused with what uses e: roll_layer.c). A range under 256 nodes is one
  * segment, final (seg->count = 0). Below 1e-290 a product is 0: no subnormals. */
-RS_VECTOR_CLONES static void roll_decays_pass(const double *restrict L, double *restrict e, int lo, int top,
-                         roll_segments *seg)
+RS_VECTOR_CLONES static void roll_decays_pass(const double *restrict L, double *restrict e,
+                                              int lo, int top, roll_segments *seg)
 {
   /* |d| >= 0.03 gives a value outside [e^-0.03, e^0.03] = [0.97045, 1.03045] (the sum is
    * increasing everywhere: its derivative is the sum to d^6, positive): exp() there. A sum

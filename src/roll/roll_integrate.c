@@ -65,8 +65,8 @@ static void roll_quintic_fill_w(double a, double inv_h, const double c[6], const
 
 /* (w, L) at the n nodes x[0..n) inside the step (plain loops over arrays: they vectorise).
  * With w NULL, L alone (w kept as the step's quintic: roll_wstep_keep). */
-RS_VECTOR_CLONES static void roll_quintic_fill(const roll_quintic *q, const double *restrict x, double *restrict w,
-                              double *restrict L, int n)
+RS_VECTOR_CLONES static void roll_quintic_fill(const roll_quintic *q, const double *restrict x,
+                                               double *restrict w, double *restrict L, int n)
 {
   if (w) roll_quintic_fill_w(q->a, q->inv_h, q->cw, x, w, n);
   const double a = q->a, inv_h = q->inv_h;

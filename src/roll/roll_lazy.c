@@ -33,7 +33,8 @@ static void roll_shape_add_n(double *restrict sr, const double *restrict e,
 
 /* the radial stresses of the nodes [lo, hi) (lo >= 1) take c x shape + c2 x shape x prof_L:
  * a deep part below an increment's start, or nodes leaving or joining the lazy zone */
-RS_VECTOR_CLONES static void roll_shape_add_pass(rs_roll *roll, int lo, int hi, double c, double c2)
+RS_VECTOR_CLONES static void roll_shape_add_pass(rs_roll *roll, int lo, int hi, double c,
+                                                 double c2)
 {
   roll_shape_add_n(roll->sigma_r, roll->ref.shape_e, roll->prof.L, lo, hi, c, c2);
 }

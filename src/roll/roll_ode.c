@@ -12,12 +12,12 @@
 
 #include "roll/roll_corrector.h"
 #include "roll/roll_internal.h"
-#include "util/float_flags.h"
 #include "roll/vector2.h"
 #include "util/error.h"
+#include "util/float_flags.h"
 #include "util/log_vec.h"
-#include "util/vector_clones.h"
 #include "util/sundials_compat.h"
+#include "util/vector_clones.h"
 
 /* ln g^2 at node j: from the pass over the integration's nodes (rsi_roll_lg2_range), or else
  * formed when first needed in an epoch. A neighbour's value is usually

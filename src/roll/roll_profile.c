@@ -100,10 +100,13 @@ static inline void roll_profile_layer(int j, int top, const double *restrict d,
  * where the Taylor sums hold, in a loop over arrays passed as such, that vectorises;
  * returns a flag raised (rs_flag_raised) when some layer's sums do not hold (the caller does
  * those again) */
-RS_VECTOR_CLONES static uint64_t roll_profile_inner(int in, int top, const double *restrict d, const double *restrict u,
-                                  const double *restrict E, const double *restrict w,
-                                  const double *restrict x, double Eth, double *restrict Q,
-                                  double *restrict Cf, double *restrict A, double *restrict B)
+RS_VECTOR_CLONES static uint64_t roll_profile_inner(int in, int top, const double *restrict d,
+                                                   const double *restrict u,
+                                                   const double *restrict E,
+                                                   const double *restrict w,
+                                                   const double *restrict x, double Eth,
+                                                   double *restrict Q, double *restrict Cf,
+                                                   double *restrict A, double *restrict B)
 {
   uint64_t wide = 0; /* from the bits (util/float_flags.h): the loop vectorises */
   const uint64_t limit = rs_double_bits(0.03);

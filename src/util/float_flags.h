@@ -64,12 +64,6 @@ static inline uint64_t rs_flag_not_below_zero(double x)
   return ~rs_flag_word_outside(rs_double_bits(x), 0, UINT64_C(0x7ff0000000000001));
 }
 
-/* raised when x is a NaN (either sign; the infinities are not): |x|'s bits above +inf's */
-static inline uint64_t rs_flag_nan(double x)
-{
-  return rs_abs_bits(x) + ((UINT64_C(1) << 63) - UINT64_C(0x7ff0000000000001));
-}
-
 /* whether a flag OR-ed over a loop was raised by any of its doubles */
 static inline int rs_flag_raised(uint64_t flags) { return (int)(flags >> 63); }
 

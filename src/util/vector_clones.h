@@ -12,7 +12,7 @@
 #define REELSIM_UTIL_VECTOR_CLONES_H
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(__AVX2__) && !defined(RS_NO_VECTOR_CLONES)
+    !defined(__AVX2__)
 #define RS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define RS_VECTOR_CLONES
