@@ -4,6 +4,8 @@
 
 #include "cylinder/cylinder.h"
 
+#include <math.h>
+
 #define RS_PI 3.14159265358979323846
 
 /* Constants divided by A_ref = max(A_rr, A_tt): all mode algebra is done with these. */
@@ -55,6 +57,20 @@ int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6]);
 /* sums.c: the same, only the cos sums (mask bit 1: out[0..2]) and/or the sin sums (bit 2:
  * out[3..5]); the others are left untouched. */
 int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, double out[6]);
+
+/* sums.c: the same (mask as above) at nk offsets on a grid of half cells, t_i = h2[i] c/2
+ * with c the cell (c = w for a hat, 2 w for a box), none within w of +-pi: the boundary
+ * values of the pieces, shared by neighbouring offsets, are evaluated once (a third of the
+ * work for a hat, half for a box). out[i] as rs_cyl_closed_sums_part's; the sin k = 0 sum
+ * on a jump of f is infinite as there (its return value, here not reported). */
+rs_status rs_cyl_closed_sums_grid(rs_basis basis, double w, int nk, const long *h2,
+                                  unsigned mask, double (*out)[6]);
+
+/* t reduced to [-pi, pi] as remainder(t, 2 pi) does, which leaves |t| < pi as it is */
+static inline double rs_cyl_wrap(double t)
+{
+  return fabs(t) < RS_PI ? t : remainder(t, 2 * RS_PI);
+}
 
 /* sums.c: Fourier cosine coefficient a_n (n >= 0) of the basis on the circle. */
 double rs_cyl_basis_coef(rs_basis basis, double w, long n);

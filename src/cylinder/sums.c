@@ -20,7 +20,10 @@
 #include "cylinder/internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include "util/error.h"
 
 /* zeta(2k), k = 1..30 (for k > 30, 1 + 4^-k + 9^-k is exact in double) */
 static const double zeta_even[30] = {
@@ -189,62 +192,52 @@ double rs_cyl_basis_coef(rs_basis basis, double w, long n)
   return 2.0 / (RS_PI * (double)n) * sin((double)n * w);
 }
 
-int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, double out[6])
+/* What a piece boundary at u contributes: the elementary antiderivatives (antider) and
+ * the smooth remainders' (smooth_antider), at u = t - b. */
+typedef struct sum_point {
+  double P0[K_COUNT], P1[K_COUNT], S[6];
+} sum_point;
+
+static void point_eval(double u, unsigned mask, sum_point *pt)
 {
-  coef_init();
-  t = remainder(t, 2 * RS_PI);
-  pieces P = make_pieces(basis, w);
-  double snap = 1e-10 * w;
+  antider(u, mask, pt->P0, pt->P1);
+  smooth_antider(u, mask, pt->S);
+}
+
+/* The sums at t from the pieces' boundary values: at[k] the point u[k] = t - b[k] (k <=
+ * np; snapped to 0 within round-off of a breakpoint), ua[k] the same unsnapped, for the
+ * piece's value there. ft = f(t) (the mean of the one-sided limits on a jump). */
+static int combine(const pieces *P, rs_basis basis, double w, double ft, const double *u,
+                   const double *ua, const sum_point *const *at, unsigned mask, double out[6])
+{
   double I[K_COUNT] = {0};
   double jumpsum = 0; /* coefficient of ln|0| in the 1/u kernel */
   double gsm[3] = {0, 0, 0};
-  /* the antiderivatives at the upper and lower ends of a piece; a piece's upper end is
-   * the one before's lower end (t - b[k]), taken over */
-  double P0h[K_COUNT], P1h[K_COUNT], P0l[K_COUNT], P1l[K_COUNT], Sh[6], Sl[6];
-  for (int k = 0; k < P.np; ++k) {
-    double uhi = t - P.b[k], ulo = t - P.b[k + 1];
-    if (fabs(uhi) < snap) uhi = 0;
-    if (fabs(ulo) < snap) ulo = 0;
-    double A = P.v[k] + P.s[k] * (t - P.b[k]);
-    if (k == 0) {
-      antider(uhi, mask, P0h, P1h);
-      smooth_antider(uhi, mask, Sh);
-    } else {
-      memcpy(P0h, P0l, sizeof P0h);
-      memcpy(P1h, P1l, sizeof P1h);
-      memcpy(Sh, Sl, sizeof Sh);
-    }
-    antider(ulo, mask, P0l, P1l);
-    smooth_antider(ulo, mask, Sl);
-    static const int jc[4] = {K_LOG, K_ABS, K_ONE, K_U2}, js[4] = {K_INV, K_ULOG, K_SGN, K_U};
+  static const int jc[4] = {K_LOG, K_ABS, K_ONE, K_U2}, js[4] = {K_INV, K_ULOG, K_SGN, K_U};
+  for (int k = 0; k < P->np; ++k) {
+    const sum_point *h = at[k], *l = at[k + 1];
+    double uhi = u[k], ulo = u[k + 1];
+    double A = P->v[k] + P->s[k] * ua[k];
     for (int f = 0; f < 2; ++f) {
       if (!(mask & (1u << f))) continue;
       const int *js_ = f ? js : jc;
       for (int i = 0; i < 4; ++i) {
         int j = js_[i];
-        I[j] += A * (P0h[j] - P0l[j]) - P.s[k] * (P1h[j] - P1l[j]);
+        I[j] += A * (h->P0[j] - l->P0[j]) - P->s[k] * (h->P1[j] - l->P1[j]);
       }
     }
     /* f at u = 0 from this piece, with the sign of its ln|u| term */
     if (uhi == 0) jumpsum += A;
     if (ulo == 0) jumpsum -= A;
     /* the smooth remainders against f = A - s u, term by term */
-    if (mask & 1) gsm[0] += A * (Sh[0] - Sl[0]) - P.s[k] * (Sh[1] - Sl[1]);
+    if (mask & 1) gsm[0] += A * (h->S[0] - l->S[0]) - P->s[k] * (h->S[1] - l->S[1]);
     if (mask & 2) {
-      gsm[1] += A * (Sh[2] - Sl[2]) - P.s[k] * (Sh[3] - Sl[3]);
-      gsm[2] += A * (Sh[4] - Sl[4]) - P.s[k] * (Sh[5] - Sl[5]);
+      gsm[1] += A * (h->S[2] - l->S[2]) - P->s[k] * (h->S[3] - l->S[3]);
+      gsm[2] += A * (h->S[4] - l->S[4]) - P->s[k] * (h->S[5] - l->S[5]);
     }
   }
   double ip = 1 / RS_PI;
   if (mask & 1) {
-    /* f(t) (mean of the one-sided limits on a jump) and a_0 */
-    double ft;
-    if (basis == RS_BASIS_HAT) {
-      ft = fmax(0.0, 1 - fabs(t) / w);
-    } else {
-      double e = fabs(t) - w;
-      ft = fabs(e) < snap ? 0.5 : (e < 0 ? 1.0 : 0.0);
-    }
     out[0] = ft - rs_cyl_basis_coef(basis, w, 0);
     out[1] = ip * (-I[K_LOG] - gsm[0]);
     out[2] = ip * (RS_PI * RS_PI / 6 * I[K_ONE] - 0.5 * RS_PI * I[K_ABS] + 0.25 * I[K_U2]);
@@ -259,6 +252,77 @@ int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, d
     }
   }
   return 0;
+}
+
+int rs_cyl_closed_sums_part(rs_basis basis, double w, double t, unsigned mask, double out[6])
+{
+  coef_init();
+  t = rs_cyl_wrap(t);
+  pieces P = make_pieces(basis, w);
+  double snap = 1e-10 * w, u[3], ua[3];
+  sum_point pt[3];
+  const sum_point *at[3] = {&pt[0], &pt[1], &pt[2]};
+  /* a piece's upper end is the one before's lower end (t - b[k]), evaluated once */
+  for (int k = 0; k <= P.np; ++k) {
+    ua[k] = u[k] = t - P.b[k];
+    if (fabs(u[k]) < snap) u[k] = 0;
+    point_eval(u[k], mask, &pt[k]);
+  }
+  double ft;
+  if (basis == RS_BASIS_HAT) {
+    ft = fmax(0.0, 1 - fabs(t) / w);
+  } else {
+    double e = fabs(t) - w;
+    ft = fabs(e) < snap ? 0.5 : (e < 0 ? 1.0 : 0.0);
+  }
+  return combine(&P, basis, w, ft, u, ua, at, mask, out);
+}
+
+rs_status rs_cyl_closed_sums_grid(rs_basis basis, double w, int nk, const long *h2,
+                                  unsigned mask, double (*out)[6])
+{
+  coef_init();
+  if (nk <= 0) return RS_OK;
+  pieces P = make_pieces(basis, w);
+  /* the grid's unit: half a cell, the breakpoints +-2, 0 (hat) or +-1 (box) units */
+  const long step = basis == RS_BASIS_HAT ? 2 : 1;
+  const double unit = basis == RS_BASIS_HAT ? 0.5 * w : w;
+  long lo = h2[0], hi = h2[0];
+  for (int i = 1; i < nk; ++i) {
+    lo = h2[i] < lo ? h2[i] : lo;
+    hi = h2[i] > hi ? h2[i] : hi;
+  }
+  lo -= step;
+  hi += step;
+  size_t np = (size_t)(hi - lo + 1);
+  sum_point *pts = malloc(np * sizeof *pts);
+  unsigned char *done = calloc(np, 1);
+  if (!pts || !done) {
+    free(pts);
+    free(done);
+    return RS_ERROR(RS_ERR_MEMORY, "closed sums at %d offsets", nk);
+  }
+  for (int i = 0; i < nk; ++i) {
+    double u[3];
+    const sum_point *at[3];
+    for (int k = 0; k <= P.np; ++k) {
+      long j = h2[i] - (k == 0 ? -step : k == P.np ? step : 0);
+      u[k] = (double)j * unit;
+      size_t q = (size_t)(j - lo);
+      if (!done[q]) {
+        point_eval(u[k], mask, &pts[q]);
+        done[q] = 1;
+      }
+      at[k] = &pts[q];
+    }
+    long ah = labs(h2[i]);
+    double ft = basis == RS_BASIS_HAT ? (ah < 2 ? 1 - 0.5 * (double)ah : 0.0)
+                                      : (ah < 1 ? 1.0 : ah == 1 ? 0.5 : 0.0);
+    combine(&P, basis, w, ft, u, u, at, mask, out[i]);
+  }
+  free(pts);
+  free(done);
+  return RS_OK;
 }
 
 int rs_cyl_closed_sums(rs_basis basis, double w, double t, double out[6])
