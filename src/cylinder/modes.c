@@ -22,22 +22,16 @@
 typedef struct poly { double c[4]; } poly; /* c0 + c1 ell + c2 ell^2 + c3 ell^3 */
 
 static poly poly_lin(double c0, double c1) { return (poly){{c0, c1, 0, 0}}; }
-static poly poly_add(poly a, poly b)
+/* (a0 + a1 ell) b + sc c, b of degree <= 2 (the families' product, written out: two
+ * families for every mode of every new roll) */
+static poly lin_mul_add(double a0, double a1, const poly *b, const poly *c, double sc)
 {
-  for (int k = 0; k < 4; ++k) a.c[k] += b.c[k];
-  return a;
-}
-static poly poly_mul(poly a, poly b) /* degrees here never exceed 3 */
-{
-  poly r = {{0, 0, 0, 0}};
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; i + j < 4; ++j) r.c[i + j] += a.c[i] * b.c[j];
+  poly r;
+  r.c[0] = a0 * b->c[0] + sc * c->c[0];
+  r.c[1] = a0 * b->c[1] + a1 * b->c[0] + sc * c->c[1];
+  r.c[2] = a0 * b->c[2] + a1 * b->c[1] + sc * c->c[2];
+  r.c[3] = a1 * b->c[2] + sc * c->c[3];
   return r;
-}
-static poly poly_scale(poly a, double s)
-{
-  for (int k = 0; k < 4; ++k) a.c[k] *= s;
-  return a;
 }
 static double poly_val(poly a, double x)
 {
@@ -64,8 +58,8 @@ static family make_family(const rs_cyl_nd *m, double eps, int sign)
   double sg = sign;
   /* sigma_r r/A = A_rr r U' + A_rt (U + n V);  tau r/A = G (r V' - V - n U)  (all / n^3 after
    * the n^2 scaling of w), with r d/dr = +-n ell on the two families */
-  f.tR = poly_add(poly_mul(poly_lin(m->rt * eps, sg * m->rr), f.wU), poly_scale(f.wV, m->rt));
-  f.tT = poly_add(poly_mul(poly_lin(-m->g * eps, sg * m->g), f.wV), poly_scale(f.wU, -m->g));
+  f.tR = lin_mul_add(m->rt * eps, sg * m->rr, &f.wU, &f.wV, m->rt);
+  f.tT = lin_mul_add(-m->g * eps, sg * m->g, &f.wV, &f.wU, -m->g);
   return f;
 }
 
@@ -170,10 +164,13 @@ static rs_status basis_init(const rs_cyl_nd *m, double rho0, long n, mode_basis 
   return RS_OK;
 }
 
-/* Values of the 4 basis functions at rho = r/R: out[row][col], rows U, V, Tr, Tt.
- * L = ln(r/R), L0 = ln(R0/r) are passed in because n L is needed to full relative
- * accuracy for n up to 1e5 (callers form them with log1p). */
-static void basis_eval(const mode_basis *b, double rho, double L, double L0, double out[4][4])
+/* Values of the 4 basis functions at rho = r/R: out[row][col], rows U, V, Tr, Tt (the
+ * first `rows` of them; the others are left 0). L = ln(r/R), L0 = ln(R0/r) are passed in
+ * because n L is needed to full relative accuracy for n up to 1e5 (callers form them with
+ * log1p). n >= 2: AE, when given, holds exp_pair's A, E at the one nonzero of n L, n L0
+ * (the two ends of the cylinder share it: X = n ln(R0/R) for both families). */
+static void basis_eval_rows(const mode_basis *b, double rho, double L, double L0, int rows,
+                            const double *AE, double out[4][4])
 {
   const rs_cyl_nd *m = &b->m;
   memset(out, 0, 16 * sizeof(double));
@@ -212,22 +209,39 @@ static void basis_eval(const mode_basis *b, double rho, double L, double L0, dou
   double X[2] = {nn * L, nn * L0};
   for (int f = 0; f < 2; ++f) {
     double A, E;
-    exp_pair(&b->rt, X[f], &A, &E);
+    if (AE && X[f] != 0) {
+      A = AE[0];
+      E = AE[1];
+    } else {
+      exp_pair(&b->rt, X[f], &A, &E);
+    }
     const poly *P[4] = {&fam[f]->wU, &fam[f]->wV, &fam[f]->tR, &fam[f]->tT};
-    for (int row = 0; row < 4; ++row)
+    for (int row = 0; row < rows; ++row)
       pair_values(&b->rt, *P[row], A, E, &out[row][2 * f], &out[row][2 * f + 1]);
   }
 }
 
+static void basis_eval(const mode_basis *b, double rho, double L, double L0, double out[4][4])
+{
+  basis_eval_rows(b, rho, L, L0, 4, NULL, out);
+}
+
 /* Gaussian elimination with partial pivoting on a row-equilibrated n x n system (n <= 4)
- * with nrhs right-hand sides, in place. */
-static rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
+ * with nrhs right-hand sides, in place. Inlined where n and nrhs are constants, so that
+ * its loops are unrolled (a call per mode of every new roll: the nip's mode cache). */
+static inline rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
 {
   for (int i = 0; i < n; ++i) {
     double mx = 0;
-    for (int j = 0; j < n; ++j) mx = fmax(mx, fabs(A[i][j]));
+#pragma GCC unroll 4
+    for (int j = 0; j < n; ++j) {
+      double v = fabs(A[i][j]);
+      mx = v > mx ? v : mx; /* fmax without the call: mx starts at 0, a NaN entry leaves it */
+    }
     if (!(mx > 0) || !isfinite(mx)) return RS_ERROR(RS_ERR_SOLVER, "mode system row %d is %g", i, mx);
+#pragma GCC unroll 4
     for (int j = 0; j < n; ++j) A[i][j] /= mx;
+#pragma GCC unroll 2
     for (int k = 0; k < nrhs; ++k) B[i][k] /= mx;
   }
   for (int c = 0; c < n; ++c) {
@@ -236,9 +250,11 @@ static rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
       if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
     if (!(fabs(A[piv][c]) > 1e-300)) return RS_ERROR(RS_ERR_SOLVER, "singular mode system");
     if (piv != c) {
+#pragma GCC unroll 4
       for (int j = 0; j < n; ++j) {
         double t = A[c][j]; A[c][j] = A[piv][j]; A[piv][j] = t;
       }
+#pragma GCC unroll 2
       for (int k = 0; k < nrhs; ++k) {
         double t = B[c][k]; B[c][k] = B[piv][k]; B[piv][k] = t;
       }
@@ -247,9 +263,11 @@ static rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
       double f = A[i][c] / A[c][c];
       if (f == 0) continue;
       for (int j = c; j < n; ++j) A[i][j] -= f * A[c][j];
+#pragma GCC unroll 2
       for (int k = 0; k < nrhs; ++k) B[i][k] -= f * B[c][k];
     }
   }
+#pragma GCC unroll 2
   for (int k = 0; k < nrhs; ++k)
     for (int i = n - 1; i >= 0; --i) {
       double s = B[i][k];
@@ -264,9 +282,13 @@ static rs_status small_solve(int n, double A[4][4], int nrhs, double B[4][2])
 static rs_status mode_coefficients(const mode_basis *b, double coef[4][2], double at1[4][4])
 {
   double at0[4][4], A[4][4];
-  double l0 = log(b->rho0);
-  basis_eval(b, b->rho0, l0, 0.0, at0);
-  basis_eval(b, 1.0, 0.0, l0, at1);
+  double l0 = log(b->rho0), AE[2], *ae = NULL;
+  if (b->kind == 2) { /* both ends' nonzero X is n l0: its exponentials once */
+    exp_pair(&b->rt, (double)b->n * l0, &AE[0], &AE[1]);
+    ae = AE;
+  }
+  basis_eval_rows(b, b->rho0, l0, 0.0, 2, ae, at0); /* only U, V at the core */
+  basis_eval_rows(b, 1.0, 0.0, l0, 4, ae, at1);
   for (int j = 0; j < 4; ++j) {
     A[0][j] = at0[0][j];
     A[1][j] = at0[1][j];
