@@ -57,13 +57,13 @@ rs_status rs_nip_contact_create(const rs_nip_contact_config *cfg, rs_nip_contact
     return rs_error_wrap("nip.drum");
   }
   nc->state = calloc((size_t)2 * E, 1);
-  nc->A_state = calloc((size_t)2 * E, 1);
+  nc->keep = malloc((size_t)2 * E * sizeof(double));
   nc->A = malloc((size_t)n * n * sizeof(double));
   nc->rhs = malloc((size_t)n * sizeof(double));
   nc->z = malloc((size_t)n * sizeof(double));
   nc->visited = malloc((size_t)nc->cfg.max_iterations * 2 * E);
   nc->eps_sheet = malloc((size_t)4 * E * sizeof(double));
-  if (!nc->state || !nc->A_state || !nc->A || !nc->rhs || !nc->z || !nc->visited || !nc->eps_sheet ||
+  if (!nc->state || !nc->keep || !nc->A || !nc->rhs || !nc->z || !nc->visited || !nc->eps_sheet ||
       rs_nipc_lin_alloc(nc)) {
     rs_nip_contact_destroy(&nc);
     return RS_ERROR(RS_ERR_MEMORY, "nip contact work space (M = %d)", M);
@@ -84,7 +84,7 @@ void rs_nip_contact_destroy(rs_nip_contact **pnc)
     for (int k = 0; k < NKER; ++k) rs_kernels_free(&nc->ker[b][k]);
   }
   free(nc->state);
-  free(nc->A_state);
+  free(nc->keep);
   free(nc->A);
   free(nc->rhs);
   free(nc->z);

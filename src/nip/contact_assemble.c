@@ -8,99 +8,123 @@
 #include <math.h>
 #include <string.h>
 
-/* Assembles A z = rhs (column-major) for the current active set. */
-void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
+/* col[i] = (c - x[i]) * keep[i] over n entries (keep 1 or 0: a stick row keeps its value
+ * exactly, a slip row gets 0) */
+static void stick_rsub(int n, double *restrict col, double c, const double *restrict x,
+                       const double *restrict keep)
+{
+  for (int i = 0; i < n; ++i) col[i] = (c - x[i]) * keep[i];
+}
+
+/* The right-hand side, the rows' kinds (keep: 1 stick, 0 slip) and the entries of the
+ * columns past the shears (delta0, eps0, xi2, T0). */
+static void assemble_rest(rs_nip_contact *nc, double a, double Ti, double f, double *keep)
 {
   const int M = nc->M, n = nc->n, E = M - 1;
   const double dx = 2 * a / (M - 1), Rs = rs_nipc_rstar(nc);
   const rs_sheet *sh = &nc->cfg.sheet;
-  const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
-  double *A = nc->A, *b = nc->rhs;
-  const int cD = 3 * M - 4, cE = 3 * M - 3, cX = 3 * M - 2, cT = 3 * M - 1;
-#define AT(r, c) A[(size_t)(c) * n + (r)]
-  /* Every entry this assembly leaves untouched is zero. The rows' pattern of nonzeros
-   * depends only on their stick/slip kind, so the whole matrix is zeroed once, and after
-   * that only the rows whose kind changed since the last assembly (nc->A_state) are
-   * cleared; the others are overwritten entry for entry. */
-  if (!nc->A_valid) {
-    memset(A, 0, (size_t)n * n * sizeof *A);
-    nc->A_valid = 1;
-  } else {
-    for (int k = 0; k < 2 * E; ++k)
-      if ((nc->state[k] == 0) != (nc->A_state[k] == 0))
-        for (int c = 0; c < n; ++c) AT(M + k, c) = 0.0;
-  }
-  memcpy(nc->A_state, nc->state, (size_t)2 * E);
-  /* indentation (12) at node i, with v_k = -w_k, the corrected eq. (11) and
-   * N(x_i) = Ti + dx sum_{e < i} (q1 + q2):
-   *   w1 + w2 + 2h c22 p - c12 N - delta0 - eps0 x / R* = -x^2 / (2 R*) */
+  double *b = nc->rhs;
+  double *cD = nc->A + (size_t)(3 * M - 4) * n, *cE = cD + n, *cX = cE + n, *cT = cX + n;
+  memset(cD, 0, (size_t)4 * n * sizeof *cD);
   for (int i = 0; i < M; ++i) {
     double x = -a + i * dx;
-    for (int j = 1; j < M - 1; ++j) {
-      int d = rs_kernel_index(M, i - j);
-      AT(i, COL_P(j)) = nc->ker[0][KP].pu[d] + nc->ker[1][KP].pu[d];
-    }
-    if (i > 0 && i < M - 1) AT(i, COL_P(i)) += 2 * sh->h * sh->c22;
-    for (int k = 0; k < 2; ++k)
-      for (int e = 0; e < E; ++e) {
-        int d = rs_kernel_index(M, i - e);
-        AT(i, COL_Q(k, e)) = nc->ker[k][KQU].qu[d] - (e < i ? sh->c12 * dx : 0.0);
-      }
-    AT(i, cD) = -1.0;
-    AT(i, cE) = -x / Rs;
+    cD[i] = -1.0;
+    cE[i] = -x / Rs;
     b[i] = -x * x / (2 * Rs) + sh->c12 * Ti;
   }
-  /* contact k, element e: stick (13)/(14), imposed at the element's upstream node x_e
-   * (staggered by half a cell from the shear, Kalker-style upwind; docs/nip.md):
-   *   c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,
-   * xi_2 an unknown, xi_1 from the wound-on condition (22): the wound sheet (tension T0,
-   * strain c11 T0/(2h) from its unstressed state) moves with the roll surface, whose
-   * circumference the nip shrinks by the mean strain eps1_mean = m P (mass balance over a
-   * revolution), so xi_1 = m dx sum p_j - c11 T0/(2h). (xi_1 = 0 would make the sheet on the
-   * roll run c11 T0/(2h) faster than the roll: forward slip everywhere, NIT = mu P even for
-   * rigid cylinders; docs/nip.md, "Wound-on condition".)
-   * <N>_e the mean of N over the dual cell [x_e - dx/2, x_e + dx/2] (exact):
-   *   N(x_e) + dx/8 (Q_e - Q_{e-1}), Q = q1 + q2;
-   * or slip (15): q_k,e = mu_k sigma pbar_e, pbar_e = (p_e + p_{e+1})/2 */
   for (int k = 0; k < 2; ++k)
     for (int e = 0; e < E; ++e) {
-      int r = ROW_STICK(k, e);
-      signed char s = nc->state[k * E + e];
-      if (s == 0) {
-        for (int j = 1; j < M - 1; ++j) AT(r, COL_P(j)) = -nc->ker[k][KP].pe[rs_kernel_index(M, e - j)];
-        if (e >= 1) AT(r, COL_P(e)) -= sh->c12;
-        double f = sh->c11 / (2 * sh->h);
-        for (int kk = 0; kk < 2; ++kk)
-          for (int ee = 0; ee <= e; ++ee)
-            AT(r, COL_Q(kk, ee)) = f * dx * (ee == e ? 0.125 : ee == e - 1 ? 0.875 : 1.0);
-        for (int ee = 0; ee <= e; ++ee) AT(r, COL_Q(k, ee)) -= nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
-        for (int ee = e + 1; ee < E; ++ee) AT(r, COL_Q(k, ee)) = 0.0 - nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)];
-        if (k == 1) AT(r, cX) = 1.0;
-        if (k == 0) {
-          AT(r, cT) = -f;
-          for (int j = 1; j < M - 1; ++j) AT(r, COL_P(j)) += nc->roll_mean_strain * dx;
-        }
-        b[r] = -f * Ti;
-      } else {
-        AT(r, COL_Q(k, e)) = 1.0;
-        double m = -0.5 * mu[k] * s;
-        if (e >= 1) AT(r, COL_P(e)) = m;
-        if (e + 1 <= M - 2) AT(r, COL_P(e + 1)) = m;
-        b[r] = 0.0;
-      }
+      int r = ROW_STICK(k, e), stick = nc->state[k * E + e] == 0;
+      keep[e + k * E] = stick ? 1.0 : 0.0;
+      b[r] = stick ? -f * Ti : 0.0;
+      if (stick && k == 1) cX[r] = 1.0;
+      if (stick && k == 0) cT[r] = -f;
     }
-  /* (20): sheet equilibrium T0 - int (q1 + q2) = Ti; winder torque T0 - int q1 = share Ti */
   int r1 = 3 * M - 2, r2 = 3 * M - 1;
-  for (int e = 0; e < E; ++e) {
-    AT(r1, COL_Q(0, e)) = -dx;
-    AT(r1, COL_Q(1, e)) = -dx;
-    AT(r2, COL_Q(0, e)) = -dx;
-  }
-  AT(r1, cT) = 1.0;
-  AT(r2, cT) = 1.0;
+  cT[r1] = 1.0;
+  cT[r2] = 1.0;
   b[r1] = Ti;
   b[r2] = rs_nipc_share(nc) * Ti;
-#undef AT
+}
+
+/* Assembles A z = rhs (column-major) for the current active set, column by column: every
+ * entry is written, the slices along the kernels contiguous. The rows (eqs. (12)-(15),
+ * (20)):
+ * - indentation (12) at node i, with v_k = -w_k, the corrected eq. (11) and
+ *   N(x_i) = Ti + dx sum_{e < i} (q1 + q2):
+ *     w1 + w2 + 2h c22 p - c12 N - delta0 - eps0 x / R* = -x^2 / (2 R*);
+ * - contact k, element e: stick (13)/(14), imposed at the element's upstream node x_e
+ *   (staggered by half a cell from the shear, Kalker-style upwind; docs/nip.md):
+ *     c11 <N>_e/(2h) - c12 p_e - eps_k(x_e) + xi_k = 0,
+ *   xi_2 an unknown, xi_1 from the wound-on condition (22): the wound sheet (tension T0,
+ *   strain c11 T0/(2h) from its unstressed state) moves with the roll surface, whose
+ *   circumference the nip shrinks by the mean strain eps1_mean = m P (mass balance over a
+ *   revolution), so xi_1 = m dx sum p_j - c11 T0/(2h). (xi_1 = 0 would make the sheet on
+ *   the roll run c11 T0/(2h) faster than the roll: forward slip everywhere, NIT = mu P
+ *   even for rigid cylinders; docs/nip.md, "Wound-on condition".) <N>_e the mean of N
+ *   over the dual cell [x_e - dx/2, x_e + dx/2] (exact): N(x_e) + dx/8 (Q_e - Q_{e-1}),
+ *   Q = q1 + q2; or slip (15): q_k,e = mu_k sigma pbar_e, pbar_e = (p_e + p_{e+1})/2;
+ * - (20): sheet equilibrium T0 - int (q1 + q2) = Ti; winder torque T0 - int q1 = share Ti. */
+void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
+{
+  const int M = nc->M, n = nc->n, E = M - 1;
+  const double dx = 2 * a / (M - 1);
+  const rs_sheet *sh = &nc->cfg.sheet;
+  const double mu[2] = {nc->cfg.mu_roll, nc->cfg.mu_drum};
+  const double f = sh->c11 / (2 * sh->h), c22 = 2 * sh->h * sh->c22, c12dx = sh->c12 * dx;
+  const double rms = nc->roll_mean_strain * dx;
+  double *keep = nc->keep; /* 2E: the stick rows of contact 0, then 1 */
+  assemble_rest(nc, a, Ti, f, keep);
+  const double *pu0 = nc->ker[0][KP].pu, *pu1 = nc->ker[1][KP].pu;
+  /* pressure columns */
+  for (int j = 1; j < M - 1; ++j) {
+    double *col = nc->A + (size_t)COL_P(j) * n;
+    const double *u0 = pu0 + (M - 1 - j), *u1 = pu1 + (M - 1 - j);
+    for (int i = 0; i < M; ++i) col[i] = u0[i] + u1[i];
+    col[j] += c22;
+    for (int k = 0; k < 2; ++k) {
+      double *st = col + M + k * E;
+      const double *pe = nc->ker[k][KP].pe + (M - 1 - j), *kp = keep + k * E;
+      /* -pe (+ eps1_mean's m dx on the roll's rows) */
+      if (k == 0) stick_rsub(E, st, rms, pe, kp);
+      else stick_rsub(E, st, 0.0, pe, kp);
+      if (kp[j] != 0.0) st[j] = k == 0 ? -pe[j] - sh->c12 + rms : -pe[j] - sh->c12;
+      /* slip rows e = j (p_e) and e = j - 1 (p_{e+1}): -mu sigma / 2 */
+      for (int e = j - 1; e <= j && e < E; ++e)
+        if (kp[e] == 0.0) st[e] = -0.5 * mu[k] * nc->state[k * E + e];
+    }
+    col[3 * M - 2] = col[3 * M - 1] = 0.0;
+  }
+  /* shear columns */
+  for (int kk = 0; kk < 2; ++kk) {
+    const double *qu = nc->ker[kk][KQU].qu;
+    for (int ee = 0; ee < E; ++ee) {
+      double *col = nc->A + (size_t)COL_Q(kk, ee) * n;
+      const double *u = qu + (M - 1 - ee);
+      for (int i = 0; i <= ee; ++i) col[i] = u[i] - 0.0;
+      for (int i = ee + 1; i < M; ++i) col[i] = u[i] - c12dx;
+      for (int k = 0; k < 2; ++k) {
+        double *st = col + M + k * E;
+        const double *kp = keep + k * E;
+        if (k == kk) {
+          /* stick row e: f dx w - qe_k(e - ee), w = 0 (e < ee), 1/8, 7/8, 1 */
+          const double *qe = nc->ker[k][KQE].qe + (M - 1 - ee);
+          stick_rsub(ee, st, 0.0, qe, kp);
+          if (ee < E) st[ee] = (f * dx * 0.125 - qe[ee]) * kp[ee];
+          if (ee + 1 < E) st[ee + 1] = (f * dx * 0.875 - qe[ee + 1]) * kp[ee + 1];
+          if (ee + 2 < E) stick_rsub(E - ee - 2, st + ee + 2, f * dx * 1.0, qe + ee + 2, kp + ee + 2);
+          if (kp[ee] == 0.0) st[ee] = 1.0; /* slip: q_k,e = ... */
+        } else {
+          for (int e = 0; e < ee; ++e) st[e] = 0.0;
+          if (ee < E) st[ee] = f * dx * 0.125 * kp[ee];
+          if (ee + 1 < E) st[ee + 1] = f * dx * 0.875 * kp[ee + 1];
+          for (int e = ee + 2; e < E; ++e) st[e] = f * dx * 1.0 * kp[e];
+        }
+      }
+      col[3 * M - 2] = -dx;
+      col[3 * M - 1] = kk == 0 ? -dx : 0.0;
+    }
+  }
 }
 
 /* Physical scales of the unknowns and rows: the raw entries mix m/Pa (~1e-11), 1/Pa,

@@ -78,8 +78,7 @@ struct rs_nip_contact {
   double H11[2];             /* half-plane compliance H11 of roll and drum: E* = 2/(H1 + H2) */
   /* linear algebra: the assembled system (column-major, unscaled) and its solver */
   double *A, *rhs, *z;
-  signed char *A_state;      /* the stick/slip rows A was last assembled with (2 (M-1)) */
-  int A_valid;               /* A holds an assembly (its untouched entries are zero) */
+  double *keep;              /* the assembly's stick rows: 1 stick, 0 slip (2 (M-1)) */
   rs_nipc_lin lin;
   int defer_cond;            /* the load search: the condition number of its last state only */
   int stiff_body_terms;      /* the default series: a much stiffer body takes fewer terms
