@@ -148,35 +148,59 @@ rs_status rs_nip_contact_create_from_spec(const rs_nip_spec *spec, const rs_mate
   return RS_OK;
 }
 
-/* E_r = secant modulus over [p_s, p_s + P/(2 a_H)], a_H(E_r) the Hertz half-width. */
+/* h(x) = ln E_n(e^x) - x: E_n(E) the secant modulus over [p_s, p_s + P/(2 a_H(E))], a_H
+ * the Hertz half-width of the roll with E_r = E on the drum (H2: the drum's half-plane). */
+static rs_status radial_misfit(const rs_nip_contact *nc, double P, double Rs, double ps,
+                               const double H2[2][2], double x, double *h)
+{
+  const rs_material *m = &nc->mat;
+  double E = exp(x), H1[2][2];
+  rs_ortho ro;
+  roll_consts rc;
+  rs_status st = roll_ortho(m, E, &ro, &rc);
+  if (!st) st = rs_ortho_halfplane(&ro, H1);
+  if (st) return st;
+  double Estar = 2.0 / (H1[0][0] + H2[0][0]);
+  double aH = sqrt(4 * P * Rs / (PI * Estar));
+  double En = rs_radial_secant_modulus(&m->radial, ps, P / (2 * aH));
+  if (!(En > 0) || !isfinite(En))
+    return RS_ERROR(RS_ERR_INPUT, "material.radial gives E_r = %g Pa at %g Pa", En, ps + P / (2 * aH));
+  *h = log(En) - x;
+  return RS_OK;
+}
+
+/* E_r = secant modulus over [p_s, p_s + P/(2 a_H)], a_H(E_r) the Hertz half-width: the
+ * fixed point h(ln E_r) = 0. E_r rises with pbar and pbar falls with E_r, so h falls with
+ * slope between -1 and 0: the damped step x + h/2 is a contraction (it took ~50 steps to
+ * 1e-10); the secant steps through the last two points, each kept inside the bracket the
+ * signs of h give, take 5 - 7 to round-off. */
 static rs_status nip_radial_modulus(const rs_nip_contact *nc, double P, double Rs, double ps,
                                     double *E_r)
 {
-  const rs_material *m = &nc->mat;
-  double E = rs_radial_modulus(&m->radial, ps), H2[2][2];
+  double H2[2][2], x0 = log(rs_radial_modulus(&nc->mat.radial, ps)), h0, h1;
   rs_status st = rs_ortho_halfplane(&nc->cfg.drum, H2);
+  if (!st) st = radial_misfit(nc, P, Rs, ps, H2, x0, &h0);
   if (st) return st;
+  double x1 = x0 + 0.5 * h0, lo = h0 > 0 ? x0 : -INFINITY, hi = h0 > 0 ? INFINITY : x0;
   for (int it = 0; it < 100; ++it) {
-    rs_ortho ro;
-    roll_consts rc;
-    double H1[2][2];
-    st = roll_ortho(m, E, &ro, &rc);
-    if (!st) st = rs_ortho_halfplane(&ro, H1);
-    if (st) return st;
-    double Estar = 2.0 / (H1[0][0] + H2[0][0]);
-    double aH = sqrt(4 * P * Rs / (PI * Estar));
-    double En = rs_radial_secant_modulus(&m->radial, ps, P / (2 * aH));
-    if (!(En > 0) || !isfinite(En))
-      return RS_ERROR(RS_ERR_INPUT, "material.radial gives E_r = %g Pa at %g Pa", En, ps + P / (2 * aH));
-    /* damped: E_r rises with pbar, pbar falls with E_r */
-    double Enew = sqrt(E * En);
-    if (fabs(Enew / E - 1) < 1e-10) {
-      *E_r = Enew;
-      return RS_OK;
+    if (h0 == 0) {
+      x1 = x0;
+      break;
     }
-    E = Enew;
+    if ((st = radial_misfit(nc, P, Rs, ps, H2, x1, &h1))) return st;
+    if (h1 > 0) lo = x1 > lo ? x1 : lo;
+    if (h1 < 0) hi = x1 < hi ? x1 : hi;
+    double x2 = h1 != h0 ? x1 - h1 * (x1 - x0) / (h1 - h0) : x1 + 0.5 * h1;
+    if (!(x2 > lo && x2 < hi)) x2 = isfinite(lo) && isfinite(hi) ? 0.5 * (lo + hi) : x1 + 0.5 * h1;
+    if (h1 == 0 || fabs(x2 - x1) <= 1e-14 * fmax(1.0, fabs(x1))) {
+      x1 = h1 == 0 ? x1 : x2;
+      break;
+    }
+    x0 = x1;
+    h0 = h1;
+    x1 = x2;
   }
-  *E_r = E;
+  *E_r = exp(x1);
   return RS_OK;
 }
 
