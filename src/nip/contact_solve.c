@@ -71,9 +71,18 @@ static double xi_upper(const rs_nip_contact *nc, double dx)
   return nc->roll_mean_strain * P - nc->cfg.sheet.c11 / (2 * nc->cfg.sheet.h) * nc->z[3 * M - 1];
 }
 
+/* y[e] += c x[e], e < n (restrict: vectorised) */
+static void axpy_e(int n, double *restrict y, double c, const double *restrict x)
+{
+  for (int e = 0; e < n; ++e) y[e] += c * x[e];
+}
+
 /* Strains at the upstream nodes x_e of the elements and the slip rates of the solved
  * state (the stick rows of assemble()): pbar_e = (p_e + p_{e+1})/2 is the element mean
- * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k. */
+ * of the hat pressure, s_k,e = eps_sheet(x_e) - eps_k(x_e) + xi_k. eps_k(x_e) = sum_j
+ * pe_k(e - j) p_j + sum_e' qe_k(e - e') q_k,e', summed for all e at once, a column (j,
+ * then e') at a time: each eps_k(x_e) adds its terms in the same order as a sum of its
+ * own. */
 static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
 {
   const int M = nc->M, E = M - 1;
@@ -87,13 +96,13 @@ static void evaluate(rs_nip_contact *nc, double a, double Ti, double *srate)
     nc->eps_sheet[e] = rs_sheet_strain(sh, N + 0.125 * dx * (Q - Qprev), pnode(nc, e));
     N += dx * Q;
     Qprev = Q;
-    for (int k = 0; k < 2; ++k) {
-      double eps = 0;
-      for (int j = 1; j < M - 1; ++j) eps += nc->ker[k][KP].pe[rs_kernel_index(M, e - j)] * nc->z[COL_P(j)];
-      for (int ee = 0; ee < E; ++ee) eps += nc->ker[k][KQE].qe[rs_kernel_index(M, e - ee)] * nc->z[COL_Q(k, ee)];
-      nc->eps_body[k][e] = eps;
-      srate[k * E + e] = nc->eps_sheet[e] - eps + xi[k];
-    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    double *eps = nc->eps_body[k];
+    for (int e = 0; e < E; ++e) eps[e] = 0;
+    for (int j = 1; j < M - 1; ++j) axpy_e(E, eps, nc->z[COL_P(j)], nc->ker[k][KP].pe + (M - 1 - j));
+    for (int ee = 0; ee < E; ++ee) axpy_e(E, eps, nc->z[COL_Q(k, ee)], nc->ker[k][KQE].qe + (M - 1 - ee));
+    for (int e = 0; e < E; ++e) srate[k * E + e] = nc->eps_sheet[e] - eps[e] + xi[k];
   }
 }
 
