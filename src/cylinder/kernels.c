@@ -73,7 +73,10 @@ typedef struct work {
   const double *t;
   double *c, *s, *ct, *st; /* cos, sin of n t and of t */
   double *acc[NK];         /* partial sums */
+  double *acoef;           /* the basis' coefficients of the modes being added (MODE_CHUNK) */
 } work;
+
+enum { MODE_CHUNK = 16 * 256 }; /* modes added per call of add_modes */
 
 /* The sweeps over the offsets, as functions with restrict arguments and a trip count that
  * is a multiple of 4 (K & ~3 == K), which is what lets -O2 vectorise them. */
@@ -114,6 +117,30 @@ static void reseed(int K, const double *t, long n, double *c, double *s)
   }
 }
 
+/* a[i] = a_(n1 + i), i <= n2 - n1, the basis' cosine coefficients (rs_cyl_basis_coef):
+ * sin(n y) advanced by rotation like the offsets' cos/sin (restarted from the library's
+ * every 256 modes: n1 is a restart), instead of a sin() a mode */
+static void basis_coefs(rs_basis basis, double w, long n1, long n2, double *a)
+{
+  const double y = basis == RS_BASIS_HAT ? 0.5 * w : w, c1 = cos(y), s1 = sin(y);
+  double c = 0, s = 0;
+  for (long n = n1; n <= n2; ++n) {
+    if ((n - n1) % 256 == 0) {
+      c = cos((double)n * y);
+      s = sin((double)n * y);
+    }
+    if (basis == RS_BASIS_HAT) {
+      double sc = s / (0.5 * (double)n * w);
+      a[n - n1] = w / RS_PI * sc * sc;
+    } else {
+      a[n - n1] = 2.0 / (RS_PI * (double)n) * s;
+    }
+    double cn = c * c1 - s * s1;
+    s = s * c1 + c * s1;
+    c = cn;
+  }
+}
+
 /* Adds modes n1..n2 to the partial sums of the requested kernels (cos: pu, pe; sin: qu,
  * qe). cos/sin(n t) advance by rotation, restarted from the library functions every 256
  * modes (error growth stays ~ 256 eps). */
@@ -125,10 +152,12 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
   double *apu = wk->acc[KPU], *ape = wk->acc[KPE], *aqu = wk->acc[KQU], *aqe = wk->acc[KQE];
   const int cpu = !!(what & RS_KERNEL_PU), cpe = !!(what & RS_KERNEL_PE);
   const int squ = !!(what & RS_KERNEL_QU), sqe = !!(what & RS_KERNEL_QE);
+  double *acoef = wk->acoef;
+  basis_coefs(basis, w, n1, n2, acoef);
   for (long n = n1; n <= n2; ++n) {
     if ((n - n1) % 256 == 0) reseed(K, wk->t, n, c, s);
     const double(*F)[2] = cyl->cache[n].F;
-    double in = 1.0 / (double)n, an = rs_cyl_basis_coef(basis, w, n);
+    double in = 1.0 / (double)n, an = acoef[n - n1];
     double mpu = F[0][0] * in, mpe = F[1][0] - F[0][0] * in;
     double mqu = -F[0][1] * in, mqe = F[0][1] * in - F[1][1];
     if (accel) {
@@ -188,15 +217,16 @@ static rs_status kernel_check(const rs_cylinder *cyl, rs_basis basis, double dx,
  * t, the partial sums and the closed parts; the sums and the closed parts zeroed. */
 static rs_status work_alloc(int Kp, int nk, kernel_sum *ks)
 {
-  double *mem = ks->mem = malloc((size_t)Kp * (6 + 2 * NK) * sizeof(double));
+  double *mem = ks->mem = malloc(((size_t)Kp * (6 + 2 * NK) + MODE_CHUNK) * sizeof(double));
   if (!mem) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
   memset(mem + 6 * (size_t)Kp, 0, (size_t)Kp * 2 * NK * sizeof(double));
   const int nkp = (nk + 3) & ~3;
-  ks->wk = (work){nkp, mem, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}};
+  ks->wk = (work){nkp, mem, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}, NULL};
   for (int j = 0; j < NK; ++j) {
     ks->wk.acc[j] = mem + (size_t)(6 + j) * Kp;
     ks->closed[j] = mem + (size_t)(6 + NK + j) * Kp;
   }
+  ks->wk.acoef = mem + (size_t)(6 + 2 * NK) * Kp;
   for (int i = nk; i < nkp; ++i) { /* padding offsets t = 0, never read back */
     mem[i] = 0.0;
     ks->wk.ct[i] = 1.0;
@@ -356,11 +386,11 @@ static rs_status series_sum(rs_cylinder *cyl, rs_basis basis, double w, const rs
   for (;;) {
     rs_status st = rs_cyl_cache_reserve(cyl, N);
     if (st) return st;
-    for (long n1 = *done_to + 1; n1 <= N; n1 += 16 * 256) {
+    for (long n1 = *done_to + 1; n1 <= N; n1 += MODE_CHUNK) {
       if (rs_cancel_requested())
         return RS_ERROR(RS_ERR_INTERRUPTED, "interrupted while summing the kernel series");
       add_modes(cyl, basis, w, o->accelerate, e, what, n1,
-                n1 + 16 * 256 - 1 < N ? n1 + 16 * 256 - 1 : N, &ks->wk);
+                n1 + MODE_CHUNK - 1 < N ? n1 + MODE_CHUNK - 1 : N, &ks->wk);
     }
     *done_to = N;
     if (o->terms > 0) return RS_OK;
@@ -442,11 +472,13 @@ static void add_modes_shear(const rs_cylinder *cyl, double wb, double wh, int ac
 {
   const int K = bx->K;
   double *c = bx->c, *s = bx->s, *aqu = bx->acc[KQU], *aqe = hx->acc[KQE];
+  basis_coefs(RS_BASIS_BOX, wb, n1, n2, bx->acoef);
+  basis_coefs(RS_BASIS_HAT, wh, n1, n2, hx->acoef);
   for (long n = n1; n <= n2; ++n) {
     if ((n - n1) % 256 == 0) reseed(K, bx->t, n, c, s);
     const double(*F)[2] = cyl->cache[n].F;
     double in = 1.0 / (double)n;
-    double ab = rs_cyl_basis_coef(RS_BASIS_BOX, wb, n), ah = rs_cyl_basis_coef(RS_BASIS_HAT, wh, n);
+    double ab = bx->acoef[n - n1], ah = hx->acoef[n - n1];
     double mqu = -F[0][1] * in, mqe = F[0][1] * in - F[1][1];
     if (accel) {
       mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
@@ -481,11 +513,11 @@ rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, i
   if (!st) st = closed_parts(cyl, RS_BASIS_BOX, wb, opts->accelerate, e, RS_KERNEL_QU, shift, M, 1, &kb);
   if (!st) st = closed_parts(cyl, RS_BASIS_HAT, wh, opts->accelerate, e, RS_KERNEL_QE, shift, M, 0, &kh);
   if (!st) st = rs_cyl_cache_reserve(cyl, N);
-  for (long n1 = 1; !st && n1 <= N; n1 += 16 * 256) {
+  for (long n1 = 1; !st && n1 <= N; n1 += MODE_CHUNK) {
     if (rs_cancel_requested())
       st = RS_ERROR(RS_ERR_INTERRUPTED, "interrupted while summing the kernel series");
     else
-      add_modes_shear(cyl, wb, wh, opts->accelerate, e, n1, n1 + 16 * 256 - 1 < N ? n1 + 16 * 256 - 1 : N,
+      add_modes_shear(cyl, wb, wh, opts->accelerate, e, n1, n1 + MODE_CHUNK - 1 < N ? n1 + MODE_CHUNK - 1 : N,
                       &kb.wk, &kh.wk);
   }
   if (!st) {
