@@ -309,6 +309,14 @@ rs_status rs_cyl_mode_solve(const rs_cyl_nd *nd, double rho0, long n, double F[2
   double coef[4][2], at1[4][4];
   rs_status st = basis_init(nd, rho0, n, &b);
   if (st) return st;
+  if (b.kind == 2) {
+    /* The core couples to the surface through (R0/R)^(n l), l the slower growing root
+     * (scaled): below 2^-64 of the rest the mode is the algebraic one to round-off (the
+     * 4 x 4 system is block triangular up to such entries), a 2 x 2 system (a thick
+     * roll's higher modes: the nip's mode cache of each new roll) */
+    double lmin = b.rt.d2 >= 0 ? b.rt.p / (0.5 * (b.rt.s + sqrt(b.rt.d2))) : 0.5 * b.rt.s;
+    if ((double)n * lmin * -log(rho0) > 45.0) return rs_cyl_mode_algebraic(nd, 1.0 / (double)n, F);
+  }
   st = mode_coefficients(&b, coef, at1); /* the surface values come with them */
   if (st) return st;
   double nf = (n >= 1) ? (double)n : 1.0;
