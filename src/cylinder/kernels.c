@@ -108,6 +108,34 @@ RS_VECTOR_CLONES static void rotate(int K, double *restrict c, double *restrict 
   }
 }
 
+/* One mode of two kernels and the rotation to the next, in one pass over the offsets
+ * (sweep2 on x = c, or on x = s when on_sin, then rotate): the same arithmetic as the
+ * two passes */
+RS_VECTOR_CLONES static void sweep2_rotate(int K, int on_sin, double *restrict a, double ma,
+                                           double *restrict b, double mb, double *restrict c,
+                                           double *restrict s, const double *restrict ct,
+                                           const double *restrict st)
+{
+  K &= ~3;
+  if (on_sin) {
+    for (int k = 0; k < K; ++k) {
+      double ck = c[k], sk = s[k];
+      a[k] += ma * sk;
+      b[k] += mb * sk;
+      c[k] = ck * ct[k] - sk * st[k];
+      s[k] = sk * ct[k] + ck * st[k];
+    }
+  } else {
+    for (int k = 0; k < K; ++k) {
+      double ck = c[k], sk = s[k];
+      a[k] += ma * ck;
+      b[k] += mb * ck;
+      c[k] = ck * ct[k] - sk * st[k];
+      s[k] = sk * ct[k] + ck * st[k];
+    }
+  }
+}
+
 /* (c, s) <- cos, sin of n t from the library functions (the rotation's restart) */
 static void reseed(int K, const double *t, long n, double *c, double *s)
 {
@@ -165,6 +193,10 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
       mpe -= e[KPE][0] + in * (e[KPE][1] + in * e[KPE][2]);
       mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
       mqe -= e[KQE][0] + in * (e[KQE][1] + in * e[KQE][2]);
+    }
+    if (cpu && cpe && !squ && !sqe) { /* the nip's pressure kernels */
+      sweep2_rotate(K, 0, apu, mpu * an, ape, mpe * an, c, s, wk->ct, wk->st);
+      continue;
     }
     if (cpu && cpe) sweep2(K, apu, mpu * an, ape, mpe * an, c);
     else if (cpu) sweep1(K, apu, mpu * an, c);
@@ -484,8 +516,7 @@ static void add_modes_shear(const rs_cylinder *cyl, double wb, double wh, int ac
       mqu -= e[KQU][0] + in * (e[KQU][1] + in * e[KQU][2]);
       mqe -= e[KQE][0] + in * (e[KQE][1] + in * e[KQE][2]);
     }
-    sweep2(K, aqu, mqu * ab, aqe, mqe * ah, s);
-    rotate(K, c, s, bx->ct, bx->st);
+    sweep2_rotate(K, 1, aqu, mqu * ab, aqe, mqe * ah, c, s, bx->ct, bx->st);
   }
 }
 
