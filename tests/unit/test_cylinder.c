@@ -323,6 +323,65 @@ static void closed_sums(void)
   CHECK(rs_cyl_closed_sums(RS_BASIS_HAT, 0.1, 0.1, S) == 0);
 }
 
+/* The closed sums on the grid of half cells (each piece boundary evaluated once for the
+ * offsets that share it) against the same sums offset by offset, hat and box, both
+ * parities of the grid, cos and sin sums; on a box's jump the sin k = 0 sum is infinite in
+ * both */
+static void closed_sums_grid(void)
+{
+  enum { NH = 81 };
+  for (int b = 0; b < 2; ++b) {
+    const double w = b == 0 ? 0.02 : 0.01, unit = b == 0 ? 0.5 * w : w;
+    long h2[NH];
+    double G[NH][6];
+    for (int i = 0; i < NH; ++i) h2[i] = i - NH / 2;
+    for (unsigned mask = 1; mask <= 2; ++mask) {
+      CHECK(rs_cyl_closed_sums_grid((rs_basis)b, w, NH, h2, mask, G) == RS_OK);
+      for (int i = 0; i < NH; ++i) {
+        double S[6];
+        rs_cyl_closed_sums_part((rs_basis)b, w, (double)h2[i] * unit, mask, S);
+        for (int k = mask == 1 ? 0 : 3; k < (mask == 1 ? 3 : 6); ++k) {
+          if (isinf(S[k])) {
+            CHECK(b == 1 && k == 3 && labs(h2[i]) == 1);
+            CHECK(G[i][k] == S[k]);
+          } else {
+            CHECK_ABS(G[i][k], S[k], 1e-13 * (1 + fabs(S[k])));
+          }
+        }
+      }
+    }
+  }
+}
+
+/* A mode whose core coupling (R0/R)^(n l) is below 2^-64 is solved as the algebraic
+ * (core-free) mode: the same compliance as the full 4 x 4 boundary-value problem
+ * (rs_cyl_mode_eval's unit loads at r = R), to round-off, for n on both sides of that */
+static void decoupled_mode(void)
+{
+  rs_ortho set[3] = {iso(), ortho_real(), ortho_complex()};
+  for (int s = 0; s < 3; ++s) {
+    rs_cylinder *c = NULL;
+    CHECK(rs_cylinder_create(&set[s], 0.5, 0.05, &c) == RS_OK);
+    if (!c) continue;
+    for (long n = 2; n <= 80; n += 3) {
+      double F[2][2], G[2][2], mx = 0;
+      CHECK(rs_cyl_mode_solve(&c->nd, c->rho0, n, F) == RS_OK);
+      for (int k = 0; k < 2; ++k) {
+        double U = 0, V = 0;
+        CHECK(rs_cyl_mode_eval(&c->nd, c->rho0, n, k == 0, k == 1, 1.0, 0.0, log(c->rho0), &U,
+                               &V) == RS_OK);
+        G[0][k] = -U * (double)n;
+        G[1][k] = V * (double)n;
+      }
+      for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 2; ++k) mx = fmax(mx, fabs(G[i][k]));
+      for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 2; ++k) CHECK_ABS(F[i][k], G[i][k], 1e-13 * mx);
+    }
+    rs_cylinder_destroy(&c);
+  }
+}
+
 /* p->u, p->eps even; q->u, q->eps odd (the task note had eps the other way round:
  * p gives an odd u_theta, whose theta-derivative is even) */
 static void parity(void)
@@ -503,6 +562,8 @@ static const check_case cases[] = {
     {"residual_ortho_real", residual_ortho_real},
     {"residual_ortho_complex", residual_ortho_complex},
     {"closed_sums", closed_sums},
+    {"closed_sums_grid", closed_sums_grid},
+    {"decoupled_mode", decoupled_mode},
     {"parity", parity},
     {"accelerate_vs_plain", accelerate_vs_plain},
     {"tol_mode", tol_mode},
