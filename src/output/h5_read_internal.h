@@ -1,5 +1,6 @@
-/* The reader's handle and what its two files share (h5_read.c: opening, numbers;
- * h5_read_text.c: strings, attributes, groups). Internal, not installed. */
+/* The reader's handle and what its files share (h5_read.c: the handle, numbers;
+ * h5_read_text.c: strings, attributes, groups; h5_read_open.c: opening, which reads through
+ * the other two). Internal, not installed. */
 #ifndef RS_OUTPUT_H5_READ_INTERNAL_H
 #define RS_OUTPUT_H5_READ_INTERNAL_H
 
