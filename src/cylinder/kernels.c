@@ -110,7 +110,8 @@ RS_VECTOR_CLONES static void rotate(int K, double *restrict c, double *restrict 
 
 /* One mode of two kernels and the rotation to the next, in one pass over the offsets
  * (sweep2 on x = c, or on x = s when on_sin, then rotate): the same arithmetic as the
- * two passes */
+ * two passes. The two loops differ only in x: one loop selecting x costs 2.5 M more
+ * instructions on the contact reel. */
 RS_VECTOR_CLONES static void sweep2_rotate(int K, int on_sin, double *restrict a, double ma,
                                            double *restrict b, double mb, double *restrict c,
                                            double *restrict s, const double *restrict ct,
