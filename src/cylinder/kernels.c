@@ -8,7 +8,7 @@
  * (F = n C A/R, C the mode compliance; eps = (v_r + dv_t/dtheta)/R.) The accelerated
  * series subtracts from each multiplier m(n) its expansion e0 + e1/n + e2/n^2 and adds
  * e0 S0 + e1 S1 + e2 S2 back, S_k the closed-form sums of sums.c. */
-#include "cylinder/internal.h"
+#include "cylinder/kernel_sum.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -18,7 +18,6 @@
 #include "util/error.h"
 #include "util/vector_clones.h"
 
-enum { KPU, KPE, KQU, KQE, NK };
 
 void rs_kernels_free(rs_kernels *k)
 {
@@ -66,17 +65,6 @@ static void multiplier_expansion(const rs_cylinder *c, double e[NK][3])
   e[KQE][1] = F[0][0][1] - F[1][1][1];
   e[KQE][2] = F[1][0][1] - F[2][1][1];
 }
-
-typedef struct work {
-  int K;                   /* offsets summed (the others follow by parity), padded to a
-                              multiple of 4 so that -O2 vectorises the sweeps */
-  const double *t;
-  double *c, *s, *ct, *st; /* cos, sin of n t and of t */
-  double *acc[NK];         /* partial sums */
-  double *acoef;           /* the basis' coefficients of the modes being added (MODE_CHUNK) */
-} work;
-
-enum { MODE_CHUNK = 16 * 256 }; /* modes added per call of add_modes */
 
 /* The sweeps over the offsets, as functions with restrict arguments and a trip count that
  * is a multiple of 4 (K & ~3 == K), which is what lets -O2 vectorise them. */
@@ -209,29 +197,6 @@ static void add_modes(const rs_cylinder *cyl, rs_basis basis, double w, int acce
   }
 }
 
-/* The summation's state: the offsets summed (t, nk of them; src maps every offset k of the
- * 2M - 1 to its summed twin, src[k] >= 0, or to its mirror, -(1 + mirror); h2 their
- * positions in half cells when they lie on that grid, else NULL), the closed-form parts,
- * the partial sums (wk.acc) and the previous doubling's totals (prev). A sum may share the
- * offsets of another (shared: its t, src and h2 are the other's). */
-typedef struct kernel_sum {
-  int K, nk, shared;
-  double *mem, *prevmem, *t, *closed[NK], *prev[NK];
-  int *src;
-  long *h2;
-  work wk;
-} kernel_sum;
-
-static void kernel_sum_free(kernel_sum *ks)
-{
-  free(ks->prevmem);
-  free(ks->mem);
-  if (!ks->shared) {
-    free(ks->src);
-    free(ks->h2);
-  }
-}
-
 static rs_status kernel_check(const rs_cylinder *cyl, rs_basis basis, double dx, double shift,
                               int M, double *w)
 {
@@ -245,151 +210,6 @@ static rs_status kernel_check(const rs_cylinder *cyl, rs_basis basis, double dx,
                     dx / cyl->R, *w);
   return RS_OK;
 }
-
-/* The work arrays of a sum over nk offsets (padded to Kp): t, c, s, ct, st, all offsets'
- * t, the partial sums and the closed parts; the sums and the closed parts zeroed. */
-static rs_status work_alloc(int Kp, int nk, kernel_sum *ks)
-{
-  double *mem = ks->mem = malloc(((size_t)Kp * (6 + 2 * NK) + MODE_CHUNK) * sizeof(double));
-  if (!mem) return RS_ERROR(RS_ERR_MEMORY, "kernel work space");
-  memset(mem + 6 * (size_t)Kp, 0, (size_t)Kp * 2 * NK * sizeof(double));
-  const int nkp = (nk + 3) & ~3;
-  ks->wk = (work){nkp, mem, mem + Kp, mem + 2 * Kp, mem + 3 * Kp, mem + 4 * Kp, {0}, NULL};
-  for (int j = 0; j < NK; ++j) {
-    ks->wk.acc[j] = mem + (size_t)(6 + j) * Kp;
-    ks->closed[j] = mem + (size_t)(6 + NK + j) * Kp;
-  }
-  ks->wk.acoef = mem + (size_t)(6 + 2 * NK) * Kp;
-  for (int i = nk; i < nkp; ++i) { /* padding offsets t = 0, never read back */
-    mem[i] = 0.0;
-    ks->wk.ct[i] = 1.0;
-    ks->wk.st[i] = 0.0;
-  }
-  return RS_OK;
-}
-
-/* The offsets to sum. Parity: pu, pe are even and qu, qe odd in the offset, so an offset
- * u = d + shift/dx (in cells) whose mirror -u is also in the set is computed once. With
- * 2 shift/dx an integer s2 the mirror of index k is 2(M-1) - s2 - k, and the offsets lie
- * on the grid of half cells (h2 = 2u). */
-static rs_status offsets_build(const rs_cylinder *cyl, double dx, double shift, int M,
-                               kernel_sum *ks)
-{
-  const int K = 2 * M - 1;
-  double s2r = 2 * shift / dx;
-  long s2 = lround(s2r);
-  int mirror = fabs(s2r - (double)s2) <= 1e-12 * fmax(1.0, fabs(s2r)) && labs(s2) < 2L * K;
-  const int Kp = (K + 3) & ~3; /* work arrays padded (see work.K) */
-  ks->K = K;
-  ks->src = malloc((size_t)K * sizeof *ks->src);
-  ks->h2 = mirror ? malloc((size_t)K * sizeof *ks->h2) : NULL;
-  rs_status st = ks->src && (ks->h2 || !mirror) ? work_alloc(Kp, K, ks)
-                                                 : RS_ERROR(RS_ERR_MEMORY, "kernel work space");
-  if (st) return st;
-  double *t = ks->mem, *tall = ks->mem + 5 * Kp;
-  int nk = 0;
-  for (int k = 0; k < K; ++k) {
-    tall[k] = rs_cyl_wrap(((double)(k - (M - 1)) * dx + shift) / cyl->R);
-    long km = mirror ? 2L * (M - 1) - s2 - k : -1;
-    double u = (double)(k - (M - 1)) + s2r / 2;
-    if (km >= 0 && km < K && km != k && u < 0) {
-      ks->src[k] = -1 - (int)km;
-    } else {
-      if (mirror) ks->h2[nk] = 2L * (k - (M - 1)) + s2;
-      ks->src[k] = nk;
-      t[nk++] = tall[k];
-    }
-  }
-  ks->nk = nk;
-  ks->t = t;
-  ks->wk.K = (nk + 3) & ~3;
-  for (int i = nk; i < ks->wk.K; ++i) {
-    t[i] = 0.0;
-    ks->wk.ct[i] = 1.0;
-    ks->wk.st[i] = 0.0;
-  }
-  return RS_OK;
-}
-
-/* A second sum on the offsets of `from` (its own partial sums and closed parts). */
-static rs_status offsets_share(const kernel_sum *from, kernel_sum *ks)
-{
-  const int Kp = (from->K + 3) & ~3;
-  rs_status st = work_alloc(Kp, from->nk, ks);
-  if (st) return st;
-  ks->shared = 1;
-  ks->K = from->K;
-  ks->nk = from->nk;
-  ks->src = from->src;
-  ks->h2 = from->h2;
-  memcpy(ks->mem, from->t, (size_t)ks->wk.K * sizeof(double));
-  ks->t = ks->mem;
-  return RS_OK;
-}
-
-/* The accelerated sums' closed-form parts at the summed offsets: on the grid of half
- * cells when the offsets lie on it away from +-pi (neighbouring offsets share their
- * pieces' boundary values), else offset by offset. */
-static rs_status closed_sums(rs_basis basis, double w, unsigned cmask, const kernel_sum *ks,
-                             double (*S)[6])
-{
-  int grid = ks->h2 != NULL;
-  for (int i = 0; grid && i < ks->nk; ++i) grid = fabs(ks->t[i]) + 2 * w < 3.0;
-  if (grid) return rs_cyl_closed_sums_grid(basis, w, ks->nk, ks->h2, cmask, S);
-  for (int i = 0; i < ks->nk; ++i) rs_cyl_closed_sums_part(basis, w, ks->t[i], cmask, S[i]);
-  return RS_OK;
-}
-
-/* cos t, sin t of each summed offset (trig: for the rotation of the modes' sweep), and the
- * closed-form part of each kernel there: the accelerated sums' e0 S0 + e1 S1 + e2 S2 and
- * the n = 0 term (uniform pressure; uniform shear, torsion, gives no w and no eps). */
-static rs_status closed_parts(rs_cylinder *cyl, rs_basis basis, double w, int accelerate,
-                              const double e[NK][3], unsigned what, double shift, int M,
-                              int trig, kernel_sum *ks)
-{
-  const unsigned cmask = (what & (RS_KERNEL_PU | RS_KERNEL_PE) ? 1u : 0u) |
-                         (what & (RS_KERNEL_QU | RS_KERNEL_QE) ? 2u : 0u);
-  double *const *closed = ks->closed;
-  for (int i = 0; i < ks->nk; ++i) {
-    double ti = ks->t[i];
-    if (trig) {
-      ks->wk.ct[i] = cos(ti);
-      ks->wk.st[i] = sin(ti);
-    }
-    if ((what & RS_KERNEL_QE) && basis == RS_BASIS_BOX && fabs(fabs(ti) - w) < 1e-10 * w) {
-      int k = 0;
-      while (ks->src[k] != i) ++k;
-      return RS_ERROR(RS_ERR_INPUT, "shear-to-strain kernel of a box is log-singular at its "
-                      "edge (offset %d dx %+g m)", k - (M - 1), shift);
-    }
-  }
-  if (accelerate) {
-    double (*S)[6] = malloc((size_t)ks->nk * sizeof *S);
-    rs_status st = S ? closed_sums(basis, w, cmask, ks, S)
-                     : RS_ERROR(RS_ERR_MEMORY, "closed sums at %d offsets", ks->nk);
-    if (st) {
-      free(S);
-      return st;
-    }
-    for (int i = 0; i < ks->nk; ++i) {
-      closed[KPU][i] = e[KPU][1] * S[i][1] + e[KPU][2] * S[i][2];
-      closed[KPE][i] = e[KPE][0] * S[i][0] + e[KPE][1] * S[i][1] + e[KPE][2] * S[i][2];
-      closed[KQU][i] = e[KQU][1] * S[i][4] + e[KQU][2] * S[i][5];
-      closed[KQE][i] = e[KQE][0] * S[i][3] + e[KQE][1] * S[i][4] + e[KQE][2] * S[i][5];
-    }
-    free(S);
-  }
-  rs_status st = rs_cyl_cache_reserve(cyl, 0);
-  if (st) return st;
-  double a0 = rs_cyl_basis_coef(basis, w, 0), F0 = cyl->cache[0].F[0][0];
-  for (int i = 0; i < ks->nk; ++i) {
-    closed[KPU][i] += a0 * F0;
-    closed[KPE][i] -= a0 * F0;
-  }
-  return RS_OK;
-}
-
-static const unsigned kernel_bit[NK] = {RS_KERNEL_PU, RS_KERNEL_PE, RS_KERNEL_QU, RS_KERNEL_QE};
 
 /* Doubling: converged when the last doubling moved each requested kernel by less than
  * tol/4 of its largest value. */
@@ -443,24 +263,6 @@ static rs_status series_sum(rs_cylinder *cyl, rs_basis basis, double w, const rs
   }
 }
 
-/* The kernels at every offset: the summed ones scaled (R/A for displacements, 1/A for
- * strains), the mirrored ones by parity (even p, odd q). */
-static void kernels_scatter(const rs_cylinder *cyl, const kernel_sum *ks, unsigned what,
-                            rs_kernels *out)
-{
-  double fu = cyl->R / cyl->A_ref, fe = 1.0 / cyl->A_ref;
-  double *dst[NK] = {out->pu, out->pe, out->qu, out->qe};
-  double fac[NK] = {fu, fe, fu, fe}, par[NK] = {1, 1, -1, -1};
-  const int *src = ks->src;
-  for (int j = 0; j < NK; ++j) {
-    if (!(what & kernel_bit[j])) continue;
-    for (int k = 0; k < ks->K; ++k)
-      if (src[k] >= 0) dst[j][k] = fac[j] * (ks->closed[j][src[k]] + ks->wk.acc[j][src[k]]);
-    for (int k = 0; k < ks->K; ++k)
-      if (src[k] < 0) dst[j][k] = par[j] * dst[j][-1 - src[k]];
-  }
-}
-
 rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, double shift, int M,
                               unsigned what, const rs_series_opts *opts, rs_kernels *out)
 {
@@ -481,18 +283,18 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
   double e[NK][3];
   long done_to = 0;
   multiplier_expansion(cyl, e);
-  st = offsets_build(cyl, dx, shift, M, &ks);
-  if (!st) st = closed_parts(cyl, basis, w, o.accelerate, e, what, shift, M, 1, &ks);
+  st = rs_cyl_offsets_build(cyl, dx, shift, M, &ks);
+  if (!st) st = rs_cyl_closed_parts(cyl, basis, w, o.accelerate, e, what, shift, M, 1, &ks);
   if (!st) st = series_sum(cyl, basis, w, &o, e, what, &ks, &done_to);
   if (!st) {
-    kernels_scatter(cyl, &ks, what, out);
+    rs_cyl_sum_scatter(cyl, &ks, what, out);
     out->M = M;
     out->basis = basis;
     out->dx = dx;
     out->shift = shift;
     out->terms = done_to;
   }
-  kernel_sum_free(&ks);
+  rs_cyl_sum_free(&ks);
   return st;
 }
 
@@ -540,10 +342,10 @@ rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, i
   double e[NK][3];
   const long N = opts->terms;
   multiplier_expansion(cyl, e);
-  st = offsets_build(cyl, dx, shift, M, &kb);
-  if (!st) st = offsets_share(&kb, &kh); /* the same offsets: built once */
-  if (!st) st = closed_parts(cyl, RS_BASIS_BOX, wb, opts->accelerate, e, RS_KERNEL_QU, shift, M, 1, &kb);
-  if (!st) st = closed_parts(cyl, RS_BASIS_HAT, wh, opts->accelerate, e, RS_KERNEL_QE, shift, M, 0, &kh);
+  st = rs_cyl_offsets_build(cyl, dx, shift, M, &kb);
+  if (!st) st = rs_cyl_offsets_share(&kb, &kh); /* the same offsets: built once */
+  if (!st) st = rs_cyl_closed_parts(cyl, RS_BASIS_BOX, wb, opts->accelerate, e, RS_KERNEL_QU, shift, M, 1, &kb);
+  if (!st) st = rs_cyl_closed_parts(cyl, RS_BASIS_HAT, wh, opts->accelerate, e, RS_KERNEL_QE, shift, M, 0, &kh);
   if (!st) st = rs_cyl_cache_reserve(cyl, N);
   for (long n1 = 1; !st && n1 <= N; n1 += MODE_CHUNK) {
     if (rs_cancel_requested())
@@ -553,8 +355,8 @@ rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, i
                       &kb.wk, &kh.wk);
   }
   if (!st) {
-    kernels_scatter(cyl, &kb, RS_KERNEL_QU, box_qu);
-    kernels_scatter(cyl, &kh, RS_KERNEL_QE, hat_qe);
+    rs_cyl_sum_scatter(cyl, &kb, RS_KERNEL_QU, box_qu);
+    rs_cyl_sum_scatter(cyl, &kh, RS_KERNEL_QE, hat_qe);
     rs_kernels *out[2] = {box_qu, hat_qe};
     for (int j = 0; j < 2; ++j) {
       out[j]->M = M;
@@ -564,7 +366,7 @@ rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, i
       out[j]->terms = N;
     }
   }
-  kernel_sum_free(&kb);
-  kernel_sum_free(&kh);
+  rs_cyl_sum_free(&kb);
+  rs_cyl_sum_free(&kh);
   return st;
 }
