@@ -10,7 +10,8 @@
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
- *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
+ *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape),
+ *                     and on a long roll a deeper lazy level that references leave alone
  *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and the exact corrector for the 2-component

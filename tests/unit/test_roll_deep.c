@@ -22,6 +22,11 @@
  *   restore_dissolves a roll rewound (rs_roll_restore) while a level holds nodes (the level
  *                     dissolved, the invariants holding after every increment that
  *                     follows) winds on as a one-level twin rewound alike, within 0.05 tol
+ *   failure_and_block an increment that overflows (T0 = 1e308 N/m) when a reference from a
+ *                     node above the core is due and a level holds nodes, then a lumped
+ *                     block of two layers (which dissolves the level): the invariants hold
+ *                     after each, and the roll winds on as a one-level twin put through
+ *                     the same, within 0.05 tol
  *   catches_broken    broken states of the level (a pending scale with no level, a level
  *                     above the lazy zone, a rebase factor that is not positive, bounds that
  *                     are not prefix maxima) are each reported by the invariant check */
@@ -200,6 +205,42 @@ out:
   rs_roll_destroy(&b);
 }
 
+/* the same steps on both rolls: an overflowing increment (T0 = 1e308 N/m, which fails),
+ * 50 layers, a lumped block of two, 50 layers */
+static int fail_then_block(rs_roll *r)
+{
+  const double huge = 1e308, T2[2] = {T0, T0};
+  CHECK(rs_roll_add_layers(r, 1, &huge) == RS_ERR_SOLVER);
+  const char *why = rsi_roll_check_invariants(r, 1);
+  if (why) fprintf(stderr, "  after the failed increment: %s\n", why);
+  CHECK(why == NULL);
+  if (!wind_to(r, r->n + 50, 1, NULL, NULL)) return 0;
+  CHECK(rs_roll_add_layers(r, 2, T2) == RS_OK);
+  CHECK(r->deep.top == 0); /* a lumped block dissolves a level */
+  return wind_to(r, r->n + 50, 1, NULL, NULL);
+}
+
+static void failure_and_block(void)
+{
+  const double rtol = TOL / RS_ACCURACY_PER_RTOL;
+  rs_roll *a = newsprint(10, RS_REUSE_ON, rtol), *b = newsprint(INT_MAX, RS_REUSE_ON, rtol);
+  if (!a || !b) goto out;
+  int n = 0; /* a level holds nodes and a reference from a node above the core is due */
+  while (n < N - 200 && !(a->deep.top > 100 && a->ref.age >= 32 && a->ref.deep < a->ref.deep_max))
+    if (!wind_to(a, ++n, 0, NULL, NULL)) goto out;
+  CHECK(a->deep.top > 100);
+  printf("  at %d layers, a level of %d nodes, a reference due\n", n, a->deep.top);
+  if (!wind_to(b, n, 0, NULL, NULL) || !fail_then_block(a) || !fail_then_block(b)) goto out;
+  double dc, dr;
+  differences(a, b, &dc, &dr);
+  printf("  failed, wound on, a block of two, wound on: core %.3e sigma_r %.3e\n", dc, dr);
+  CHECK_LT(dc, 0.05 * TOL);
+  CHECK_LT(dr, 0.05 * TOL);
+out:
+  rs_roll_destroy(&a);
+  rs_roll_destroy(&b);
+}
+
 static void catches_broken(void)
 {
   const double rtol = TOL / RS_ACCURACY_PER_RTOL;
@@ -243,5 +284,6 @@ static const check_case cases[] = {{"vs_one_level", vs_one_level},
                                    {"mis_summed_scale", mis_summed_scale},
                                    {"reads_match_full", reads_match_full},
                                    {"restore_dissolves", restore_dissolves},
+                                   {"failure_and_block", failure_and_block},
                                    {"catches_broken", catches_broken}};
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
