@@ -292,8 +292,9 @@ void rsi_roll_lazy_clear(rs_roll *roll)
  * negligible (|B| max|p_L| <= sqrt(0.02 tol): the remainder at most 1 % of tol). One
  * forms, when none exists, of the lazy nodes more than span x (n - from) below the node
  * (twice as far below the top: later references from a node above the core start at or
- * below it, rsi_roll_reuse_start), if they are at least min_nodes. Its scales are the zone's, which it continues; its bounds the zone's below
- * it, b_j (|d ln E_r/dP| e_j) bounding its drift since the last rebase with |c - c_r|. */
+ * below it, rsi_roll_reuse_start), if they are at least min_nodes. Its scales are the
+ * zone's, which it continues; its bounds the zone's below it, b_j (|d ln E_r/dP| e_j)
+ * bounding its drift since the last rebase with |c - c_r|. */
 int rsi_roll_deep_keep(rs_roll *roll, int from)
 {
   roll_deep *d = &roll->deep;
