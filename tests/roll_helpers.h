@@ -1,4 +1,4 @@
-/* Helpers shared by the roll-engine tests (validation/test_roll.c, hard/test_hard.c,
+/* Helpers shared by the roll-engine tests (validation/test_roll.c, hard/test_hard*.c,
  * unit/test_roll_state.c): parameters of a linear-law, Pfeiffer or Hakiel-quadratic roll, winding at a constant tension, and Altmann's closed
  * form for constant E_r. Needs check.h included first. */
 #ifndef RS_TESTS_ROLL_HELPERS_H

@@ -25,7 +25,11 @@ rs_status rs_h5_memfile_create(hid_t *file)
   /* The newest format this HDF5 writes (1.10's): every piece of metadata (superblock,
    * object headers, link and chunk indexes) then carries a checksum that HDF5 verifies
    * on reading; the 1.8 format still indexes chunks with unchecked v1 B-trees. */
-  if (fapl < 0 || H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) < 0 ||
+  /* The core driver grows its buffer in steps of 64 KiB and zeroes each step as it takes
+   * it: a larger step writes, and so has the kernel map, pages the file never uses (1 MiB
+   * steps: a 555 kB file zeroed 1 MiB). Beyond glibc's mmap threshold a step is an
+   * mremap, not a copy. */
+  if (fapl < 0 || H5Pset_fapl_core(fapl, (size_t)1 << 16, 0) < 0 ||
       H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST) < 0) {
     rs_h5_error_detail(detail, sizeof detail);
     if (fapl >= 0) H5Pclose(fapl);

@@ -134,6 +134,73 @@ static long long root_int(hid_t f, const char *obj, const char *name)
   return v;
 }
 
+/* The comparison file's run `2-second` (reader a) has the datasets and run attributes of
+ * the run file of the same run (reader b), bit for bit */
+static void same_as_run_file(rs_reader *a, rs_reader *b)
+{
+  const char *sets[] = {"/final/radius", "/final/sigma_r", "/final/sigma_theta",
+                        "/final/pressure", "/final/core_pressure", "/layers/radius",
+                        "/layers/wound_on_tension", "/layers/web_tension",
+                        "/layers/nip_load"};
+  for (size_t k = 0; k < sizeof sets / sizeof *sets; ++k) {
+    char p[256];
+    snprintf(p, sizeof p, "/runs/2-second%s", sets[k]);
+    double *x = NULL, *y = NULL;
+    size_t nx = 0, ny = 0;
+    CHECK(rs_reader_read_1d(a, p, &x, &nx) == RS_OK);
+    CHECK(rs_reader_read_1d(b, sets[k], &y, &ny) == RS_OK);
+    CHECK(nx == ny && x && y && same_bits(x, y, (int)nx));
+    free(x);
+    free(y);
+  }
+  const char *attrs[] = {"title", "scene_file", "scene"};
+  for (size_t k = 0; k < 3; ++k) {
+    char *x = NULL, *y = NULL;
+    CHECK(rs_reader_attr_string(a, "/runs/2-second", attrs[k], &x) == RS_OK);
+    CHECK(rs_reader_attr_string(b, "/", attrs[k], &y) == RS_OK);
+    CHECK(x && y && strcmp(x, y) == 0);
+    free(x);
+    free(y);
+  }
+}
+
+/* /summary of the comparison file (reader a): each figure of the two runs' results, in
+ * run order, and the runs' names */
+static void summary_in_run_order(rs_reader *a, rs_reel_result *const res[2])
+{
+  rs_reel_summary s[2];
+  rs_reel_summarize(res[0], &s[0]);
+  rs_reel_summarize(res[1], &s[1]);
+  const struct {
+    const char *name;
+    double v0, v1;
+  } fig[] = {{"core_pressure", s[0].core_pressure, s[1].core_pressure},
+             {"peak_pressure", s[0].peak_pressure, s[1].peak_pressure},
+             {"peak_pressure_radius", s[0].peak_pressure_radius, s[1].peak_pressure_radius},
+             {"min_hoop_stress", s[0].min_hoop, s[1].min_hoop},
+             {"min_hoop_stress_radius", s[0].min_hoop_radius, s[1].min_hoop_radius},
+             {"wot_min", s[0].wot_min, s[1].wot_min},
+             {"wot_max", s[0].wot_max, s[1].wot_max},
+             {"final_radius", s[0].final_radius, s[1].final_radius},
+             {"wall_seconds", res[0]->wall_seconds, res[1]->wall_seconds},
+             {"layers", 30, 45}};
+  for (size_t k = 0; k < sizeof fig / sizeof *fig; ++k) {
+    char p[128];
+    snprintf(p, sizeof p, "/summary/%s", fig[k].name);
+    double *v = NULL;
+    size_t n = 0;
+    CHECK(rs_reader_read_1d(a, p, &v, &n) == RS_OK);
+    CHECK(n == 2 && v && same_bits(&v[0], &fig[k].v0, 1) && same_bits(&v[1], &fig[k].v1, 1));
+    if (n == 2) printf("  %-24s %.17g %.17g\n", fig[k].name, v[0], v[1]);
+    free(v);
+  }
+  char **names = NULL;
+  size_t n = 0;
+  CHECK(rs_reader_read_strings(a, "/summary/run", &names, &n) == RS_OK);
+  CHECK(n == 2 && strcmp(names[0], "1-first") == 0 && strcmp(names[1], "2-second") == 0);
+  rs_reader_free_strings(&names, n);
+}
+
 /* Every run's layout equals a run file's; /summary holds rs_reel_summarize's figures. */
 static void compare_layout(void)
 {
@@ -154,66 +221,12 @@ static void compare_layout(void)
   CHECK(H5Aexists_by_name(f, "/", "title", H5P_DEFAULT) == 0); /* titles are per run */
   H5Fclose(f);
 
-  /* the same datasets and run attributes as the run file of the same run */
+  /* the same datasets and run attributes as the run file of the same run; /summary */
   rs_reader *a = NULL, *b = NULL;
   CHECK(rs_reader_open(cmp, &a) == RS_OK && rs_reader_open(one, &b) == RS_OK);
   if (a && b) {
-    const char *sets[] = {"/final/radius", "/final/sigma_r", "/final/sigma_theta",
-                          "/final/pressure", "/final/core_pressure", "/layers/radius",
-                          "/layers/wound_on_tension", "/layers/web_tension",
-                          "/layers/nip_load"};
-    for (size_t k = 0; k < sizeof sets / sizeof *sets; ++k) {
-      char p[256];
-      snprintf(p, sizeof p, "/runs/2-second%s", sets[k]);
-      double *x = NULL, *y = NULL;
-      size_t nx = 0, ny = 0;
-      CHECK(rs_reader_read_1d(a, p, &x, &nx) == RS_OK);
-      CHECK(rs_reader_read_1d(b, sets[k], &y, &ny) == RS_OK);
-      CHECK(nx == ny && x && y && same_bits(x, y, (int)nx));
-      free(x);
-      free(y);
-    }
-    const char *attrs[] = {"title", "scene_file", "scene"};
-    for (size_t k = 0; k < 3; ++k) {
-      char *x = NULL, *y = NULL;
-      CHECK(rs_reader_attr_string(a, "/runs/2-second", attrs[k], &x) == RS_OK);
-      CHECK(rs_reader_attr_string(b, "/", attrs[k], &y) == RS_OK);
-      CHECK(x && y && strcmp(x, y) == 0);
-      free(x);
-      free(y);
-    }
-    /* /summary, in run order */
-    rs_reel_summary s[2];
-    rs_reel_summarize(res[0], &s[0]);
-    rs_reel_summarize(res[1], &s[1]);
-    const struct {
-      const char *name;
-      double v0, v1;
-    } fig[] = {{"core_pressure", s[0].core_pressure, s[1].core_pressure},
-               {"peak_pressure", s[0].peak_pressure, s[1].peak_pressure},
-               {"peak_pressure_radius", s[0].peak_pressure_radius, s[1].peak_pressure_radius},
-               {"min_hoop_stress", s[0].min_hoop, s[1].min_hoop},
-               {"min_hoop_stress_radius", s[0].min_hoop_radius, s[1].min_hoop_radius},
-               {"wot_min", s[0].wot_min, s[1].wot_min},
-               {"wot_max", s[0].wot_max, s[1].wot_max},
-               {"final_radius", s[0].final_radius, s[1].final_radius},
-               {"wall_seconds", res[0]->wall_seconds, res[1]->wall_seconds},
-               {"layers", 30, 45}};
-    for (size_t k = 0; k < sizeof fig / sizeof *fig; ++k) {
-      char p[128];
-      snprintf(p, sizeof p, "/summary/%s", fig[k].name);
-      double *v = NULL;
-      size_t n = 0;
-      CHECK(rs_reader_read_1d(a, p, &v, &n) == RS_OK);
-      CHECK(n == 2 && v && same_bits(&v[0], &fig[k].v0, 1) && same_bits(&v[1], &fig[k].v1, 1));
-      if (n == 2) printf("  %-24s %.17g %.17g\n", fig[k].name, v[0], v[1]);
-      free(v);
-    }
-    char **names = NULL;
-    size_t n = 0;
-    CHECK(rs_reader_read_strings(a, "/summary/run", &names, &n) == RS_OK);
-    CHECK(n == 2 && strcmp(names[0], "1-first") == 0 && strcmp(names[1], "2-second") == 0);
-    rs_reader_free_strings(&names, n);
+    same_as_run_file(a, b);
+    summary_in_run_order(a, res);
   }
   rs_reader_close(&a);
   rs_reader_close(&b);

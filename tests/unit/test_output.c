@@ -520,113 +520,6 @@ static void failed_write_keeps_old_file(void)
   free(dir);
 }
 
-/* The chunked 2-D helper: values and NaNs come back bitwise, the layout is chunked
- * and compressed, and the dataset can grow with NaN in what was never written. */
-static void chunked_2d(void)
-{
-  char *dir = scratch_dir("output"), *path = scratch_join(dir, "h.h5");
-  const size_t S = 37, N = 5000; /* chunks cut both ways: 37 rows, 5000 > 4096 columns */
-  double *a = malloc(S * N * sizeof *a);
-  for (size_t s = 0; s < S; ++s)
-    for (size_t j = 0; j < N; ++j)
-      a[s * N + j] = j <= s * N / S ? -1.0e5 * (double)(s + 1) / (double)(j + 1) : NAN;
-  a[3] = -0.0;
-  /* The same path rs_output_write takes: in-memory file, image, staged write. */
-  hid_t f;
-  void *image = NULL;
-  size_t size = 0;
-  CHECK(rs_h5_memfile_create(&f) == RS_OK);
-  CHECK(rs_h5_write_2d_chunked(f, "sigma_r", a, S, N, "Pa", "history of sigma_r") == RS_OK);
-  CHECK(rs_h5_write_2d_chunked(f, "empty", NULL, 0, N, "Pa", "no stage yet") == RS_OK);
-  CHECK(rs_h5_memfile_image(f, &image, &size) == RS_OK);
-  H5Fclose(f);
-  CHECK(rs_atomic_file_write(path, image, size) == RS_OK);
-  CHECK_LOG("file bytes", size);
-  free(image);
-
-  f = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
-  hid_t d = H5Dopen2(f, "sigma_r", H5P_DEFAULT);
-  hid_t space = H5Dget_space(d);
-  hsize_t dims[2] = {0, 0}, chunk[2] = {0, 0};
-  CHECK(H5Sget_simple_extent_dims(space, dims, NULL) == 2);
-  CHECK(dims[0] == S && dims[1] == N);
-  double *b = malloc(S * N * sizeof *b);
-  CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, b) >= 0);
-  size_t bad = 0, nans = 0;
-  for (size_t i = 0; i < S * N; ++i) {
-    bad += !same_bits(a[i], b[i]);
-    nans += isnan(b[i]) != 0;
-  }
-  CHECK(bad == 0);
-  CHECK(nans > S * N / 3);
-  CHECK_LOG("NaN entries", nans);
-
-  hid_t dcpl = H5Dget_create_plist(d);
-  CHECK(H5Pget_layout(dcpl) == H5D_CHUNKED);
-  CHECK(H5Pget_chunk(dcpl, 2, chunk) == 2);
-  /* equal chunks each way: 5000 columns in 2 of 2500 (not 4096 + a mostly empty one), 37
-   * rows in 3 of 13 (32768 values a chunk) */
-  CHECK(chunk[0] == 13 && chunk[1] == 2500);
-  CHECK_LOG("chunk rows", chunk[0]);
-  CHECK_LOG("chunk cols", chunk[1]);
-  int has_deflate = 0, nf = H5Pget_nfilters(dcpl);
-  for (int i = 0; i < nf; ++i) {
-    unsigned flags, cd[8];
-    size_t ncd = 8;
-    char fname[64];
-    unsigned fc;
-    if (H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof fname, fname, &fc) ==
-        H5Z_FILTER_DEFLATE)
-      has_deflate = 1;
-  }
-  CHECK(has_deflate);
-  CHECK(attr_string_is(d, "units", "Pa"));
-  hsize_t stored = H5Dget_storage_size(d);
-  CHECK_LOG("compressed bytes / raw bytes", (double)stored / (double)(S * N * sizeof(double)));
-  CHECK(stored < S * N * sizeof(double));
-
-  /* Grow by one stage: the new row reads as NaN (the fill value) until written. */
-  hsize_t grown[2] = {S + 1, N};
-  CHECK(H5Dset_extent(d, grown) >= 0);
-  double *row = malloc(N * sizeof *row);
-  hid_t fs = H5Dget_space(d);
-  hsize_t start[2] = {S, 0}, count[2] = {1, N};
-  H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL);
-  hid_t ms = H5Screate_simple(1, &count[1], NULL);
-  CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, ms, fs, H5P_DEFAULT, row) >= 0);
-  size_t fill_nans = 0;
-  for (size_t j = 0; j < N; ++j) fill_nans += isnan(row[j]) != 0;
-  CHECK(fill_nans == N);
-  H5Sclose(ms);
-  H5Sclose(fs);
-  H5Pclose(dcpl);
-  H5Sclose(space);
-  H5Dclose(d);
-
-  d = H5Dopen2(f, "empty", H5P_DEFAULT);
-  CHECK(d >= 0);
-  space = H5Dget_space(d);
-  CHECK(H5Sget_simple_extent_dims(space, dims, NULL) == 2 && dims[0] == 0 && dims[1] == N);
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-
-  /* The chunk shape rule on its own: small arrays are one chunk. */
-  rs_h5_chunk_shape(10, 20, chunk);
-  CHECK(chunk[0] == 10 && chunk[1] == 20);
-  rs_h5_chunk_shape(0, 0, chunk);
-  CHECK(chunk[0] == 1 && chunk[1] == 1);
-  rs_h5_chunk_shape(100000, 100, chunk);
-  CHECK(chunk[0] * chunk[1] * sizeof(double) <= 256 * 1024 && chunk[1] == 100);
-
-  free(row);
-  free(a);
-  free(b);
-  free(path);
-  scratch_remove_tree(dir);
-  free(dir);
-}
-
 static const check_case cases[] = {
   {"round_trip", round_trip},
   {"zero_layers", zero_layers},
@@ -636,6 +529,5 @@ static const check_case cases[] = {
   {"not_a_regular_target", not_a_regular_target},
   {"readonly_directory", readonly_directory},
   {"failed_write_keeps_old_file", failed_write_keeps_old_file},
-  {"chunked_2d", chunked_2d},
 };
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
