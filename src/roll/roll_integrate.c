@@ -252,7 +252,10 @@ static rs_status roll_integration_start(rs_roll *roll, int first, int from_core,
     roll->L[0] = 0.0;
   }
   rsi_roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
-  if (roll->ref.from > 0) rsi_roll_reference_rebase(roll, first);
+  if (roll->ref.from > 0) { /* the deeper level carries the factor the others take */
+    rsi_roll_deep_rebased(roll, roll->prof.c, roll->prof.L[first]);
+    rsi_roll_reference_rebase(roll, first);
+  }
   rsi_roll_start_set(roll, first, start_C);
   return RS_OK;
 }

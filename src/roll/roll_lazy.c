@@ -317,8 +317,9 @@ int rsi_roll_deep_keep(rs_roll *roll, int from)
   return D;
 }
 
-/* A reference from a node above the core rebased the nodes from the deeper level's top up
- * by exp(C (p_L,j - p_L,from)) (rsi_roll_reference_rebase): the level carries the factor */
+/* A reference from node `from` above the core is about to rebase the nodes from the
+ * deeper level's top up by exp(C (p_L,j - p_L,from)) (rsi_roll_reference_rebase; C the
+ * drift scale, p_L,from the profile at the node): the level carries the factor */
 void rsi_roll_deep_rebased(rs_roll *roll, double C, double pL_from)
 {
   roll_deep *d = &roll->deep;

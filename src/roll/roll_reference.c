@@ -289,8 +289,8 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
   double *restrict Eref = roll->ref.Er;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L, *restrict E = roll->ode.Er;
-  /* the deeper level's nodes (roll_deep) stay as they are: the level carries the factor */
-  rsi_roll_deep_rebased(roll, C, pLf);
+  /* the deeper level's nodes (roll_deep) stay as they are: the level carries the factor
+   * (rsi_roll_deep_rebased, called before) */
   for (int j = roll->deep.top; j <= from; ++j) {
     const double a = C * (pL[j] - pLf);
     w[j] += C * pw[j];
