@@ -84,13 +84,36 @@ static const char *roll_check_lazy(const rs_roll *roll, int full)
   const roll_lazy *z = &roll->lazy;
   RS_CHECK(z->top == 0 || (z->top <= z->limit && z->limit <= roll->n),
            "a lazy zone lies within the nodes that existed when its scale started");
-  RS_CHECK(z->top > 0 || (z->c == 0.0 && z->c2 == 0.0), "an empty lazy zone has no pending scale");
+  RS_CHECK(z->top > roll->deep.top || (z->c == 0.0 && z->c2 == 0.0),
+           "an empty lazy zone has no pending scale");
   RS_CHECK(z->top == 0 || (z->allowed && z->top - 1 <= roll->ref.shape_top),
            "lazy nodes are allowed and covered by the reference's shape");
   RS_CHECK(isfinite(z->c) && isfinite(z->c2), "the lazy scales are finite");
-  for (int j = 1; full && j < z->top; ++j)
+  for (int j = roll->deep.top + 1; full && j < z->top; ++j)
     RS_CHECK(!(z->a[j] < z->a[j - 1]) && !(z->b[j] < z->b[j - 1]) && !(z->Lmax[j] < z->Lmax[j - 1]),
              "the lazy zone's drift bounds are prefix maxima");
+  return NULL;
+}
+
+/* the deeper lazy level (roll_deep) */
+static const char *roll_check_deep(const rs_roll *roll, int full)
+{
+  const roll_deep *d = &roll->deep;
+  RS_CHECK(d->min_nodes >= 1 && d->span > 0.0,
+           "the deeper level's least size is at least a node, its span positive");
+  RS_CHECK(d->top > 0 || (d->c == 0.0 && d->c2 == 0.0 && d->B == 0.0 && d->A == 1.0),
+           "an empty deeper level has no pending scale nor rebase factor");
+  RS_CHECK(isfinite(d->c) && isfinite(d->c2) && isfinite(d->B) && d->A > 0.0 && d->A < INFINITY,
+           "the deeper level's scales are finite and its rebase factor A positive");
+  if (d->top == 0) return NULL;
+  RS_CHECK(d->top <= roll->lazy.top && roll->lazy.top <= roll->lazy.limit,
+           "the deeper level lies within the lazy zone's nodes");
+  RS_CHECK(roll->shift && d->top - 1 <= roll->ref.shape_top,
+           "the deeper level has the load beneath and the reference's shape covers it");
+  const roll_lazy *z = &roll->lazy;
+  for (int j = 1; full && j < d->top; ++j)
+    RS_CHECK(!(z->a[j] < z->a[j - 1]) && !(z->b[j] < z->b[j - 1]) && !(z->Lmax[j] < z->Lmax[j - 1]),
+             "the deeper level's drift bounds are prefix maxima");
   return NULL;
 }
 
@@ -115,6 +138,7 @@ const char *rsi_roll_check_invariants(const rs_roll *roll, int full)
   if (!why) why = roll_check_reference(roll, full);
   if (!why) why = roll_check_profile(roll, full);
   if (!why) why = roll_check_lazy(roll, full);
+  if (!why) why = roll_check_deep(roll, full);
   if (!why) why = roll_check_air(roll, full);
   return why;
 }

@@ -232,13 +232,19 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
  * them while the increment is built, the reference's again after: rsi_roll_start_release).
  * A reference needs every node, and one from a node above the core (ref.from) has every
  * node leave the lazy zone too, to freeze again below its start with the lazy scale from
- * 0: only nodes that existed when that scale started can join the zone. */
+ * 0: only nodes that existed when that scale started can join the zone; on a long roll
+ * except those of the deeper level (roll_deep), which it keeps or forms. */
 static rs_status roll_integration_start(rs_roll *roll, int first, int from_core, double start_C)
 {
-  const int need = from_core || roll->ref.from > 0 ? 0 : first - 1, F = roll->lazy.top;
+  int need = from_core ? 0 : first - 1;
+  if (!from_core && roll->ref.from > 0) need = rsi_roll_deep_keep(roll, first); /* or 0 */
+  const int F = roll->lazy.top;
   if (need < F) {
-    rsi_roll_lazy_flush(roll, need);
-    rs_status st = rsi_roll_prepare_nodes(roll, need, F);
+    if (!from_core)
+      rsi_roll_lazy_flush(roll, need); /* below the deeper level: the level too (roll_deep) */
+    else if (rsi_roll_lazy_flush_core(roll))
+      rsi_roll_shape_cut(roll, -1); /* the level's nodes' shape stale: none until it is made */
+    rs_status st = rsi_roll_prepare_nodes(roll, roll->lazy.top, F);
     if (st) return st;
   }
   if (from_core) {
@@ -246,7 +252,10 @@ static rs_status roll_integration_start(rs_roll *roll, int first, int from_core,
     roll->L[0] = 0.0;
   }
   rsi_roll_wstep_store(roll, first); /* w at and below the start, from the last integration */
-  if (roll->ref.from > 0) rsi_roll_reference_rebase(roll, first);
+  if (roll->ref.from > 0) { /* the deeper level carries the factor the others take */
+    rsi_roll_deep_rebased(roll, roll->prof.c, roll->prof.L[first]);
+    rsi_roll_reference_rebase(roll, first);
+  }
   rsi_roll_start_set(roll, first, start_C);
   return RS_OK;
 }

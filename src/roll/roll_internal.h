@@ -10,7 +10,8 @@
  *   roll_increment.c  the stress increment of a block from (w, ln y), committed to the roll
  *   roll_layer.c      the same for one layer over the nodes above a reused start, in one pass
  *   roll_state.c      saving and restoring a roll's stresses
- *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape)
+ *   roll_lazy.c       the deep part's stresses kept lazy (a scale times the reference's shape),
+ *                     and on a long roll a deeper lazy level that references leave alone
  *   roll_profile.c    the reused deep part's first-order correction for the modulus drift
  *   roll_air.c        entrained air: the film under each layer in series with the stack
  *   vector2.c         CVODE's vector operations and the exact corrector for the 2-component
@@ -34,6 +35,10 @@
 enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
 /* references from a node above the core between two from the core (rsi_roll_reuse_start) */
 enum { RS_REF_DEEP_MAX = 4 };
+/* The deeper lazy level (roll_deep): a reference from a node above the core keeps the
+ * nodes more than twice as far below the top as its node in a level of their own when
+ * they are at least RS_DEEP_MIN_NODES (where it pays: a long roll) */
+enum { RS_DEEP_MIN_NODES = 50000 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
  * instead of when a step first looks (rsi_roll_lg2_range: the right-hand side then never
@@ -161,13 +166,14 @@ typedef struct roll_profile {
   double *w, *L;        /* [cap + 1] */
 } roll_profile;
 
-/* The lazy deep part (roll_lazy.c): nodes 0..top-1 hold stored values, their true
- * stresses being stored + c x shape (e, and h for Hakiel's hoop stress), plus c2 x e x
- * profile L for the radial stress with the deep part corrected.
- * Invariant: an empty zone (top = 0) has c = c2 = 0; a zone lies within the nodes that
- * existed when its scale started (top <= limit <= n), is allowed and covered by the
+/* The lazy deep part (roll_lazy.c): nodes deep.top..top-1 (below them the deeper level,
+ * roll_deep; deep.top is 0 without one) hold stored values, their true stresses being
+ * stored + c x shape (e, and h for Hakiel's hoop stress), plus c2 x e x profile L for the
+ * radial stress with the deep part corrected.
+ * Invariant: an empty zone (top = deep.top) has c = c2 = 0; a zone lies within the nodes
+ * that existed when its scale started (top <= limit <= n), is allowed and covered by the
  * reference's shape (top - 1 <= ref.shape_top); over it a, b and Lmax are prefix maxima
- * (never decreasing up the roll); c and c2 are finite. */
+ * (never decreasing up the roll) from deep.top; c and c2 are finite. */
 typedef struct roll_lazy {
   int top;
   int ok;               /* this increment may freeze nodes (one layer: no corrector) */
@@ -178,6 +184,35 @@ typedef struct roll_lazy {
   double *Lmax;         /* [cap + 1] max over nodes 0..j of L (the start search's) */
   double *view_r, *view_theta; /* [cap] the stresses in full, for readers (roll_lazy_view) */
 } roll_lazy;
+
+/* The deeper lazy level (roll_lazy.c; docs/roll-model.md, "The deeper lazy level"). On a
+ * long roll a reference from a node above the core leaves the nodes 0..top-1, far below
+ * its node, alone: their stresses are stored + e_j (c + c2 p_L,j), e and p_L as they were
+ * when the level formed; the reference's rebasing leaves their w, L, shape e and E_ref as
+ * they are, and the shape's rebase factor since, A exp(B p_L,j) (A the product of
+ * exp(-C p_L,from), B the sum of C, over the rebases), is carried in the scales to first
+ * order: an increment c' + c2' p_L of the current shape adds A c' to c and A (B c' + c2')
+ * to c2. Dissolved (the scales into the stored stresses, the rebase factors into w, L and
+ * e: rsi_roll_reference_carry) when a start or a reference reaches below top, at a
+ * reference from the core, a lumped block or a restore. Over nodes 0..top-1 the lazy
+ * zone's a, b and Lmax are the level's own prefix maxima (in the scale c continues); the
+ * lazy zone proper is top..lazy.top-1, its maxima starting afresh at top.
+ * Invariant: an empty level (top = 0) has c = c2 = B = 0 and A = 1; a level lies within
+ * the lazy zone (top <= lazy.top <= lazy.limit), with the load beneath the layer and
+ * covered by the reference's shape (top - 1 <= ref.shape_top); A > 0, and c, c2, B finite;
+ * min_nodes >= 1, span > 0; over its nodes the a, b and Lmax are prefix maxima. */
+typedef struct roll_deep {
+  int top;
+  int min_nodes;        /* the fewest nodes a level forms with (RS_DEEP_MIN_NODES; tests
+                           lower it: the level is then used on short rolls too) */
+  double span;          /* a level keeps the nodes more than span x (n - from) below a
+                           reference's node `from` (1; tests lower it) */
+  double c, c2;         /* true = stored + e (c + c2 p_L) */
+  double c_r;           /* c at the last rebase: the drift since is at most |c - c_r| b_j */
+  double A, B;          /* the shape's rebase factor since the level formed, A exp(B p_L) */
+  double pL_max;        /* max |p_L| over the level's nodes */
+  long formed;          /* levels formed so far (a work counter) */
+} roll_deep;
 
 /* Entrained air at its radius (roll_air.c): with films (and the load beneath) the nodes
  * sit at the real radii node_r (p.air_radius as each node was created), from the first
@@ -227,6 +262,7 @@ struct rs_roll {
   roll_reference ref;
   roll_profile prof;
   roll_lazy lazy;
+  roll_deep deep;
   roll_air air;
   /* Scratch [cap + 1] each, owned by no component: a function may use it for values that
    * do not survive the call (the drift profile's coefficients, roll_profile.c; the moduli
@@ -302,6 +338,7 @@ static inline double roll_log_ratio_small(double z)
 /* roll_lazy.c */
 void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
 void rsi_roll_lazy_flush(rs_roll *roll, int from);
+int rsi_roll_lazy_flush_core(rs_roll *roll);
 void rsi_roll_lazy_freeze(rs_roll *roll, int to);
 double rsi_roll_lazy_sigma(const rs_roll *roll, int j);
 const double *rsi_roll_lazy_view_r(rs_roll *roll);
@@ -310,6 +347,8 @@ int rsi_roll_lazy_allowed(const rs_roll_params *p);
 int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0);
 void rsi_roll_lazy_configure(rs_roll *roll, int m);
 void rsi_roll_lazy_clear(rs_roll *roll);
+int rsi_roll_deep_keep(rs_roll *roll, int from);
+void rsi_roll_deep_rebased(rs_roll *roll, double C, double pL_from);
 int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap);
 void rsi_roll_lazy_free(rs_roll *roll);
 
@@ -380,6 +419,7 @@ void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
 void rsi_roll_reference_end(rs_roll *roll, int k, int first);
 void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);
+void rsi_roll_reference_carry(rs_roll *roll, int top, double A, double B);
 void rsi_roll_reference_restored(rs_roll *roll);
 void rsi_roll_start_set(rs_roll *roll, int first, double C);
 void rsi_roll_start_restore(rs_roll *roll);

@@ -58,15 +58,49 @@ static void roll_lazy_shift(rs_roll *roll, int lo, int hi, double scale, double 
   }
 }
 
-/* Nodes [from, F) back to explicit stresses (their true values); F = from. */
+/* The deeper level dissolved (roll_deep, roll_internal.h): with stresses != 0 its scales
+ * go into the stored stresses (with the shape as it was when the level formed), then with
+ * carry != 0 its rebase factors into the nodes' w, L and shape (rsi_roll_reference_carry);
+ * the lazy zone above it must be empty. Every node below the old frontier is explicit
+ * after. */
+static void roll_deep_dissolve(rs_roll *roll, int stresses, int carry)
+{
+  roll_deep *d = &roll->deep;
+  if (d->top == 0) return;
+  if (stresses) roll_lazy_shift(roll, 0, d->top, d->c, d->c2);
+  if (carry) rsi_roll_reference_carry(roll, d->top, d->A, d->B);
+  roll->lazy.top = 0;
+  d->top = 0;
+  d->c = d->c2 = d->c_r = d->B = 0.0;
+  d->A = 1.0;
+}
+
+/* Nodes [from, F) back to explicit stresses (their true values); F = from. Below the
+ * deeper level's top (roll_deep) the whole level is dissolved: F = 0. */
 void rsi_roll_lazy_flush(rs_roll *roll, int from)
 {
-  const int F = roll->lazy.top;
+  const int F = roll->lazy.top, D = roll->deep.top;
   if (from < 0) from = 0;
   if (from >= F) return;
-  roll_lazy_shift(roll, from, F, roll->lazy.c, roll->lazy.c2);
-  roll->lazy.top = from;
-  if (from == 0) roll->lazy.c = roll->lazy.c2 = 0.0;
+  if (F > D) roll_lazy_shift(roll, from > D ? from : D, F, roll->lazy.c, roll->lazy.c2);
+  roll->lazy.top = from > D ? from : D;
+  if (roll->lazy.top == D) roll->lazy.c = roll->lazy.c2 = 0.0;
+  if (from < D) roll_deep_dissolve(roll, 1, 1);
+}
+
+/* Every node back to explicit stresses before a reference from the core, which integrates
+ * every node's (w, L) and makes the shape afresh: the deeper level's rebase factors are
+ * not carried into them (a pass with an exponential a node, for nothing). Returns 1 when a
+ * level held nodes: their shape is then stale until the reference's increment makes it. */
+int rsi_roll_lazy_flush_core(rs_roll *roll)
+{
+  if (roll->deep.top == 0) {
+    rsi_roll_lazy_flush(roll, 0);
+    return 0;
+  }
+  rsi_roll_lazy_flush(roll, roll->deep.top);
+  roll_deep_dissolve(roll, 1, 0);
+  return 1;
 }
 
 /* each node's a_j and b_j (the drift bound's, before the prefix maxima) from its modulus E,
@@ -92,12 +126,12 @@ enum { RS_FREEZE_BLOCK = 256 };
  * current, and the reference's shape covers them. */
 RS_VECTOR_CLONES static void roll_lazy_freeze_pass(rs_roll *roll, int to)
 {
-  const int F = roll->lazy.top;
+  const int F = roll->lazy.top, D = roll->deep.top;
   /* C sums the increments since it was last 0. A node wound after that was above some of
    * them: c e_j of those is no stress (e_j = exp(L_j - shape_L) grows up the roll, by
    * orders of magnitude on a very soft web) and stored = true - C e_j would cancel
    * catastrophically. So only nodes that existed when C started are frozen. */
-  if (F == 0 && roll->lazy.c == 0.0) roll->lazy.limit = roll->n;
+  if (F == D && roll->lazy.c == 0.0) roll->lazy.limit = roll->n;
   if (to > roll->lazy.limit) to = roll->lazy.limit;
   if (to <= F) return;
   const double C = roll->lazy.c, aC = fabs(C);
@@ -105,8 +139,9 @@ RS_VECTOR_CLONES static void roll_lazy_freeze_pass(rs_roll *roll, int to)
   double *restrict Pp = roll->scratch.c, *restrict Ep = roll->scratch.q;
   double *restrict la = roll->lazy.a, *restrict lb = roll->lazy.b, *restrict sl = roll->lazy.Lmax;
   const double *restrict P = roll->ode.P_node, *restrict L = roll->L;
-  double pa = F > 0 ? la[F - 1] : -INFINITY, pb = F > 0 ? lb[F - 1] : 0.0;
-  double pl = F > 0 ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
+  /* the zone's maxima start afresh above the deeper level (whose own are below it) */
+  double pa = F > D ? la[F - 1] : -INFINITY, pb = F > D ? lb[F - 1] : 0.0;
+  double pl = F > D ? sl[F - 1] : -INFINITY; /* and the prefix maxima of L */
   /* a block at a time, so that what one pass writes the next reads from the first-level
    * cache (at a reference the whole roll freezes: nine arrays of it, streamed once each,
    * not three times) */
@@ -135,11 +170,13 @@ void rsi_roll_lazy_freeze(rs_roll *roll, int to)
   roll_lazy_freeze_pass(roll, to);
 }
 
-/* sigma_r at node j (0: the core), lazy or not */
+/* sigma_r at node j (0: the core), lazy (in the zone or the deeper level) or not */
 double rsi_roll_lazy_sigma(const rs_roll *roll, int j)
 {
   const double s = j == 0 ? roll->core_sigma : roll->sigma_r[j - 1];
   if (j >= roll->lazy.top) return s;
+  if (j < roll->deep.top)
+    return s + roll->ref.shape_e[j] * (roll->deep.c + roll->deep.c2 * roll->prof.L[j]);
   return s + roll->ref.shape_e[j] * (roll->lazy.c + roll->lazy.c2 * roll->prof.L[j]);
 }
 
@@ -153,10 +190,19 @@ static const double *roll_lazy_view(const rs_roll *roll, const double *restrict 
   const int F = roll->lazy.top, n = roll->n;
   const double C = roll->lazy.c, *restrict pL = roll->prof.L;
   const int lazy_end = F - 1 < n ? F - 1 : n; /* layers 0..F-2 sit on lazy nodes 1..F-1 */
+  /* the deeper level's nodes 1..deep.top-1 (layers 0..deep.top-2; sigma_r only: the level
+   * needs the load beneath, whose hoop stresses are derived from the radial ones) */
+  const int deep_end = roll->deep.top - 1 < lazy_end ? roll->deep.top - 1 : lazy_end;
+  int j0 = 0;
+  if (deep_end > 0) {
+    const double Cd = roll->deep.c, Cd2 = roll->deep.c2;
+    for (int j = 0; j < deep_end; ++j) v[j] = stored[j] + shape[j + 1] * (Cd + Cd2 * pL[j + 1]);
+    j0 = deep_end;
+  }
   if (C2 != 0.0)
-    for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + shape[j + 1] * (C + C2 * pL[j + 1]);
+    for (int j = j0; j < lazy_end; ++j) v[j] = stored[j] + shape[j + 1] * (C + C2 * pL[j + 1]);
   else
-    for (int j = 0; j < lazy_end; ++j) v[j] = stored[j] + C * shape[j + 1];
+    for (int j = j0; j < lazy_end; ++j) v[j] = stored[j] + C * shape[j + 1];
   for (int j = lazy_end > 0 ? lazy_end : 0; j < n; ++j) v[j] = stored[j];
   return v;
 }
@@ -209,8 +255,15 @@ int rsi_roll_commit_deep(rs_roll *roll, int lo, double c, double c2, double ds0)
 {
   int j0 = 1;
   if (lo > 0 && roll->lazy.top > 0) {
-    roll->lazy.c += c;
-    roll->lazy.c2 += c2;
+    roll_deep *d = &roll->deep;
+    if (d->top > 0) { /* the current shape is A exp(B p_L) times the level's: first order */
+      d->c += d->A * c;
+      d->c2 += d->A * (d->B * c + c2);
+    }
+    if (roll->lazy.top > d->top) {
+      roll->lazy.c += c;
+      roll->lazy.c2 += c2;
+    }
     j0 = roll->lazy.top;
   } else {
     roll->core_sigma += lo > 0 ? c * roll->ref.shape_e[0] : ds0;
@@ -227,8 +280,53 @@ void rsi_roll_lazy_configure(rs_roll *roll, int m) { roll->lazy.ok = m == 1 && r
  * (rs_roll_restore) */
 void rsi_roll_lazy_clear(rs_roll *roll)
 {
+  roll_deep_dissolve(roll, 0, 1); /* the nodes' w, L and shape take the rebase factors */
   roll->lazy.top = 0;
   roll->lazy.c = roll->lazy.c2 = 0.0;
+}
+
+/* A reference from node `from` above the core is about to rebase the nodes below it
+ * (rsi_roll_reference_rebase): the node from which the nodes must leave the lazy zone, the
+ * deeper level's top, or 0 (every node: the level dissolved by the flush). A level kept
+ * stays while it lies below the node and its rebase factor's first-order remainder is
+ * negligible (|B| max|p_L| <= sqrt(0.02 tol): the remainder at most 1 % of tol). One
+ * forms, when none exists, of the lazy nodes more than span x (n - from) below the node
+ * (twice as far below the top: later references from a node above the core start at or
+ * below it, rsi_roll_reuse_start), if they are at least min_nodes. Its scales are the
+ * zone's, which it continues; its bounds the zone's below it, b_j (|d ln E_r/dP| e_j)
+ * bounding its drift since the last rebase with |c - c_r|. */
+int rsi_roll_deep_keep(rs_roll *roll, int from)
+{
+  roll_deep *d = &roll->deep;
+  const double factor_max = sqrt(0.02 * RS_ACCURACY_PER_RTOL * roll->p.rtol);
+  if (d->top > 0) return d->top < from && fabs(d->B) * d->pL_max <= factor_max ? d->top : 0;
+  int D = from - (int)(d->span * (roll->n - from));
+  if (D > from - 1) D = from - 1; /* the start's Hermite slope reads node from - 1 */
+  if (D > roll->lazy.top) D = roll->lazy.top;
+  if (!roll->shift || D < d->min_nodes) return 0;
+  const double *restrict pL = roll->prof.L;
+  double m = 0.0;
+  for (int j = 0; j < D; ++j) m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
+  d->pL_max = m;
+  d->top = D;
+  d->c = d->c_r = roll->lazy.c;
+  d->c2 = roll->lazy.c2;
+  d->A = 1.0;
+  d->B = 0.0;
+  d->formed++;
+  return D;
+}
+
+/* A reference from node `from` above the core is about to rebase the nodes from the
+ * deeper level's top up by exp(C (p_L,j - p_L,from)) (rsi_roll_reference_rebase; C the
+ * drift scale, p_L,from the profile at the node): the level carries the factor */
+void rsi_roll_deep_rebased(rs_roll *roll, double C, double pL_from)
+{
+  roll_deep *d = &roll->deep;
+  if (d->top == 0) return;
+  d->A *= exp(-C * pL_from);
+  d->B += C;
+  d->c_r = d->c; /* the drift since the last rebase is measured from here */
 }
 
 int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap)
@@ -237,6 +335,9 @@ int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap)
   double **const node_arrays[] = {&z->a, &z->b, &z->Lmax};
   double **const layer_arrays[] = {&z->view_r, &z->view_theta};
   z->allowed = rsi_roll_lazy_allowed(&roll->p);
+  roll->deep.A = 1.0;
+  roll->deep.min_nodes = RS_DEEP_MIN_NODES;
+  roll->deep.span = 1.0;
   return rsi_roll_calloc(node_arrays, 3, cap + 1) & rsi_roll_calloc(layer_arrays, 2, cap);
 }
 

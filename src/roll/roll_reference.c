@@ -62,6 +62,29 @@ static int roll_reuse_found(const rs_roll *roll, int lo, int second, double *C)
  * from the core; docs/roll-model.md). */
 static int roll_reuse_search(rs_roll *roll, int top, double tol, int second, double *C);
 
+/* The prefix maxima of the drift bound (*eps) and of L (*Lmax) over the lazy nodes 0..j:
+ * a + |C| b with the lazy zone's (roll_lazy.c); below the deeper level's top (roll_deep)
+ * the drift since the last rebase, |c - c_r| b with its scale, and L there up to
+ * |B| max|p_L| from its rebased value; above the level, the larger of the level's and the
+ * zone's (the zone's maxima start at its bottom) */
+static inline void roll_lazy_zone_bound(const rs_roll *roll, int j, double *eps, double *Lmax)
+{
+  const double *la = roll->lazy.a, *lb = roll->lazy.b, *pl = roll->lazy.Lmax;
+  const int D = roll->deep.top;
+  const double dC = fabs(roll->deep.c - roll->deep.c_r), dL = fabs(roll->deep.B) * roll->deep.pL_max;
+  if (j < D) {
+    *eps = dC * lb[j];
+    *Lmax = pl[j] + dL;
+    return;
+  }
+  *eps = la[j] + fabs(roll->lazy.c) * lb[j];
+  *Lmax = pl[j];
+  if (D > 0) {
+    *eps = fmax(*eps, dC * lb[D - 1]);
+    *Lmax = fmax(*Lmax, pl[D - 1] + dL);
+  }
+}
+
 int rsi_roll_reuse_start(rs_roll *roll, double *C)
 {
   const int n = roll->n;
@@ -111,16 +134,18 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second, dou
   const double *restrict Er = roll->ode.Er, *restrict Eref = roll->ref.Er, *restrict L = roll->L;
   const double Ls = L[n - roll->shift];
   /* below the lazy frontier F the drift is bounded by a + |C| b (roll_lazy.c) and scan_L
-   * holds the prefix maxima of L (L there is fixed until the next reference) */
+   * holds the prefix maxima of L (L there is fixed until the next reference); the deeper
+   * level's nodes and the zone's, each in their own scale (roll_lazy_zone_bound) */
   const int F = roll->lazy.top < top + 1 ? roll->lazy.top : top + 1;
-  const double aC = fabs(roll->lazy.c), *restrict la = roll->lazy.a, *restrict lb = roll->lazy.b;
-  const double *restrict pl = roll->lazy.Lmax;
   int lo = -1;
-  if (F > 0 && !(rsi_roll_profile_bound(la[F - 1] + aC * lb[F - 1], pl[F - 1], Ls, second) <= tol)) {
+  double me, ml;
+  if (F > 0) roll_lazy_zone_bound(roll, F - 1, &me, &ml);
+  if (F > 0 && !(rsi_roll_profile_bound(me, ml, Ls, second) <= tol)) {
     int hi = F - 1; /* E(lo) <= tol < E(hi), all lazy: bisection on the stored bounds */
     while (hi - lo > 1) {
       const int mid = lo + (hi - lo) / 2;
-      if (rsi_roll_profile_bound(la[mid] + aC * lb[mid], pl[mid], Ls, second) <= tol)
+      roll_lazy_zone_bound(roll, mid, &me, &ml);
+      if (rsi_roll_profile_bound(me, ml, Ls, second) <= tol)
         lo = mid;
       else
         hi = mid;
@@ -133,7 +158,10 @@ static int roll_reuse_search(rs_roll *roll, int top, double tol, int second, dou
    * a chain of dependent max operations through every node. The start is usually a block or
    * two above F: the drifts of the nodes above it are not formed */
   double *restrict eps = roll->ref.scan_eps;
-  double me = F > 0 ? la[F - 1] + aC * lb[F - 1] : 0.0, ml = F > 0 ? pl[F - 1] : -INFINITY;
+  if (F == 0) {
+    me = 0.0;
+    ml = -INFINITY;
+  }
   lo = F - 1;
   for (int b0 = F; b0 <= top; b0 += RS_SCAN_BLOCK) {
     const int b1 = b0 + RS_SCAN_BLOCK - 1 < top ? b0 + RS_SCAN_BLOCK - 1 : top;
@@ -261,7 +289,9 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
   double *restrict Eref = roll->ref.Er;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L, *restrict E = roll->ode.Er;
-  for (int j = 0; j <= from; ++j) {
+  /* the deeper level's nodes (roll_deep) stay as they are: the level carries the factor
+   * (rsi_roll_deep_rebased, called before) */
+  for (int j = roll->deep.top; j <= from; ++j) {
     const double a = C * (pL[j] - pLf);
     w[j] += C * pw[j];
     L[j] += C * pL[j];
@@ -276,6 +306,23 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
    * the node, but before anything can fail) */
   roll->ref.top = from;
   rsi_roll_profile_rebased(roll, from);
+}
+
+/* The deeper level's nodes 0..top-1 dissolved (roll_lazy.c): they take the rebases they
+ * were spared, (w, L) += B (p_w, p_L) and e *= A exp(B p_L) (B the sum of the rebases' C,
+ * A the product of their exp(-C p_L,from): the factors of rsi_roll_reference_rebase,
+ * whose profile there was the same at each); E_ref stays, so the drift there is measured
+ * since the level formed, on the safe side of the one since the last rebase. */
+void rsi_roll_reference_carry(rs_roll *roll, int top, double A, double B)
+{
+  if (B == 0.0 && A == 1.0) return;
+  double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
+  const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
+  for (int j = 0; j < top; ++j) {
+    w[j] += B * pw[j];
+    L[j] += B * pL[j];
+    e[j] *= A * roll_exp_step(B * pL[j]);
+  }
 }
 
 /* A new reference from node ref.from up, its increment committed: the nodes above it hold
