@@ -271,7 +271,13 @@ void rsi_roll_start_restore(rs_roll *roll)
 }
 
 /* A rewound roll (rs_roll_restore): the starts of the roll wound since do not apply */
-void rsi_roll_reference_restored(rs_roll *roll) { roll->ref.last_start = 0; }
+void rsi_roll_reference_restored(rs_roll *roll)
+{
+  roll->ref.last_start = 0;
+  /* the nodes above the restored roll's top are no longer part of the roll: their values
+   * are integrated afresh when they are wound again */
+  if (roll->ref.top > roll->n) roll->ref.top = roll->n;
+}
 
 /* ---- rebasing ------------------------------------------------------------------------- */
 

@@ -7,7 +7,11 @@
  *   catches_broken       each of a set of broken states (a pending lazy scale with no lazy
  *                        node, drift bounds that are not prefix maxima, a profile beyond
  *                        its bound, a shape beyond its bound, a reference above the roll)
- *                        is reported, by name; the state restored, none is */
+ *                        is reported, by name; the state restored, none is
+ *   holds_after_restore  a roll rewound to a saved state (rs_roll_restore, what the reel's
+ *                        adaptive nip policy does) satisfies every invariant at once, and
+ *                        winds on to the stresses of a roll never rewound, within the
+ *                        reuse's tolerance (1e-5 here) */
 #include <math.h>
 #include <string.h>
 
@@ -111,9 +115,39 @@ done:
   rs_roll_destroy(&roll);
 }
 
+static void holds_after_restore(void)
+{
+  rs_roll *roll = newsprint(RS_LOAD_BENEATH), *plain = newsprint(RS_LOAD_BENEATH);
+  rs_roll_state *saved = NULL;
+  CHECK(rs_roll_state_create(&saved) == RS_OK);
+  if (!roll || !plain || !saved) goto done;
+  const double T = 682.5;
+  for (int k = 0; k < N / 2; ++k) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
+  CHECK(rs_roll_save(roll, saved) == RS_OK);
+  for (int k = 0; k < N / 4; ++k) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
+  CHECK(roll->ref.top > N / 2); /* the reference reaches above the state to restore */
+  CHECK(rs_roll_restore(roll, saved) == RS_OK);
+  const char *why = rsi_roll_check_invariants(roll, 1);
+  printf("restored to %d layers: %s\n", rs_roll_layers(roll), why ? why : "every invariant holds");
+  CHECK(why == NULL);
+  for (int k = N / 2; k < N; ++k) CHECK(rs_roll_add_layers(roll, 1, &T) == RS_OK);
+  for (int k = 0; k < N; ++k) CHECK(rs_roll_add_layers(plain, 1, &T) == RS_OK);
+  CHECK(rsi_roll_check_invariants(roll, 1) == NULL);
+  const double *a = rs_roll_sigma_r(roll), *b = rs_roll_sigma_r(plain);
+  double d = 0.0;
+  for (int j = 0; j < N; ++j) d = fmax(d, fabs(a[j] - b[j]));
+  CHECK_LOG("max |sigma_r - never rewound| / core pressure", d / rs_roll_core_pressure(plain));
+  CHECK_LT(d / rs_roll_core_pressure(plain), 1e-5); /* p.rtol x RS_ACCURACY_PER_RTOL */
+done:
+  rs_roll_state_destroy(&saved);
+  rs_roll_destroy(&roll);
+  rs_roll_destroy(&plain);
+}
+
 static const check_case cases[] = {
     {"holds_while_winding", holds_while_winding},
     {"catches_broken", catches_broken},
+    {"holds_after_restore", holds_after_restore},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
