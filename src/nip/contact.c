@@ -155,7 +155,7 @@ void rs_nip_contact_forget(rs_nip_contact *nc)
  * the steel drum under a paper roll, 4e4 times) takes STIFF_TERMS: the accelerated series'
  * error falls about as terms^-3 (docs/cylinder.md), 64x the default's ~1e-6 of its own
  * kernels at 64 terms, and a body's kernels enter the contact weighted by its share of the
- * compliance, <= 1e-3: <= 1e-7 (measured: T0 1e-11, a 1.5e-8, test_nip_contact
+ * compliance, <= 1e-3: <= 1e-7 (measured: T0 1e-11, a 1.5e-8, test_nip_reel
  * .stiff_drum_terms). A given nip.terms (or tolerance) holds for both bodies. */
 enum { STIFF_TERMS = 64 };
 static const double STIFF_RATIO = 1e3;

@@ -1,0 +1,337 @@
+/* The winding nip contact solver on a paper roll against a steel drum, its numerics: no
+ * kink on a thin roll, no checkerboard, convergence in M, bad input refused, the iteration
+ * cap, warm starts equal to cold ones and along a reel, the stiff drum's series (the
+ * identities, limits and independent solutions: test_nip_contact.c). */
+#include <stdlib.h>
+
+#include "check.h"
+#include "nip/contact_internal.h"
+#include "nip/nip_contact.h"
+#include "validation/nip_setup.h"
+
+/* A roll thinner than 1 % of its radius is modelled with the thickness sqrt(t^2 + t_min^2),
+ * t_min = 0.01 R (docs/nip.md): T0(R) must be smooth where the first version's
+ * min(core, 0.99 R) switched, R = core / 0.99. There, with fixed load and surface pressure
+ * (newsprint, M = 24, the inputs of the reel test's scene), the old clamp changed the T0
+ * increment per 20 um step from 0.002 to 1.1 N/m; now neighbouring increments differ by
+ * less than half the largest one. */
+/* a newsprint-like stack (Pfeiffer K1 5e3, K2 60, 70 um, E_theta 3.5 GPa) of shear modulus G */
+static rs_material newsprint(double G)
+{
+  rs_material m = {0};
+  snprintf(m.name, sizeof m.name, "newsprint");
+  m.caliper = 70e-6;
+  m.E_theta = 3.5e9;
+  m.G_rtheta = G;
+  m.nu_rtheta = 0.01;
+  m.nu_md_cd = 0.3;
+  m.radial.law = RS_RADIAL_PFEIFFER;
+  m.radial.K1 = 5e3;
+  m.radial.K2 = 60;
+  return m;
+}
+
+/* A contact nip against a steel drum of radius 0.3 m over a rigid core of radius
+ * drum_core (m; the cover is the rest), the roll's friction 0.19, the drum's 0.35, on
+ * `nodes` nodes */
+static rs_nip_spec steel_drum_contact(rs_winder_kind winder, double drum_core, int nodes)
+{
+  rs_nip_spec sp = {0};
+  sp.model = RS_NIP_CONTACT;
+  sp.mu_roll = 0.19;
+  sp.mu_drum = 0.35;
+  sp.winder = winder;
+  sp.drum = (rs_drum){0.3, drum_core, 0, 2.1e11, 0.3, 0, 0, 0, 0};
+  sp.nodes = nodes;
+  return sp;
+}
+
+static void thin_roll_no_kink(void)
+{
+  rs_material m = newsprint(1e9);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_CENTER, 0.05, 24);
+  rs_nip_contact *nc = NULL;
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+  const double core = 0.0762, Rc = core / 0.99;
+  double T[7], dmax = 0, jump = 0;
+  for (int k = 0; k < 7; ++k) {
+    rs_nip_state st = {Rc + (k - 3) * 20e-6, core, 350, 985, 0, 6800};
+    rs_nip_solution r = {0};
+    CHECK(rs_nip_contact_solve_state(nc, &st, &r) == RS_OK);
+    T[k] = r.T0;
+    rs_nip_solution_free(&r);
+  }
+  for (int k = 1; k < 7; ++k) {
+    printf("  R = core/0.99 %+d x 20 um: T0 = %.10f  increment %.3e\n", k - 3, T[k], T[k] - T[k - 1]);
+    dmax = fmax(dmax, fabs(T[k] - T[k - 1]));
+    if (k > 1) jump = fmax(jump, fabs((T[k] - T[k - 1]) - (T[k - 1] - T[k - 2])));
+  }
+  CHECK_LOG("largest change of the increment / largest increment", jump / dmax);
+  CHECK_LT(jump, 0.5 * dmax);
+  rs_nip_contact_destroy(&nc);
+}
+
+/* The staggered discretisation: no node-to-node oscillation in the converged shear (the
+ * alternating component sum (-1)^e q_e / (M-1) is small against the mean |q|) and a
+ * bounded condition number. */
+static void no_checkerboard(void)
+{
+  setup s = paper_roll();
+  s.mu_roll = s.mu_drum = 1e3; /* full stick: the case where the literal collocation fails */
+  for (int pass = 0; pass < 2; ++pass) {
+    rs_nip_solution r = {0};
+    CHECK(solve(&s, 1750, 350, &r));
+    int E = r.M - 1;
+    for (int k = 0; k < 2; ++k) {
+      /* interior (two elements off each edge, where the full-stick shear is singular):
+       * detrended residual d_e = (q_{e-1} - 2 q_e + q_{e+1}) / 4 (a checkerboard
+       * A (-1)^e gives d = -A (-1)^e), its alternating component against mean |q|, and
+       * the sign changes of the first differences (a checkerboard changes at every step) */
+      const double *q = k ? r.shear_lower : r.shear_upper;
+      double alt = 0, mean = 0;
+      int n = 0, flips = 0;
+      for (int e = 3; e < E - 3; ++e, ++n) {
+        alt += (e % 2 ? -1 : 1) * 0.25 * (q[e - 1] - 2 * q[e] + q[e + 1]);
+        mean += fabs(q[e]);
+        if ((q[e + 1] - q[e]) * (q[e] - q[e - 1]) < 0) ++flips;
+      }
+      alt = fabs(alt) / n;
+      mean /= n;
+      CHECK_LOG(k ? "alternating / mean |q| (lower)" : "alternating / mean |q| (upper)", alt / mean);
+      CHECK_LOG(k ? "sign changes of dq (lower)" : "sign changes of dq (upper)", flips);
+      CHECK_LT(alt / mean, 0.05); /* a checkerboard gives O(1) */
+      CHECK(flips <= 6);          /* a checkerboard gives one per element (~57) */
+    }
+    CHECK_LOG("condition number", r.condition_number);
+    CHECK_LT(r.condition_number, 1e8);
+    rs_nip_solution_free(&r);
+    s.mu_roll = 0.3; /* second pass: mixed stick/slip */
+    s.mu_drum = 0.35;
+    s.E_r = s.G = s.E_zd = 3e8;
+  }
+}
+
+/* T0 converges as M grows; the observed order (about 2 here) is logged and must be at
+ * least 1. */
+static void convergence_in_M(void)
+{
+  setup s = paper_roll();
+  s.E_r = s.G = s.E_zd = 3e8;
+  s.mu_roll = 0.5; /* partial stick on both contacts: T0 is not simply Ti + mu P */
+  const int Ms[] = {17, 33, 65, 129};
+  double T[4];
+  for (int i = 0; i < 4; ++i) {
+    rs_nip_solution r = {0};
+    s.M = Ms[i];
+    CHECK(solve(&s, 6000, 350, &r));
+    T[i] = r.T0;
+    printf("  M = %-4d T0 = %.17g  a = %.17g\n", Ms[i], r.T0, r.a);
+    rs_nip_solution_free(&r);
+  }
+  double p_last = 0;
+  for (int i = 0; i + 2 < 4; ++i) {
+    double d1 = fabs(T[i + 1] - T[i]), d2 = fabs(T[i + 2] - T[i + 1]);
+    p_last = log(d1 / d2) / log(2.0);
+    CHECK_LOG("observed order", p_last);
+  }
+  CHECK(p_last >= 1.0);
+}
+
+static void expect_input(rs_status st, const char *key)
+{
+  CHECK(st == RS_ERR_INPUT);
+  CHECK(strstr(rs_error_message(), key) != NULL);
+  printf("  message: %s\n", rs_error_message());
+}
+
+static void bad_input(void)
+{
+  setup s = paper_roll();
+  rs_nip_solution r = {0};
+  rs_nip_contact *nc = make(&s);
+  /* a load no half-width up to 0.2 min(R1, R2) can carry */
+  expect_input(rs_nip_contact_solve_load(nc, 1e12, 350, &r), "nip.load");
+  rs_nip_contact_destroy(&nc);
+  /* negative friction */
+  rs_nip_contact_config c = {0};
+  CHECK(rs_ortho_isotropic(2.1e11, 0.3, 1, &c.drum) == RS_OK);
+  c.drum_radius = 0.3;
+  c.drum_core_radius = 0.05;
+  c.sheet = (rs_sheet){50e-6, 2e-10, 0, 3e-8, 1e-8};
+  c.nodes = 32;
+  c.mu_roll = -0.1;
+  expect_input(rs_nip_contact_create(&c, &nc), "nip.friction.roll");
+  c.mu_roll = 0.2;
+  c.mu_drum = -1;
+  expect_input(rs_nip_contact_create(&c, &nc), "nip.friction.drum");
+  /* a drum inside its core */
+  c.mu_drum = 0.3;
+  c.drum_core_radius = 0.4;
+  expect_input(rs_nip_contact_create(&c, &nc), "nip.drum.core_radius");
+  /* surface winder: the drum cannot carry Ti by friction when mu_drum P < Ti */
+  s.winder = RS_WINDER_SURFACE;
+  nc = make(&s);
+  expect_input(rs_nip_contact_solve_load(nc, 500, 350, &r), "nip.friction.drum");
+  CHECK(strstr(rs_error_message(), "nip.load") != NULL);
+  rs_nip_contact_destroy(&nc);
+  rs_nip_solution_free(&r);
+}
+
+/* The iteration terminates with RS_ERR_SOLVER and says what it tried when capped. */
+static void iteration_cap(void)
+{
+  setup s = paper_roll();
+  rs_nip_contact_config c = {0};
+  CHECK(rs_ortho_isotropic(2.1e11, 0.3, 1, &c.drum) == RS_OK);
+  c.drum_radius = s.Rd;
+  c.drum_core_radius = s.Rd0;
+  rs_sheet_constants k = {s.caliper, s.E_t, s.E_zd, s.E_t, s.nu, 0.3, s.nu, s.G, 1};
+  CHECK(rs_sheet_from_constants(&k, &c.sheet) == RS_OK);
+  c.mu_roll = 0.19;
+  c.mu_drum = 0.35;
+  c.nodes = 32;
+  c.max_iterations = 1;
+  rs_nip_contact *nc = NULL;
+  CHECK(rs_nip_contact_create(&c, &nc) == RS_OK);
+  rs_ortho_engineering e = {s.E_r, s.E_t, s.E_t, s.nu * s.E_r / s.E_t, s.nu * s.E_r / s.E_t, 0.3, s.G};
+  rs_ortho ro;
+  CHECK(rs_ortho_from_engineering(&e, 1, &ro) == RS_OK);
+  CHECK(rs_nip_contact_set_roll(nc, &ro, s.R, s.R0) == RS_OK);
+  rs_nip_solution r = {0};
+  /* cold, the LCP's set needs one confirming pass; warm from a much narrower nip, the
+   * iteration needs more than one */
+  CHECK(rs_nip_contact_solve_width(nc, 0.002, 350, &r) == RS_OK);
+  rs_status st = rs_nip_contact_solve_width(nc, 0.01, 350, &r);
+  printf("  message: %s\n", rs_error_message());
+  CHECK(st == RS_ERR_SOLVER);
+  CHECK(strstr(rs_error_message(), "passes") != NULL);
+  rs_nip_solution_free(&r);
+  rs_nip_contact_destroy(&nc);
+}
+
+/* Warm start: layer after layer (R + one caliper each, as a reel calls it: the half-width
+ * predicted from the previous layers, the kept factorization refined by GMRES) gives the
+ * same answer as a cold solve of the last layer (LCP start, new LU), in fewer half-width
+ * trials; the last layers need one trial each. */
+static void warm_equals_cold(void)
+{
+  setup s = paper_roll();
+  s.E_r = s.G = s.E_zd = 3e8; /* partial stick on both contacts */
+  s.mu_roll = 0.5;
+  rs_nip_contact *nc = make(&s);
+  rs_nip_solution w = {0}, c = {0};
+  CHECK(rs_nip_contact_solve_load(nc, 6000, 350, &w) == RS_OK);
+  rs_ortho ro = roll_of(&s);
+  int last_tries = 0;
+  for (int layer = 1; layer <= 10; ++layer) {
+    CHECK(rs_nip_contact_set_roll(nc, &ro, s.R + layer * 1e-4, s.R0) == RS_OK);
+    CHECK(rs_nip_contact_solve_load(nc, 6000, 350, &w) == RS_OK);
+    if (layer == 1) CHECK_LOG("warm half-width trials, first layer", w.width_iterations);
+    last_tries = w.width_iterations;
+  }
+  rs_nip_contact_forget(nc);
+  CHECK(rs_nip_contact_solve_load(nc, 6000, 350, &c) == RS_OK);
+  CHECK_LOG("warm half-width trials, 10th layer", last_tries);
+  CHECK_LOG("cold half-width trials", c.width_iterations);
+  CHECK_LOG("T0 warm - cold (N/m)", w.T0 - c.T0);
+  CHECK_LOG("a warm / cold - 1", w.a / c.a - 1);
+  CHECK_CLOSE(w.T0, c.T0, 1e-7);
+  CHECK_CLOSE(w.a, c.a, 1e-7);
+  CHECK(last_tries == 1);
+  CHECK(last_tries < c.width_iterations);
+  rs_nip_solution_free(&w);
+  rs_nip_solution_free(&c);
+  rs_nip_contact_destroy(&nc);
+}
+
+/* The warm load search along a reel (docs/nip.md, "Load -> half-width"): on a thin roll
+ * (R = 0.4 .. 2.8 mm above the core in steps of two calipers, where the slope d ln P / d ln a
+ * falls fastest, as on cases/newsprint-surface.yaml's first layers) the first step's slope,
+ * extrapolated from the last two searches' final secants, saves half-widths: 33 in 15 warm
+ * searches, 38 with the slope the previous search started from; and each warm solve agrees
+ * with a cold one (a new handle) to the search's tolerance. */
+static void warm_search_along_reel(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
+  rs_nip_contact *nc = NULL, *cold = NULL;
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+  rs_nip_solution w = {0}, c = {0};
+  int most = 0, total = 0;
+  double worst = 0;
+  for (int k = 0; k < 18; ++k) {
+    rs_nip_state st = {0.0766 + 1.4e-4 * k, 0.0762, 350, 1750, 0, 2e5};
+    CHECK(rs_nip_contact_solve_state(nc, &st, &w) == RS_OK);
+    CHECK(rs_nip_contact_create_from_spec(&sp, &m, &cold) == RS_OK);
+    CHECK(rs_nip_contact_solve_state(cold, &st, &c) == RS_OK);
+    rs_nip_contact_destroy(&cold);
+    worst = fmax(worst, fabs(w.T0 / c.T0 - 1));
+    if (k >= 3) {
+      most = w.width_iterations > most ? w.width_iterations : most;
+      total += w.width_iterations;
+    }
+  }
+  CHECK_LOG("most half-widths a warm search (4th on)", most);
+  CHECK_LOG("half-widths, 15 warm searches", total);
+  CHECK_LOG("largest |T0 warm / cold - 1|", worst);
+  CHECK(most <= 3);
+  CHECK(total <= 34);
+  CHECK_LT(worst, 3e-6); /* two searches each within load_rtol = 1e-6 of the load */
+  rs_nip_solution_free(&w);
+  rs_nip_solution_free(&c);
+  rs_nip_contact_destroy(&nc);
+}
+
+/* The default series gives a body much stiffer than the other fewer terms (contact.c,
+ * body_terms): the steel drum under the newsprint roll (H11 4e4 times smaller) 64 instead of
+ * 256. The reference is the same nip with nip.terms = 256 given, which holds for both
+ * bodies: T0 and the half-width agree far inside the load search's tolerance (1e-6). */
+static void stiff_drum_terms(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64), full = sp;
+  full.terms = 256;
+  double worst_T0 = 0, worst_a = 0;
+  long drum_terms = 0, roll_terms = 0;
+  for (int k = 0; k < 3; ++k) {
+    rs_nip_state st = {0.08 + 0.15 * k, 0.0762, 350, 1750, 0, 2e5};
+    rs_nip_contact *nc = NULL, *ref = NULL;
+    rs_nip_solution w = {0}, r = {0};
+    CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+    CHECK(rs_nip_contact_create_from_spec(&full, &m, &ref) == RS_OK);
+    /* the load search's tolerance tightened, so that the comparison sees the kernels */
+    nc->cfg.load_rtol = ref->cfg.load_rtol = 1e-12;
+    CHECK(rs_nip_contact_solve_state(nc, &st, &w) == RS_OK);
+    CHECK(rs_nip_contact_solve_state(ref, &st, &r) == RS_OK);
+    worst_T0 = fmax(worst_T0, fabs(w.T0 / r.T0 - 1));
+    worst_a = fmax(worst_a, fabs(w.a / r.a - 1));
+    drum_terms = nc->ker[1][KP].terms;
+    roll_terms = nc->ker[0][KP].terms;
+    CHECK(ref->ker[1][KP].terms == 256 && ref->ker[0][KP].terms == 256);
+    CHECK(nc->ker[1][KQU].terms == drum_terms && nc->ker[1][KQE].terms == drum_terms);
+    rs_nip_solution_free(&w);
+    rs_nip_solution_free(&r);
+    rs_nip_contact_destroy(&nc);
+    rs_nip_contact_destroy(&ref);
+  }
+  CHECK_LOG("drum terms", (double)drum_terms);
+  CHECK_LOG("roll terms", (double)roll_terms);
+  CHECK_LOG("largest |T0 / T0_256 - 1|", worst_T0);
+  CHECK_LOG("largest |a / a_256 - 1|", worst_a);
+  CHECK(drum_terms == 64 && roll_terms == 256);
+  CHECK_LT(worst_T0, 1e-7);
+  CHECK_LT(worst_a, 1e-7);
+}
+
+static const check_case cases[] = {
+    {"thin_roll_no_kink", thin_roll_no_kink},
+    {"no_checkerboard", no_checkerboard},
+    {"convergence_in_M", convergence_in_M},
+    {"bad_input", bad_input},
+    {"iteration_cap", iteration_cap},
+    {"warm_equals_cold", warm_equals_cold},
+    {"warm_search_along_reel", warm_search_along_reel},
+    {"stiff_drum_terms", stiff_drum_terms},
+};
+
+int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
