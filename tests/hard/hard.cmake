@@ -9,5 +9,6 @@ rs_test(test_hard_load hard SOURCES hard/test_hard_load.c
 # The contact nip at the edges of its physics and numerics (docs/robustness.md).
 rs_test(test_hard_nip hard SOURCES hard/test_hard_nip.c
         CASES rubber_cover_099 friction_zero friction_two light_load_hertz light_load_winkler
-              heavy_load complex_roots_continuity nodes_400 taper_to_zero taper_t0_zero
-              iteration_budget nip_failure_keeps_finished)
+              heavy_load complex_roots_continuity nodes_400)
+rs_test(test_hard_nip_reel hard SOURCES hard/test_hard_nip_reel.c
+        CASES taper_to_zero taper_t0_zero iteration_budget nip_failure_keeps_finished)
