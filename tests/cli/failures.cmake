@@ -41,7 +41,7 @@ rs_cli_test(keep_partial_check_refused 2 [[check: --keep-partial only applies to
 # the drum cannot carry the rising tension part-way: known before winding, so refused by
 # check and run alike (exit 2, nothing wound), naming the keys and the radius. (The reel's
 # own refusal part-way, exit 3, is for problems made without a scene:
-# test_hard_nip.nip_failure_keeps_finished.)
+# test_hard_nip_reel.nip_failure_keeps_finished.)
 rs_cli_test(fail_drum_check 2
   [[drum-midrun\.yaml:[0-9]+: nip\.friction\.drum: the drum cannot carry the web by friction from roll radius r = 0\.08[0-9]* m \(layer [0-9]+ of 169\) on: nip\.friction\.drum x nip\.load = 0\.35 x 1750 = 612\.5 N/m is not above winding\.tension = 61[0-9.]+ N/m, all of which the drum carries on a surface winder]]
   check ${SC}/drum-midrun.yaml)
