@@ -75,6 +75,17 @@ static inline double rs_cyl_wrap(double t)
 /* sums.c: Fourier cosine coefficient a_n (n >= 0) of the basis on the circle. */
 double rs_cyl_basis_coef(rs_basis basis, double w, long n);
 
+/* a_n for n >= 1 from s = sin(n y), y = w/2 for a hat, w for a box (what kernels.c advances
+ * by rotation): hat (w/pi) (sin(n w/2) / (n w/2))^2, box 2 sin(n w) / (pi n) */
+static inline double rs_cyl_basis_coef_sin(rs_basis basis, double w, long n, double s)
+{
+  if (basis == RS_BASIS_HAT) {
+    double sc = s / (0.5 * (double)n * w);
+    return w / RS_PI * sc * sc;
+  }
+  return 2.0 / (RS_PI * (double)n) * s;
+}
+
 /* cylinder.c: makes sure the cache holds modes 0..nmax. */
 rs_status rs_cyl_cache_reserve(rs_cylinder *cyl, long nmax);
 

@@ -134,7 +134,7 @@ static void reseed(int K, const double *t, long n, double *c, double *s)
   }
 }
 
-/* a[i] = a_(n1 + i), i <= n2 - n1, the basis' cosine coefficients (rs_cyl_basis_coef):
+/* a[i] = a_(n1 + i), i <= n2 - n1, the basis' cosine coefficients (rs_cyl_basis_coef_sin):
  * sin(n y) advanced by rotation like the offsets' cos/sin (restarted from the library's
  * every 256 modes: n1 is a restart), instead of a sin() a mode */
 static void basis_coefs(rs_basis basis, double w, long n1, long n2, double *a)
@@ -146,12 +146,7 @@ static void basis_coefs(rs_basis basis, double w, long n1, long n2, double *a)
       c = cos((double)n * y);
       s = sin((double)n * y);
     }
-    if (basis == RS_BASIS_HAT) {
-      double sc = s / (0.5 * (double)n * w);
-      a[n - n1] = w / RS_PI * sc * sc;
-    } else {
-      a[n - n1] = 2.0 / (RS_PI * (double)n) * s;
-    }
+    a[n - n1] = rs_cyl_basis_coef_sin(basis, w, n, s);
     double cn = c * c1 - s * s1;
     s = s * c1 + c * s1;
     c = cn;

@@ -183,13 +183,9 @@ static pieces make_pieces(rs_basis basis, double w)
 
 double rs_cyl_basis_coef(rs_basis basis, double w, long n)
 {
-  if (basis == RS_BASIS_HAT) {
-    if (n == 0) return w / (2 * RS_PI);
-    double y = 0.5 * (double)n * w, sc = sin(y) / y;
-    return w / RS_PI * sc * sc;
-  }
-  if (n == 0) return w / RS_PI;
-  return 2.0 / (RS_PI * (double)n) * sin((double)n * w);
+  if (n == 0) return basis == RS_BASIS_HAT ? w / (2 * RS_PI) : w / RS_PI;
+  const double y = basis == RS_BASIS_HAT ? 0.5 * (double)n * w : (double)n * w;
+  return rs_cyl_basis_coef_sin(basis, w, n, sin(y));
 }
 
 /* What a piece boundary at u contributes: the elementary antiderivatives (antider) and
