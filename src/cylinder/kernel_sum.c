@@ -166,7 +166,7 @@ rs_status rs_cyl_closed_parts(rs_cylinder *cyl, rs_basis basis, double w, int ac
 /* The kernels at every offset: the summed ones scaled (R/A for displacements, 1/A for
  * strains), the mirrored ones by parity (even p, odd q). */
 void rs_cyl_sum_scatter(const rs_cylinder *cyl, const kernel_sum *ks, unsigned what,
-                            rs_kernels *out)
+                        rs_kernels *out)
 {
   double fu = cyl->R / cyl->A_ref, fe = 1.0 / cyl->A_ref;
   double *dst[NK] = {out->pu, out->pe, out->qu, out->qe};

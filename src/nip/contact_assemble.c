@@ -101,7 +101,7 @@ void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
     for (int ee = 0; ee < E; ++ee) {
       double *col = nc->A + (size_t)COL_Q(kk, ee) * n;
       const double *u = qu + (M - 1 - ee);
-      for (int i = 0; i <= ee; ++i) col[i] = u[i] - 0.0;
+      for (int i = 0; i <= ee; ++i) col[i] = u[i];
       for (int i = ee + 1; i < M; ++i) col[i] = u[i] - c12dx;
       for (int k = 0; k < 2; ++k) {
         double *st = col + M + k * E;
@@ -112,13 +112,13 @@ void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti)
           stick_rsub(ee, st, 0.0, qe, kp);
           if (ee < E) st[ee] = (f * dx * 0.125 - qe[ee]) * kp[ee];
           if (ee + 1 < E) st[ee + 1] = (f * dx * 0.875 - qe[ee + 1]) * kp[ee + 1];
-          if (ee + 2 < E) stick_rsub(E - ee - 2, st + ee + 2, f * dx * 1.0, qe + ee + 2, kp + ee + 2);
+          if (ee + 2 < E) stick_rsub(E - ee - 2, st + ee + 2, f * dx, qe + ee + 2, kp + ee + 2);
           if (kp[ee] == 0.0) st[ee] = 1.0; /* slip: q_k,e = ... */
         } else {
           for (int e = 0; e < ee; ++e) st[e] = 0.0;
           if (ee < E) st[ee] = f * dx * 0.125 * kp[ee];
           if (ee + 1 < E) st[ee + 1] = f * dx * 0.875 * kp[ee + 1];
-          for (int e = ee + 2; e < E; ++e) st[e] = f * dx * 1.0 * kp[e];
+          for (int e = ee + 2; e < E; ++e) st[e] = f * dx * kp[e];
         }
       }
       col[3 * M - 2] = -dx;
