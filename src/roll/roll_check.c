@@ -78,6 +78,15 @@ static const char *roll_check_profile(const rs_roll *roll, int full)
   return NULL;
 }
 
+/* the lazy drift bounds a, b and Lmax never fall over the nodes [lo, hi) (prefix maxima
+ * starting at lo: the deeper level's from 0, the lazy zone's from the level's top) */
+static int lazy_maxima_rise(const roll_lazy *z, int lo, int hi)
+{
+  for (int j = lo + 1; j < hi; ++j)
+    if (z->a[j] < z->a[j - 1] || z->b[j] < z->b[j - 1] || z->Lmax[j] < z->Lmax[j - 1]) return 0;
+  return 1;
+}
+
 /* the lazy deep part (roll_lazy) */
 static const char *roll_check_lazy(const rs_roll *roll, int full)
 {
@@ -89,9 +98,8 @@ static const char *roll_check_lazy(const rs_roll *roll, int full)
   RS_CHECK(z->top == 0 || (z->allowed && z->top - 1 <= roll->ref.shape_top),
            "lazy nodes are allowed and covered by the reference's shape");
   RS_CHECK(isfinite(z->c) && isfinite(z->c2), "the lazy scales are finite");
-  for (int j = roll->deep.top + 1; full && j < z->top; ++j)
-    RS_CHECK(!(z->a[j] < z->a[j - 1]) && !(z->b[j] < z->b[j - 1]) && !(z->Lmax[j] < z->Lmax[j - 1]),
-             "the lazy zone's drift bounds are prefix maxima");
+  RS_CHECK(!full || lazy_maxima_rise(z, roll->deep.top, z->top),
+           "the lazy zone's drift bounds are prefix maxima");
   return NULL;
 }
 
@@ -110,10 +118,8 @@ static const char *roll_check_deep(const rs_roll *roll, int full)
            "the deeper level lies within the lazy zone's nodes");
   RS_CHECK(roll->shift && d->top - 1 <= roll->ref.shape_top,
            "the deeper level has the load beneath and the reference's shape covers it");
-  const roll_lazy *z = &roll->lazy;
-  for (int j = 1; full && j < d->top; ++j)
-    RS_CHECK(!(z->a[j] < z->a[j - 1]) && !(z->b[j] < z->b[j - 1]) && !(z->Lmax[j] < z->Lmax[j - 1]),
-             "the deeper level's drift bounds are prefix maxima");
+  RS_CHECK(!full || lazy_maxima_rise(&roll->lazy, 0, d->top),
+           "the deeper level's drift bounds are prefix maxima");
   return NULL;
 }
 
