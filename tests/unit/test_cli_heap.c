@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "smaps.h"
 #include "cli/heap.h"
 
 enum { MIB = 1 << 20 };
@@ -25,41 +26,12 @@ static int allocator_replaced(void)
 #endif
 }
 
-/* 1 when the kernel has transparent huge pages at all (any mode, "never" included). */
-static int kernel_has_thp(void)
-{
-  FILE *f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
-  if (!f) return 0;
-  fclose(f);
-  return 1;
-}
-
-/* 1 when the mapping that holds `addr` carries the huge-page advice (VmFlags "hg"). */
-static int mapping_advised_huge(const void *addr)
-{
-  FILE *f = fopen("/proc/self/smaps", "r");
-  if (!f) return -1;
-  char line[512];
-  int inside = 0, found = 0;
-  uintptr_t a = (uintptr_t)addr;
-  while (fgets(line, sizeof line, f)) {
-    unsigned long lo, hi;
-    if (sscanf(line, "%lx-%lx ", &lo, &hi) == 2) inside = (a >= lo && a < hi); /* a mapping's head */
-    if (inside && strncmp(line, "VmFlags:", 8) == 0) {
-      found = strstr(line, " hg") != NULL;
-      break;
-    }
-  }
-  fclose(f);
-  return found;
-}
-
 static void marks_reserve(void)
 {
   void *first = (void *)1;
   size_t marked = cli_heap_prepare((size_t)8 * MIB, &first);
   CHECK_LOG("bytes marked", marked);
-  if (!kernel_has_thp() || (allocator_replaced() && marked == 0)) { /* ASan refuses mallopt */
+  if (!smaps_kernel_has_thp() || (allocator_replaced() && marked == 0)) { /* ASan refuses mallopt */
     CHECK(marked == 0 && first == NULL);
     return;
   }
@@ -67,7 +39,7 @@ static void marks_reserve(void)
   CHECK(marked >= (size_t)4 * MIB && marked <= (size_t)8 * MIB);
   CHECK(marked % (2 * MIB) == 0);
   CHECK(((uintptr_t)first & (2 * MIB - 1)) == 0);
-  CHECK(mapping_advised_huge(first) == 1);
+  CHECK(smaps_advised_huge(first) == 1);
 }
 
 /* Blocks allocated after the preparation come from the marked span, from its start: the
@@ -89,7 +61,7 @@ static void blocks_from_reserve(void)
     const uintptr_t lo = (uintptr_t)first, hi = lo + marked;
     CHECK((uintptr_t)small >= lo - 64 && (uintptr_t)small < lo + 4096);
     CHECK((uintptr_t)b >= lo && (uintptr_t)b + 4 * MIB <= hi);
-    CHECK(mapping_advised_huge(b + 2 * MIB) == 1);
+    CHECK(smaps_advised_huge(b + 2 * MIB) == 1);
   }
   free(small);
   free(b);
