@@ -62,6 +62,13 @@ struct rs_nip_contact {
   double k_a;                /* a of the kernels, 0 = none */
   long k_roll_version;
   rs_kernels ker[2][NKER];
+  /* a much stiffer body's kernels as last summed, at half-width ref_a[b] (0: none), of roll
+   * version ref_version for the roll: nearby half-widths rescale them (contact.c) */
+  rs_kernels ref[2][NKER];
+  double ref_a[2];
+  long ref_version;
+  long stats_rescaled;       /* kernel sets rescaled instead of summed (benchmarks) */
+  int no_rescale;            /* tests: sum every kernel set */
   /* active set: per contact (0 upper, 1 lower) and element: 0 stick, +1 / -1 slip with
    * the sign of the friction traction on the cylinder */
   signed char *state;        /* 2 (M-1) */

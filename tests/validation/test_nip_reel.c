@@ -9,6 +9,10 @@
 #include "nip/nip_contact.h"
 #include "validation/nip_setup.h"
 
+#ifndef RESCALE_TEST_DR
+#define RESCALE_TEST_DR 0.0015
+#endif
+
 /* A roll thinner than 1 % of its radius is modelled with the thickness sqrt(t^2 + t_min^2),
  * t_min = 0.01 R (docs/nip.md): T0(R) must be smooth where the first version's
  * min(core, 0.99 R) switched, R = core / 0.99. There, with fixed load and surface pressure
@@ -323,6 +327,57 @@ static void stiff_drum_terms(void)
   CHECK_LT(worst_a, 1e-7);
 }
 
+/* The stiff drum's kernels rescaled from a nearby half-width (contact.c, rs_kernels_rescale)
+ * instead of summed: a warm handle that solved at R1 and then solves at R2, whose half-width
+ * lies near the largest drift the bound allows, rescales the drum's kernels, and its T0 and
+ * a are those of a fresh handle that sums them at R2 within the stated 1e-7 (the bound's
+ * RESCALE_TOL; load_rtol 1e-12 so that the comparison sees the kernels). A solve far away
+ * sums them anew. */
+static void stiff_drum_rescaled(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
+  const double R1 = 0.2, R2 = R1 + RESCALE_TEST_DR, R3 = 0.45;
+  rs_nip_contact *nc = NULL, *ref = NULL;
+  rs_nip_solution w = {0}, r = {0};
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &ref) == RS_OK);
+  nc->cfg.load_rtol = ref->cfg.load_rtol = 1e-12;
+  ref->no_rescale = 1;
+  rs_nip_state s1 = {R1, 0.0762, 350, 1750, 0, 2e5}, s2 = s1, s3 = s1;
+  s2.roll_radius = R2;
+  s3.roll_radius = R3;
+  CHECK(rs_nip_contact_solve_state(nc, &s1, &w) == RS_OK);
+  const double a1 = nc->ref_a[1];
+  const long summed = nc->stats_rescaled;
+  CHECK(rs_nip_contact_solve_state(nc, &s2, &w) == RS_OK);
+  CHECK(rs_nip_contact_solve_state(ref, &s2, &r) == RS_OK);
+  const double share = nc->H11[1] / (nc->H11[0] + nc->H11[1]);
+  const double allowed = 1e-7 / (share * 1.5 * w.a / 0.02), drift = fabs(log(w.a / a1));
+  CHECK_LOG("drum's share of the compliance", share);
+  CHECK_LOG("half-width drift |ln(a2 / a1)|", drift);
+  CHECK_LOG("largest drift rescaled", allowed);
+  CHECK_LOG("kernel sets rescaled", (double)(nc->stats_rescaled - summed));
+  CHECK_LOG("|T0 / T0_summed - 1|", fabs(w.T0 / r.T0 - 1));
+  CHECK_LOG("|a / a_summed - 1|", fabs(w.a / r.a - 1));
+  CHECK(nc->stats_rescaled > summed && ref->stats_rescaled == 0);
+  CHECK(nc->ref_a[1] == a1);
+  CHECK(drift > 0.5 * allowed && drift < allowed);
+  CHECK_LT(fabs(w.T0 / r.T0 - 1), 1e-7);
+  CHECK_LT(fabs(w.a / r.a - 1), 1e-7);
+  /* measured 2.6e-12; the box shear's qu rescaled without lam gives 1.1e-10, pu without lam
+   * moves a by 1.8e-7 (test_cylinder.rescale_halfplane_bound checks every rule) */
+  CHECK_LT(fabs(w.T0 / r.T0 - 1), 2e-11);
+  const long before = nc->stats_rescaled;
+  CHECK(rs_nip_contact_solve_state(nc, &s3, &w) == RS_OK);
+  CHECK(nc->ref_a[1] != a1); /* far away: summed anew, the new reference */
+  CHECK_LOG("kernel sets rescaled at R3", (double)(nc->stats_rescaled - before));
+  rs_nip_solution_free(&w);
+  rs_nip_solution_free(&r);
+  rs_nip_contact_destroy(&nc);
+  rs_nip_contact_destroy(&ref);
+}
+
 static const check_case cases[] = {
     {"thin_roll_no_kink", thin_roll_no_kink},
     {"no_checkerboard", no_checkerboard},
@@ -332,6 +387,7 @@ static const check_case cases[] = {
     {"warm_equals_cold", warm_equals_cold},
     {"warm_search_along_reel", warm_search_along_reel},
     {"stiff_drum_terms", stiff_drum_terms},
+    {"stiff_drum_rescaled", stiff_drum_rescaled},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
