@@ -157,6 +157,12 @@ rs_status rs_cylinder_kernels(rs_cylinder *cyl, rs_basis basis, double dx, doubl
 rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, int M,
                                     const rs_series_opts *opts, rs_kernels *box_qu, rs_kernels *hat_qe);
 
+/* The kernels `from` (any basis, shift) carried to the cell dx as the half-plane's scale
+ * (kernels.c): pu lam-scaled less (H11/pi) dx ln lam, qu lam-scaled, pe, qe as they are,
+ * lam = dx / from->dx; exact on the half-plane, the curvature's O(ln lam a / R) off on the
+ * cylinder. The nip uses it for a much stiffer body (contact.c). */
+rs_status rs_kernels_rescale(const rs_kernels *from, double dx, double H11, rs_kernels *to);
+
 /* ---- frictionless normal contact of two cylinders (no sheet) -------------------------- */
 
 typedef struct rs_contact_result {

@@ -365,3 +365,32 @@ rs_status rs_cylinder_kernels_shear(rs_cylinder *cyl, double dx, double shift, i
   rs_cyl_sum_free(&kh);
   return st;
 }
+
+/* Half-plane scaling. On the orthotropic half-plane a basis scaled by lam = dx / from->dx
+ * (its offsets d dx + shift too, shift / dx fixed) gives, from w = -(H11/pi) int p ln|x - s|
+ * and u, eps from sign and 1/x kernels:
+ *   pu(lam dx) = lam pu(dx) - (H11/pi) lam dx ln lam,  qu(lam dx) = lam qu(dx),
+ *   pe, qe unchanged (strains: functions of the offset / dx only).
+ * On the cylinder the rest is curvature, O(ln lam dx M / R) of each kernel (docs/cylinder.md,
+ * "Rescaled kernels"). All four arrays of `from` are mapped (unrequested ones included). */
+rs_status rs_kernels_rescale(const rs_kernels *from, double dx, double H11, rs_kernels *to)
+{
+  if (!from || !to || from == to || !(dx > 0) || !(from->dx > 0) || from->M < 2)
+    return RS_ERROR(RS_ERR_INPUT, "kernel rescaling: bad arguments");
+  const int n = 2 * from->M - 1;
+  rs_status st = ensure_capacity(to, n);
+  if (st) return st;
+  const double lam = dx / from->dx, c = H11 / RS_PI * dx * log(lam);
+  for (int i = 0; i < n; ++i) {
+    to->pu[i] = lam * from->pu[i] - c;
+    to->qu[i] = lam * from->qu[i];
+  }
+  memcpy(to->pe, from->pe, (size_t)n * sizeof(double));
+  memcpy(to->qe, from->qe, (size_t)n * sizeof(double));
+  to->M = from->M;
+  to->basis = from->basis;
+  to->dx = dx;
+  to->shift = from->shift * lam;
+  to->terms = from->terms;
+  return RS_OK;
+}

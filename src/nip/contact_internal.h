@@ -34,6 +34,11 @@ typedef struct rs_nipc_lin {
   int valid;
   int solved_state_differs; /* the last solve had other stick/slip rows than the LU */
   int fresh;              /* the last solve factored the matrix it solved */
+  int single;             /* the kept LU was made in single precision (sgetrf, a preconditioner
+                             only: every solve with it is refined by GMRES) */
+  int double_only;        /* a refinement from a single-precision LU failed: double from now on */
+  int want_double;        /* the caller (the LCP) needs the factorization a solve makes in double */
+  float *LUs;             /* n x n: the single-precision factorization's work space */
   double *work;           /* vectors */
   lapack_int *iwork;
   /* SUNDIALS' SPGMR, right-preconditioned with the kept LU */
@@ -62,6 +67,13 @@ struct rs_nip_contact {
   double k_a;                /* a of the kernels, 0 = none */
   long k_roll_version;
   rs_kernels ker[2][NKER];
+  /* a much stiffer body's kernels as last summed, at half-width ref_a[b] (0: none), of roll
+   * version ref_version for the roll: nearby half-widths rescale them (contact.c) */
+  rs_kernels ref[2][NKER];
+  double ref_a[2];
+  long ref_version;
+  long stats_rescaled;       /* kernel sets rescaled instead of summed (benchmarks) */
+  int no_rescale;            /* tests: sum every kernel set */
   /* active set: per contact (0 upper, 1 lower) and element: 0 stick, +1 / -1 slip with
    * the sign of the friction traction on the cylinder */
   signed char *state;        /* 2 (M-1) */
@@ -84,6 +96,7 @@ struct rs_nip_contact {
   int stiff_body_terms;      /* the default series: a much stiffer body takes fewer terms
                                 (contact.c, body_terms) */
   long stats_lu, stats_gmres_it; /* factorizations and GMRES iterations (benchmarks) */
+  long stats_lu_single;          /* of which in single precision */
   long stats_lcp_pivots;         /* Lemke pivots (the LCP fallback) */
   signed char *visited;      /* max_iterations states of 2(M-1) */
   double *eps_sheet, *eps_body[2], *pbar; /* M-1 each: at the upstream node of element e
@@ -108,6 +121,8 @@ rs_status rs_nipc_lin_alloc(rs_nip_contact *nc);
 void rs_nipc_lin_free(rs_nip_contact *nc);
 rs_status rs_nipc_lin_solve(rs_nip_contact *nc, double a);
 rs_status rs_nipc_lin_cond(rs_nip_contact *nc, double a, double *cond);
+/* a new factorization of the current matrix in double precision (dgetrf): the LCP's
+ * responses and the condition estimate use it as is */
 rs_status rs_nipc_lin_refactor(rs_nip_contact *nc, double a);
 
 /* contact_lu.c: x <- A^-1 x with dgetrf's factors of the n x n column-major A (LU, ipiv),

@@ -206,12 +206,14 @@ rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *stat
   /* full stick: K and b, and its factorization */
   memset(nc->state, 0, (size_t)S);
   rs_nipc_assemble(nc, a, Ti);
+  nc->lin.want_double = 1; /* Z below solves with its factors */
   rs_status st = rs_nipc_lin_solve(nc, a);
+  nc->lin.want_double = 0;
   if (st) return rs_error_wrap("LCP: full-stick system at a = %g m", a);
   if (!nc->lin.valid) return RS_ERROR(RS_ERR_INTERNAL, "LCP: no factorization");
-  /* Unless the solve just factored K, the kept factorization is of an older matrix (GMRES
-   * refined from it): factor K itself */
-  if (!nc->lin.fresh) {
+  /* Unless the solve just factored K in double precision, the kept factorization is of an
+   * older matrix (GMRES refined from it) or a single-precision one: factor K itself */
+  if (!nc->lin.fresh || nc->lin.single) {
     st = rs_nipc_lin_refactor(nc, a);
     if (st) return rs_error_wrap("LCP: full-stick system at a = %g m", a);
   }

@@ -447,6 +447,91 @@ static void shear_one_sweep(void)
   rs_cylinder_destroy(&c);
 }
 
+/* largest |d[i] - (c0 + c1 k)|, k = i - (M - 1), with (c0, c1) the least-squares fit
+ * (affine: the approach and the nip's shift take it up) or c1 = 0 (constant: xi2 takes
+ * it up), relative to the largest |ref| */
+static double rel_after_fit(const double *d, const double *ref, int M, int affine)
+{
+  const int K = 2 * M - 1;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, mx = 0, e = 0;
+  for (int i = 0; i < K; ++i) {
+    double x = i - (M - 1);
+    sx += x, sy += d[i], sxx += x * x, sxy += x * d[i];
+    mx = fmax(mx, fabs(ref[i]));
+  }
+  double c1 = affine ? (K * sxy - sx * sy) / (K * sxx - sx * sx) : 0, c0 = (sy - c1 * sx) / K;
+  for (int i = 0; i < K; ++i) e = fmax(e, fabs(d[i] - c0 - c1 * (i - (M - 1))));
+  return e / mx;
+}
+
+/* The half-plane scaling of the kernels (rs_kernels_rescale) against the kernels summed at
+ * the new cell, steel cylinders R = 0.3 m over cores R0 = 0.03 - 0.295 m, half-widths 1 - 20
+ * mm, M = 64, 64 accelerated terms (the nip's stiff body), drifts lam = 0.9, 1.1: what the
+ * nip does not take up (pu, qu less an affine part; pe, qe less a constant) within
+ * C |ln lam| a / L, L = min(R, R - R0), C = 1.5 (contact.c's RESCALE_C); pu at the centre
+ * (the approach) within the same bound, its half-plane log term included (without it the
+ * thick roll's misses by 20x the bound); lam = 1 a copy, bit for bit. */
+static void rescale_halfplane_bound(void)
+{
+  rs_ortho o;
+  CHECK(rs_ortho_isotropic(2.1e11, 0.3, 1, &o) == RS_OK);
+  double H[2][2];
+  CHECK(rs_ortho_halfplane(&o, H) == RS_OK);
+  const double R = 0.3, R0s[] = {0.03, 0.2, 0.28, 0.295}, as[] = {1e-3, 5e-3, 20e-3}, lams[] = {0.9, 1.1};
+  const int M = 64, K = 2 * M - 1;
+  rs_series_opts opt = {64, 0, 0, 1};
+  double worst = 0, worst_centre = 0;
+  long copy_differ = 0;
+  for (int i = 0; i < 4; ++i) {
+    rs_cylinder *c = NULL;
+    CHECK(rs_cylinder_create(&o, R, R0s[i], &c) == RS_OK);
+    const double L = fmin(R, R - R0s[i]);
+    for (int j = 0; j < 3; ++j) {
+      const double dx = 2 * as[j] / (M - 1);
+      rs_kernels k0[3] = {{0}}, k1[3] = {{0}}, r[3] = {{0}};
+      CHECK(rs_cylinder_kernels(c, RS_BASIS_HAT, dx, 0.0, M, RS_KERNEL_PU | RS_KERNEL_PE, &opt, &k0[0]) == RS_OK);
+      CHECK(rs_cylinder_kernels_shear(c, dx, -0.5 * dx, M, &opt, &k0[1], &k0[2]) == RS_OK);
+      for (int q = 0; q < 3; ++q) { /* lam = 1: a copy */
+        CHECK(rs_kernels_rescale(&k0[q], dx, H[0][0], &r[q]) == RS_OK);
+        for (int d = 0; d < K; ++d)
+          copy_differ += r[q].pu[d] != k0[q].pu[d] || r[q].pe[d] != k0[q].pe[d] ||
+                         r[q].qu[d] != k0[q].qu[d] || r[q].qe[d] != k0[q].qe[d];
+        copy_differ += r[q].dx != k0[q].dx || r[q].shift != k0[q].shift || r[q].terms != 64;
+      }
+      for (int l = 0; l < 2; ++l) {
+        const double dx1 = lams[l] * dx, bound = 1.5 * fabs(log(lams[l])) * as[j] * lams[l] / L;
+        CHECK(rs_cylinder_kernels(c, RS_BASIS_HAT, dx1, 0.0, M, RS_KERNEL_PU | RS_KERNEL_PE, &opt, &k1[0]) == RS_OK);
+        CHECK(rs_cylinder_kernels_shear(c, dx1, -0.5 * dx1, M, &opt, &k1[1], &k1[2]) == RS_OK);
+        double d[4][2 * 64 - 1];
+        for (int q = 0; q < 3; ++q) CHECK(rs_kernels_rescale(&k0[q], dx1, H[0][0], &r[q]) == RS_OK);
+        CHECK(fabs(r[1].shift + 0.5 * dx1) <= 1e-15 * dx1);
+        for (int e = 0; e < K; ++e) {
+          d[0][e] = r[0].pu[e] - k1[0].pu[e];
+          d[1][e] = r[0].pe[e] - k1[0].pe[e];
+          d[2][e] = r[1].qu[e] - k1[1].qu[e];
+          d[3][e] = r[2].qe[e] - k1[2].qe[e];
+        }
+        const double *ref[4] = {k1[0].pu, k1[0].pe, k1[1].qu, k1[2].qe};
+        for (int q = 0; q < 4; ++q) worst = fmax(worst, rel_after_fit(d[q], ref[q], M, q == 0 || q == 2) / bound);
+        worst_centre = fmax(worst_centre, fabs(d[0][M - 1]) / fabs(k1[0].pu[M - 1]) / bound);
+      }
+      for (int q = 0; q < 3; ++q) {
+        rs_kernels_free(&k0[q]);
+        rs_kernels_free(&k1[q]);
+        rs_kernels_free(&r[q]);
+      }
+    }
+    rs_cylinder_destroy(&c);
+  }
+  CHECK_LOG("largest error / (1.5 |ln lam| a / L), after the fit", worst);
+  CHECK_LOG("largest error of pu at the centre / the same", worst_centre);
+  CHECK_LOG("values differing at lam = 1", (double)copy_differ);
+  CHECK_LT(worst, 1.0);
+  CHECK_LT(worst_centre, 1.0);
+  CHECK(worst > 0.3); /* the bound is not loose */
+  CHECK(copy_differ == 0);
+}
+
 static double rel_err(const double *a, const double *ref, int K)
 {
   double mx = 0, e = 0;
@@ -555,6 +640,7 @@ static void errors(void)
 static const check_case cases[] = {
     {"engineering", engineering},
     {"shear_one_sweep", shear_one_sweep},
+    {"rescale_halfplane_bound", rescale_halfplane_bound},
     {"halfplane_isotropic", halfplane_isotropic},
     {"lame_n0", lame_n0},
     {"betti_and_limit", betti_and_limit},

@@ -5,4 +5,5 @@ rs_test(test_nip_contact validation SOURCES validation/test_nip_contact.c
               lcp_ray_when_infeasible)
 rs_test(test_nip_reel validation SOURCES validation/test_nip_reel.c
         CASES thin_roll_no_kink no_checkerboard convergence_in_M bad_input iteration_cap
-              warm_equals_cold warm_search_along_reel stiff_drum_terms)
+              warm_equals_cold warm_search_along_reel stiff_drum_terms stiff_drum_rescaled
+              single_precision_lu single_precision_fallback)

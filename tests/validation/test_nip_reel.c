@@ -2,12 +2,18 @@
  * kink on a thin roll, no checkerboard, convergence in M, bad input refused, the iteration
  * cap, warm starts equal to cold ones and along a reel, the stiff drum's series (the
  * identities, limits and independent solutions: test_nip_contact.c). */
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 #include "nip/contact_internal.h"
 #include "nip/nip_contact.h"
 #include "validation/nip_setup.h"
+
+#ifndef RESCALE_TEST_DR
+#define RESCALE_TEST_DR 0.0015
+#endif
 
 /* A roll thinner than 1 % of its radius is modelled with the thickness sqrt(t^2 + t_min^2),
  * t_min = 0.01 R (docs/nip.md): T0(R) must be smooth where the first version's
@@ -323,6 +329,169 @@ static void stiff_drum_terms(void)
   CHECK_LT(worst_a, 1e-7);
 }
 
+/* The stiff drum's kernels rescaled from a nearby half-width (contact.c, rs_kernels_rescale)
+ * instead of summed: a warm handle that solved at R1 and then solves at R2, whose half-width
+ * lies near the largest drift the bound allows, rescales the drum's kernels, and its T0 and
+ * a are those of a fresh handle that sums them at R2 within the stated 1e-7 (the bound's
+ * RESCALE_TOL; load_rtol 1e-12 so that the comparison sees the kernels). A solve far away
+ * sums them anew. */
+static void stiff_drum_rescaled(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
+  const double R1 = 0.2, R2 = R1 + RESCALE_TEST_DR, R3 = 0.45;
+  rs_nip_contact *nc = NULL, *ref = NULL;
+  rs_nip_solution w = {0}, r = {0};
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &ref) == RS_OK);
+  nc->cfg.load_rtol = ref->cfg.load_rtol = 1e-12;
+  ref->no_rescale = 1;
+  rs_nip_state s1 = {R1, 0.0762, 350, 1750, 0, 2e5}, s2 = s1, s3 = s1;
+  s2.roll_radius = R2;
+  s3.roll_radius = R3;
+  CHECK(rs_nip_contact_solve_state(nc, &s1, &w) == RS_OK);
+  const double a1 = nc->ref_a[1];
+  const long summed = nc->stats_rescaled;
+  CHECK(rs_nip_contact_solve_state(nc, &s2, &w) == RS_OK);
+  CHECK(rs_nip_contact_solve_state(ref, &s2, &r) == RS_OK);
+  const double share = nc->H11[1] / (nc->H11[0] + nc->H11[1]);
+  const double allowed = 1e-7 / (share * 1.5 * w.a / 0.02), drift = fabs(log(w.a / a1));
+  CHECK_LOG("drum's share of the compliance", share);
+  CHECK_LOG("half-width drift |ln(a2 / a1)|", drift);
+  CHECK_LOG("largest drift rescaled", allowed);
+  CHECK_LOG("kernel sets rescaled", (double)(nc->stats_rescaled - summed));
+  CHECK_LOG("|T0 / T0_summed - 1|", fabs(w.T0 / r.T0 - 1));
+  CHECK_LOG("|a / a_summed - 1|", fabs(w.a / r.a - 1));
+  CHECK(nc->stats_rescaled > summed && ref->stats_rescaled == 0);
+  CHECK(nc->ref_a[1] == a1);
+  CHECK(drift > 0.5 * allowed && drift < allowed);
+  CHECK_LT(fabs(w.T0 / r.T0 - 1), 1e-7);
+  CHECK_LT(fabs(w.a / r.a - 1), 1e-7);
+  /* measured 2.6e-12; the box shear's qu rescaled without lam gives 1.1e-10, pu without lam
+   * moves a by 1.8e-7 (test_cylinder.rescale_halfplane_bound checks every rule) */
+  CHECK_LT(fabs(w.T0 / r.T0 - 1), 2e-11);
+  const long before = nc->stats_rescaled;
+  CHECK(rs_nip_contact_solve_state(nc, &s3, &w) == RS_OK);
+  CHECK(nc->ref_a[1] != a1); /* far away: summed anew, the new reference */
+  CHECK_LOG("kernel sets rescaled at R3", (double)(nc->stats_rescaled - before));
+  rs_nip_solution_free(&w);
+  rs_nip_solution_free(&r);
+  rs_nip_contact_destroy(&nc);
+  rs_nip_contact_destroy(&ref);
+}
+
+/* The factorizations a solve makes for itself in single precision, refined by GMRES to the
+ * same residual (contact_linear.c): a warm chain of solves along a roll against the same
+ * chain factored in double (lin.double_only set), T0, a, the load and the pressure within
+ * 1e-11 (measured 5e-13; taking the single-precision LU's solve as the answer would be
+ * ~1e-7 off). */
+static void single_precision_lu(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
+  rs_nip_contact *nc[2] = {NULL, NULL};
+  for (int h = 0; h < 2; ++h) CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc[h]) == RS_OK);
+  if (!nc[0] || !nc[1]) goto out;
+  nc[1]->lin.double_only = 1;
+  nc[0]->cfg.load_rtol = nc[1]->cfg.load_rtol = 1e-12; /* the searches land alike */
+  double worst = 0;
+  for (int k = 0; k < 6; ++k) {
+    rs_nip_state st = {0.08 + 0.07 * k, 0.0762, 350, 1750, 0, 2e5};
+    rs_nip_solution r[2] = {{0}, {0}};
+    for (int h = 0; h < 2; ++h) CHECK(rs_nip_contact_solve_state(nc[h], &st, &r[h]) == RS_OK);
+    double pm = 0, dp = 0;
+    for (int i = 0; i < r[1].M; ++i) {
+      pm = fmax(pm, fabs(r[1].pressure[i]));
+      dp = fmax(dp, fabs(r[0].pressure[i] - r[1].pressure[i]));
+    }
+    printf("  R %.2f: T0 %.2e a %.2e load %.2e p %.2e\n", st.roll_radius, fabs(r[0].T0 / r[1].T0 - 1),
+           fabs(r[0].a / r[1].a - 1), fabs(r[0].load / r[1].load - 1), dp / pm);
+    worst = fmax(worst, fmax(fabs(r[0].T0 / r[1].T0 - 1), fabs(r[0].a / r[1].a - 1)));
+    worst = fmax(worst, fmax(fabs(r[0].load / r[1].load - 1), dp / pm));
+    for (int h = 0; h < 2; ++h) rs_nip_solution_free(&r[h]);
+  }
+  { /* a fresh factorization's own solve (the kept LU dropped) against LAPACK's dgesv */
+    const int n = nc[0]->n;
+    double *A = malloc((size_t)n * n * sizeof *A), *b = malloc((size_t)n * sizeof *b), dz = 0, zm = 0;
+    lapack_int *ip = malloc((size_t)n * sizeof *ip);
+    memcpy(A, nc[0]->A, (size_t)n * n * sizeof *A);
+    memcpy(b, nc[0]->rhs, (size_t)n * sizeof *b);
+    nc[0]->lin.valid = 0;
+    CHECK(rs_nipc_lin_solve(nc[0], nc[0]->k_a) == RS_OK);
+    CHECK(nc[0]->lin.single && nc[0]->lin.fresh);
+    CHECK(LAPACKE_dgesv(LAPACK_COL_MAJOR, n, 1, A, n, ip, b, n) == 0);
+    for (int i = 0; i < n; ++i) {
+      dz = fmax(dz, fabs(nc[0]->z[i] - b[i]));
+      zm = fmax(zm, fabs(b[i]));
+    }
+    CHECK_LOG("fresh single-precision LU refined, against dgesv", dz / zm);
+    CHECK_LT(dz / zm, 1e-11);
+    free(A);
+    free(b);
+    free(ip);
+  }
+  CHECK_LOG("factorizations, single / all", (double)nc[0]->stats_lu_single / (double)nc[0]->stats_lu);
+  CHECK_LOG("GMRES iterations, single", (double)nc[0]->stats_gmres_it);
+  CHECK_LOG("GMRES iterations, double", (double)nc[1]->stats_gmres_it);
+  CHECK_LOG("largest relative difference (T0, a, load, pressure)", worst);
+  CHECK(nc[0]->stats_lu_single > 0 && nc[1]->stats_lu_single == 0 && !nc[0]->lin.double_only);
+  CHECK_LT(worst, 1e-11);
+out:
+  for (int h = 0; h < 2; ++h) rs_nip_contact_destroy(&nc[h]);
+}
+
+/* A system too ill-conditioned for a single-precision LU (condition number 1e10: the
+ * converged nip's matrix replaced by I - (1 - 1e-10) u u^T, u a unit vector with all
+ * entries nonzero): GMRES cannot refine from it, so the solve falls back to dgetrf, and
+ * keeps to double precision on that handle; the answer's residual as a direct solve's. */
+static void single_precision_fallback(void)
+{
+  rs_material m = newsprint(5e7);
+  rs_nip_spec sp = steel_drum_contact(RS_WINDER_SURFACE, 0.28, 64);
+  rs_nip_contact *nc = NULL;
+  rs_nip_solution r = {0};
+  CHECK(rs_nip_contact_create_from_spec(&sp, &m, &nc) == RS_OK);
+  rs_nip_state st = {0.2, 0.0762, 350, 1750, 0, 2e5};
+  CHECK(rs_nip_contact_solve_state(nc, &st, &r) == RS_OK);
+  if (!nc) return;
+  const int n = nc->n;
+  double *u = malloc((size_t)n * sizeof *u), *Az = malloc((size_t)n * sizeof *Az);
+  for (int i = 0; i < n; ++i) u[i] = 1.0 + 0.5 * sin(1.7 * i);
+  double nu = 0;
+  for (int i = 0; i < n; ++i) nu += u[i] * u[i];
+  nu = sqrt(nu);
+  for (int i = 0; i < n; ++i) u[i] /= nu;
+  for (int c = 0; c < n; ++c)
+    for (int i = 0; i < n; ++i) nc->A[(size_t)c * n + i] = (i == c) - (1 - 1e-10) * u[i] * u[c];
+  for (int i = 0; i < n; ++i) nc->rhs[i] = cos(0.3 * i);
+  nc->lin.valid = 0;
+  const long single0 = nc->stats_lu_single, lu0 = nc->stats_lu;
+  CHECK(rs_nipc_lin_solve(nc, r.a) == RS_OK);
+  double res = 0, an = 0, zn = 0; /* backward error: |A z - b| / (|A| |z|), infinity norms */
+  for (int i = 0; i < n; ++i) {
+    double ai = 0;
+    Az[i] = 0;
+    for (int c = 0; c < n; ++c) {
+      Az[i] += nc->A[(size_t)c * n + i] * nc->z[c];
+      ai += fabs(nc->A[(size_t)c * n + i]);
+    }
+    res = fmax(res, fabs(Az[i] - nc->rhs[i]));
+    an = fmax(an, ai);
+    zn = fmax(zn, fabs(nc->z[i]));
+  }
+  const double bn = an * zn;
+  CHECK_LOG("factorizations: single, double", (double)(nc->stats_lu_single - single0));
+  CHECK_LOG("factorizations: all", (double)(nc->stats_lu - lu0));
+  CHECK_LOG("backward error |A z - b| / (|A| |z|)", res / bn);
+  CHECK(nc->stats_lu_single - single0 == 1 && nc->stats_lu - lu0 == 2);
+  CHECK(nc->lin.double_only && !nc->lin.single);
+  CHECK_LT(res / bn, 1e-12);
+  free(u);
+  free(Az);
+  rs_nip_solution_free(&r);
+  rs_nip_contact_destroy(&nc);
+}
+
 static const check_case cases[] = {
     {"thin_roll_no_kink", thin_roll_no_kink},
     {"no_checkerboard", no_checkerboard},
@@ -332,6 +501,9 @@ static const check_case cases[] = {
     {"warm_equals_cold", warm_equals_cold},
     {"warm_search_along_reel", warm_search_along_reel},
     {"stiff_drum_terms", stiff_drum_terms},
+    {"stiff_drum_rescaled", stiff_drum_rescaled},
+    {"single_precision_lu", single_precision_lu},
+    {"single_precision_fallback", single_precision_fallback},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
