@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #if defined(__GLIBC__) && defined(__linux__)
 #include <malloc.h>
@@ -13,6 +14,14 @@
 
 #if defined(__GLIBC__) && defined(__linux__) && defined(MADV_HUGEPAGE)
 static void *heap_spacer; /* held for the process's life (below) */
+
+/* glibc asked to fill freed and new blocks (MALLOC_PERTURB_, or the tunable): it would
+ * write the whole reserve, page by page, before the advice */
+static int perturbed(void)
+{
+  const char *p = getenv("MALLOC_PERTURB_"), *t = getenv("GLIBC_TUNABLES");
+  return (p && *p && strcmp(p, "0") != 0) || (t && strstr(t, "perturb"));
+}
 #endif
 
 size_t cli_heap_prepare(size_t reserve, void **first)
@@ -27,8 +36,8 @@ size_t cli_heap_prepare(size_t reserve, void **first)
    * all): later blocks are carved from it while it has room. Once it has not, blocks from
    * 4 MiB are mapped on their own (a long roll's arrays: handed back whole when freed).
    * Both thresholds fixed, where glibc would slide them. */
-  if (reserve >= (size_t)32 << 20 || !mallopt(M_MMAP_THRESHOLD, 32 << 20) ||
-      !mallopt(M_TRIM_THRESHOLD, 64 << 20))
+  if (reserve >= (size_t)32 << 20 || perturbed() || !mallopt(M_TRIM_THRESHOLD, 64 << 20) ||
+      !mallopt(M_MMAP_THRESHOLD, 32 << 20))
     return 0;
   free(heap_spacer); /* a second preparation: the first's spacer back to the top */
   heap_spacer = NULL;

@@ -13,9 +13,10 @@ enum { CLI_HEAP_RESERVE = 30 << 20 }; /* under glibc's largest mmap threshold, 3
 
 /* Returns the bytes marked for huge pages (0 where the C library or kernel has no such
  * mark) and, when `first` is not NULL, the first marked address (NULL when none). The
- * marked span is 2 MiB-aligned and lies inside the reserve. Harmless under other
- * allocators: ASan's refuses the thresholds (nothing is marked), valgrind's takes the
- * block from its own heap (marked, then freed). */
+ * marked span is 2 MiB-aligned and lies inside the reserve. Nothing is done with glibc
+ * asked to perturb its blocks (MALLOC_PERTURB_). Harmless under other allocators: ASan's
+ * refuses the thresholds (nothing is marked), valgrind's takes the block from its own heap
+ * (marked, then freed). */
 size_t cli_heap_prepare(size_t reserve, void **first);
 
 #endif
