@@ -18,7 +18,17 @@ void rs_nip_policy_init(rs_nip_policy *p, const rs_nip_spec *spec, int layers_pe
   p->j2 = 0;
   p->step = p->kind == RS_NIP_UPDATE_EVERY ? p->every : layers_per_step;
   p->next = 0;
+  p->last = n_layers > 0 ? (n_layers - 1) / layers_per_step * layers_per_step : 0;
   p->rejected = 0;
+}
+
+/* The next solve due `step` layers after `from`, and at the last increment at the latest
+ * (adaptive): every interval of layers wound between solves is checked by the solve at its
+ * end. */
+static int policy_next(const rs_nip_policy *p, int from, int step)
+{
+  const int next = from + step;
+  return p->kind == RS_NIP_UPDATE_ADAPTIVE && from < p->last && next > p->last ? p->last : next;
 }
 
 int rs_nip_policy_due(const rs_nip_policy *p, int layers)
@@ -60,7 +70,7 @@ int rs_nip_policy_offer(rs_nip_policy *p, int layers, double r, double T0, doubl
     if (err > tol && layers - p->j2 > p->min_step) {
       /* the prediction failed over this interval: wind it again, shorter */
       p->step = policy_clamp(p, (layers - p->j2) * (factor < 0.25 ? 0.25 : factor));
-      p->next = p->j2 + p->step;
+      p->next = policy_next(p, p->j2, p->step);
       p->rejected++;
       return 0;
     }
@@ -74,6 +84,6 @@ int rs_nip_policy_offer(rs_nip_policy *p, int layers, double r, double T0, doubl
   p->n2 = nit;
   p->have++;
   p->j2 = layers;
-  p->next = layers + p->step;
+  p->next = policy_next(p, layers, p->step);
   return 1;
 }

@@ -13,7 +13,8 @@
  * with the distance, so the error found at the solve bounds it over the whole interval;
  * if it exceeds the tolerance the reel rewinds to the previous solve (roll state saved
  * there) and retries with a shorter interval, like an ODE step rejection. The interval
- * then grows or shrinks by 0.8 sqrt(tol / error), at most doubling. */
+ * then grows or shrinks by 0.8 sqrt(tol / error), at most doubling. The last increment is
+ * always solved: its solve checks the reel's last interval, which no later one would. */
 #ifndef RS_REEL_NIP_POLICY_H
 #define RS_REEL_NIP_POLICY_H
 
@@ -31,6 +32,7 @@ typedef struct rs_nip_policy {
   int j2;            /* layers on the roll at the latest accepted solve */
   int step;          /* current interval, layers */
   int next;          /* layer count at which the next solve is due */
+  int last;          /* adaptive: the last increment's first layer, a solve always due */
   long rejected;     /* adaptive: predictions rejected (rewinds) */
 } rs_nip_policy;
 
