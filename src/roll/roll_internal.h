@@ -202,12 +202,12 @@ typedef struct roll_lazy {
  * e: rsi_roll_reference_carry) when a start or a reference reaches below top, at a
  * reference from the core, a lumped block or a restore. Where a reference from the core
  * is due, a level that may be kept is renewed instead (roll_reference_renew): the
- * reference starts at its top node, the two top nodes leaving it (rsi_roll_deep_lower),
- * and the nodes below keep the core reference's (w, L) with the rebase factors carried,
- * while the second-order bound of their drift since that reference (a + |c| b with the
- * zone's a and b of when they froze: their E_ref is still that reference's) stays within
- * a hundredth of tol, and while the level lies within twice its depth at forming below the
- * top (depth0: n - top then; deeper, it is dissolved and the reference is from the core,
+ * reference starts at its top node, or at the highest below it where the second-order
+ * bound of the drift since that reference (a + |c| b with the zone's a and b of when they
+ * froze: their E_ref is still that reference's) is within a hundredth of tol, the nodes
+ * above leaving the level (rsi_roll_deep_lower), and the nodes below keep the core
+ * reference's (w, L) with the rebase factors carried; while the level lies within twice
+ * its depth at forming below the top (depth0: n - top then; deeper, it is dissolved and the reference is from the core,
  * after which a level forms afresh). Over nodes 0..top-1 the lazy
  * zone's a, b and Lmax are the level's own prefix maxima (in the scale c continues); the
  * lazy zone proper is top..lazy.top-1, its maxima starting afresh at top.

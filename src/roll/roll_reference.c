@@ -91,29 +91,48 @@ static inline void roll_lazy_zone_bound(const rs_roll *roll, int j, double *eps,
 }
 
 /* A reference from the core is due (roll_reference_renew; tol the remainder a rebase may
- * leave, a hundredth of the reuse's): the node the level may be renewed from instead, its
- * top node D - 1, or -1 (the level dissolved by that reference). The reference then starts
- * at D - 1 with the rebased values there (the level lowered to D - 2 first, its two top
- * nodes taking its scales and rebase factors: rsi_roll_deep_lower, so that the start and
+ * leave, a hundredth of the reuse's): the node the level may be renewed from instead, or
+ * -1 (the level dissolved by that reference). The reference then starts at that node
+ * with the rebased values there (the level lowered to the node below it first, the nodes
+ * above taking its scales and rebase factors: rsi_roll_deep_lower, so that the start and
  * the node its Hermite slope reads are explicit), integrates every node above afresh and
- * leaves the level's nodes in it. Their (w, L) are still the last core reference's, moved
- * by B (p_w, p_L) to first order in the drift since it: what that leaves is second order
- * in the drift since that reference, which the level's nodes' a + |c| b bounds (their
- * E_ref is that reference's, and c continues the zone's scale their a and b were taken
- * in), so the level is renewed while that bound's second-order error is within tol, its
- * rebase factor's remainder within its bound (roll_deep_factor_ok), its start within
- * top, and the level within twice its depth at forming below the top (deeper, a reference
- * from it would pass over more nodes than one from a level formed afresh). */
+ * leaves the nodes below in the level. Their (w, L) are still the last core reference's,
+ * moved by B (p_w, p_L) to first order in the drift since it: what that leaves is second
+ * order in the drift since that reference, which the level's nodes' a + |c| b bounds
+ * (their E_ref is that reference's, and c continues the zone's scale their a and b were
+ * taken in). So the node is the level's top node, or the highest below it, where that
+ * bound's second-order error is within tol; and the level is renewed while its rebase
+ * factor's remainder is within its bound (roll_deep_factor_ok), the node within top, and
+ * the level then within twice its depth at forming below the top (deeper, a reference from
+ * it would pass over more nodes than one from a level formed afresh). */
+/* roll_deep_renewable's bound at the level's node j (the prefix maxima up to it) */
+static inline double roll_deep_renew_bound(const rs_roll *roll, int j, double Ls)
+{
+  const roll_deep *d = &roll->deep;
+  const double eps = roll->lazy.a[j] + fabs(d->c) * roll->lazy.b[j];
+  return rsi_roll_profile_bound(eps, roll->lazy.Lmax[j] + fabs(d->B) * d->pL_max, Ls, 1);
+}
+
 static int roll_deep_renewable(const rs_roll *roll, int top, double tol)
 {
   const roll_deep *d = &roll->deep;
   const int D = d->top;
-  if (D < 3 || D - 1 > top || roll->n - D > RS_DEEP_RENEW_DEPTH * d->depth0) return -1;
-  if (!roll_deep_factor_ok(roll)) return -1;
-  const double eps = roll->lazy.a[D - 1] + fabs(d->c) * roll->lazy.b[D - 1];
-  const double Lmax = roll->lazy.Lmax[D - 1] + fabs(d->B) * d->pL_max;
+  if (D < 3 || D - 1 > top || !roll_deep_factor_ok(roll)) return -1;
   const double Ls = roll->L[roll->n - roll->shift];
-  return rsi_roll_profile_bound(eps, Lmax, Ls, 1) <= tol ? D - 1 : -1;
+  int from = D - 1;
+  if (!(roll_deep_renew_bound(roll, from, Ls) <= tol)) {
+    /* the highest node within it: the bound grows with the node (prefix maxima) */
+    int lo = -1, hi = from;
+    while (hi - lo > 1) {
+      const int mid = lo + (hi - lo) / 2;
+      if (roll_deep_renew_bound(roll, mid, Ls) <= tol)
+        lo = mid;
+      else
+        hi = mid;
+    }
+    from = lo;
+  }
+  return from >= 2 && roll->n - (from + 1) <= RS_DEEP_RENEW_DEPTH * d->depth0 ? from : -1;
 }
 
 /* A reference from the core is due (rsi_roll_reuse_start): on a long roll whose deeper
