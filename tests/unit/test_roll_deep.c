@@ -34,8 +34,8 @@
  *                     (checked every 250 layers and after every renewal), and its errors
  *                     against an rtol 1e-10 run of the one-level engine are within 1.2x the
  *                     one-level engine's at the default tolerance plus 0.04 tol (it fails, by
- *                     5x in the core pressure, when the nodes leaving a renewed level do not
- *                     take its rebase factors, and by 150x in sigma_r when they do not take
+ *                     28x in the core pressure, when the nodes leaving a renewed level do not
+ *                     take its rebase factors, and by 1000x in sigma_r when they do not take
  *                     its scales)
  *   catches_broken    broken states of the level (a pending scale with no level, a level
  *                     above the lazy zone, a rebase factor that is not positive, a level
