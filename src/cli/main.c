@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/heap.h"
 #include "cli/usage.h"
 #include "reelsim/version.h"
 
@@ -34,6 +35,7 @@ int main(int argc, char **argv)
     printf("reelsim %s\n", RS_VERSION_STRING);
     return CLI_EXIT_OK;
   }
+  (void)cli_heap_prepare(CLI_HEAP_RESERVE, NULL); /* before the first allocation of a command */
   if (strcmp(cmd, "fit") == 0) return cli_fit(argc, argv); /* its own arguments: cmd_fit.c */
   if (strcmp(cmd, "--bash-completion") == 0) return cli_bash_completion(stdout);
   if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {

@@ -13,6 +13,7 @@
 
 #include "output/h5_util.h"
 #include "util/error.h"
+#include "util/huge_pages.h"
 
 rs_status rs_h5_memfile_create(hid_t *file)
 {
@@ -120,6 +121,7 @@ rs_status rs_h5_memfile_image(hid_t file, void **image, size_t *size)
   }
   if (!(*image = malloc(n > 0 ? (size_t)n : 1)))
     return RS_ERROR(RS_ERR_MEMORY, "out of memory for a %zd-byte HDF5 file", n);
+  (void)rs_huge_pages_advise(*image, (size_t)n); /* a long roll's file: touched whole, next */
   if (H5Fget_file_image(file, *image, (size_t)n) != n) {
     rs_h5_error_detail(detail, sizeof detail);
     free(*image);

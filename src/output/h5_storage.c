@@ -33,11 +33,11 @@ rs_status rs_h5_write_storage(hid_t loc, const rs_storage_result *sr)
     st = rs_h5_write_1d(g, "core_pressure", sr->core_pressure, S, "Pa",
                         "pressure on the core at the end of each stage");
   if (st == RS_OK)
-    st = rs_h5_write_2d_chunked(g, "sigma_r", sr->sigma_r, S, n, "Pa",
+    st = rs_h5_write_2d_history(g, "sigma_r", sr->sigma_r, S, n, "Pa",
                                 "radial stress of each layer (columns) at the end of each stage "
                                 "(rows), at the layer's outer radius; compression negative");
   if (st == RS_OK)
-    st = rs_h5_write_2d_chunked(g, "sigma_theta", sr->sigma_theta, S, n, "Pa",
+    st = rs_h5_write_2d_history(g, "sigma_theta", sr->sigma_theta, S, n, "Pa",
                                 "mean hoop stress of each layer (columns) at the end of each "
                                 "stage (rows); compression negative");
   H5Gclose(g);

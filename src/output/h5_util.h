@@ -52,10 +52,15 @@ rs_status rs_h5_write_1d(hid_t loc, const char *name, const double *data, size_t
 rs_status rs_h5_write_1d_int64(hid_t loc, const char *name, const long long *data, size_t n,
                                const char *units, const char *description);
 
-/* A rows x cols row-major array as a chunked, shuffled, deflate-compressed dataset
- * (fill value NaN, both dimensions extendable, so a history can grow stage by stage).
+/* A rows x cols row-major array as a chunked dataset with the Fletcher-32 checksum,
+ * shuffled and deflate-compressed (fill value NaN, both dimensions extendable, so a
+ * history can grow stage by stage).
  * `data` may hold NaN (e.g. layers not yet wound); rows or cols may be 0. */
 rs_status rs_h5_write_2d_chunked(hid_t loc, const char *name, const double *data, size_t rows,
+                                 size_t cols, const char *units, const char *description);
+/* The same for a history of stresses (stages x layers): deflated only from
+ * RS_H5_DEFLATE_MIN_BYTES of values, below stored as they are (their chunks checksummed). */
+rs_status rs_h5_write_2d_history(hid_t loc, const char *name, const double *data, size_t rows,
                                  size_t cols, const char *units, const char *description);
 
 /* The chunk shape rs_h5_write_2d_chunked picks: rows cut into equal pieces of at most
@@ -71,6 +76,13 @@ rs_status rs_h5_write_1d_strings(hid_t loc, const char *name, const char *const 
 
 /* Bytes per chunk of a chunked dataset: 256 KiB, HDF5's advice is 10 KiB .. 1 MiB. */
 #define RS_H5_CHUNK_BYTES 262144
+
+/* Bytes of values from which a history of stresses is compressed. Deflate keeps ~0.4 of
+ * such a history's bytes (the stages' NaN beyond the layers wound compress away, the
+ * stresses' low mantissa bytes do not) at ~70 instructions a byte: below 1 MiB it would
+ * save under 0.6 MiB a dataset for more time than the rest of the file's writing. (The
+ * lanes' arrays, alike across lanes, keep ~0.15 - 0.25: always deflated.) */
+#define RS_H5_DEFLATE_MIN_BYTES 1048576
 
 /* New dataset creation properties (close with H5Pclose) for data of shape `space`
  * (rank 0..2) and elements of elem_size bytes: chunked with the Fletcher-32 checksum

@@ -188,11 +188,11 @@ static rs_status write_history(hid_t loc, const rs_scene *scene, const rs_reel_r
     st = rs_h5_write_1d_int64(g, "layers", layers, S, "",
                               "layers wound at each stage; the last stage is the final reel");
   if (st == RS_OK)
-    st = rs_h5_write_2d_chunked(g, "sigma_r", res->stage_sigma_r, S, n, "Pa",
+    st = rs_h5_write_2d_history(g, "sigma_r", res->stage_sigma_r, S, n, "Pa",
                                 "radial stress of each layer (columns) at each stage (rows); "
                                 "compression negative; NaN for layers not yet wound");
   if (st == RS_OK)
-    st = rs_h5_write_2d_chunked(g, "sigma_theta", res->stage_sigma_theta, S, n, "Pa",
+    st = rs_h5_write_2d_history(g, "sigma_theta", res->stage_sigma_theta, S, n, "Pa",
                                 "hoop stress of each layer (columns) at each stage (rows); "
                                 "compression negative; NaN for layers not yet wound");
   H5Gclose(g);

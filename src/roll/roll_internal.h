@@ -30,6 +30,7 @@
 #include <nvector/nvector_serial.h>
 
 #include "roll/roll.h"
+#include "util/huge_pages.h"
 #include "util/sundials_compat.h"
 
 enum { RS_CVODE_MSG_LEN = RS_SUNDIALS_MSG_LEN };
@@ -292,12 +293,16 @@ struct rs_roll {
   } scratch;
 };
 
-/* *arrays[i] = count zeroed doubles each (i < n); 0 when one could not be allocated (the
- * others are still allocated: the owner's free frees them) */
+/* *arrays[i] = count zeroed doubles each (i < n), from 4 MiB advised into huge pages; 0
+ * when one could not be allocated (the others are still allocated: the owner's free frees
+ * them) */
 static inline int rsi_roll_calloc(double **const arrays[], size_t n, size_t count)
 {
   int ok = 1;
-  for (size_t i = 0; i < n; ++i) ok &= (*arrays[i] = calloc(count, sizeof(double))) != NULL;
+  for (size_t i = 0; i < n; ++i) {
+    ok &= (*arrays[i] = calloc(count, sizeof(double))) != NULL;
+    (void)rs_huge_pages_advise(*arrays[i], count * sizeof(double)); /* a long roll's */
+  }
   return ok;
 }
 

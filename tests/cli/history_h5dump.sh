@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # history_h5dump.sh REELSIM SCENE: `run --set output.history_every=50` on the 200-layer
 # test reel writes /history as h5dump reads it: 4 stages at 50, 100, 150, 200 layers,
-# 4 x 200 stress arrays, NaN above each stage's outer radius, the last row equal to
+# 4 x 200 stress arrays (uncompressed, checksummed), NaN above each stage's outer radius, the last row equal to
 # /final to 17 digits; history_every = 0 writes no /history group.
 set -u
 bin="$1"; scene="$2"
@@ -12,7 +12,10 @@ command -v h5dump >/dev/null || fail "h5dump not found (Debian package hdf5-tool
 "$bin" run "$scene" --set output.history_every=50 -o "$tmp/h.h5" --quiet || fail "run failed"
 h5dump -H -d /history/sigma_r "$tmp/h.h5" | grep -q 'DATASPACE  SIMPLE { ( 4, 200 ) / ( H5S_UNLIMITED, H5S_UNLIMITED ) }' ||
   { h5dump -H -d /history/sigma_r "$tmp/h.h5"; fail "/history/sigma_r is not 4 x 200, extendable"; }
-h5dump -H -d /history/sigma_r -p "$tmp/h.h5" | grep -q 'DEFLATE' || fail "/history/sigma_r is not compressed"
+# 4 x 200 values, under 1 MiB: stored as they are, checksummed (docs/output.md)
+props="$(h5dump -H -d /history/sigma_r -p "$tmp/h.h5")"
+grep -q 'CHECKSUM FLETCHER32' <<<"$props" || fail "/history/sigma_r carries no checksum"
+if grep -q 'DEFLATE' <<<"$props"; then fail "/history/sigma_r (6.4 kB) is compressed"; fi
 layers="$(h5dump -d /history/layers -y -w 0 -o "$tmp/layers.txt" "$tmp/h.h5" >/dev/null; tr -d ' \n' < "$tmp/layers.txt")"
 echo "layers: $layers"
 [ "$layers" = "50,100,150,200" ] || fail "/history/layers is '$layers'"

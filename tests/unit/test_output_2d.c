@@ -1,6 +1,7 @@
 /* The HDF5 output's chunked 2-D datasets (/history, /storage, /lanes): what
  * rs_h5_write_2d_chunked writes is what the HDF5 C API reads back, bit for bit, NaN
- * included; the layout is chunked, shuffled and deflated; the dataset grows with NaN in
+ * included; the layout is chunked, shuffled and deflated (a history from 1 MiB of values,
+ * below stored as it is); the dataset grows with NaN in
  * what was never written; and the chunk shape rule on its own. */
 
 #include <math.h>
@@ -94,6 +95,20 @@ done:
   free(b);
 }
 
+/* 1 when the dataset creation list has the filter */
+static int has_filter(hid_t dcpl, H5Z_filter_t filter)
+{
+  const int nf = H5Pget_nfilters(dcpl);
+  for (int i = 0; i < nf; ++i) {
+    unsigned flags, cd[8], fc;
+    size_t ncd = 8;
+    char fname[64];
+    if (H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof fname, fname, &fc) == filter)
+      return 1;
+  }
+  return 0;
+}
+
 /* Chunked in equal pieces each way, deflated (smaller than the raw values), checksummed */
 static void chunked_2d_layout(void)
 {
@@ -110,17 +125,8 @@ static void chunked_2d_layout(void)
   CHECK(chunk[0] == 13 && chunk[1] == 2500);
   CHECK_LOG("chunk rows", chunk[0]);
   CHECK_LOG("chunk cols", chunk[1]);
-  int has_deflate = 0, has_checksum = 0, nf = H5Pget_nfilters(dcpl);
-  for (int i = 0; i < nf; ++i) {
-    unsigned flags, cd[8], fc;
-    size_t ncd = 8;
-    char fname[64];
-    H5Z_filter_t id = H5Pget_filter2(dcpl, (unsigned)i, &flags, &ncd, cd, sizeof fname, fname, &fc);
-    has_deflate |= id == H5Z_FILTER_DEFLATE;
-    has_checksum |= id == H5Z_FILTER_FLETCHER32;
-  }
-  CHECK(has_deflate);
-  CHECK(has_checksum);
+  CHECK(has_filter(dcpl, H5Z_FILTER_SHUFFLE) && has_filter(dcpl, H5Z_FILTER_DEFLATE));
+  CHECK(has_filter(dcpl, H5Z_FILTER_FLETCHER32));
   hsize_t stored = H5Dget_storage_size(d);
   CHECK_LOG("compressed bytes / raw bytes", (double)stored / ((double)ROWS * COLS * 8.0));
   CHECK(stored < (hsize_t)ROWS * COLS * sizeof(double));
@@ -130,6 +136,45 @@ static void chunked_2d_layout(void)
   cleanup(path, dir);
 done:
   free(a);
+}
+
+/* A history compressed from RS_H5_DEFLATE_MIN_BYTES of values on: one value short of it
+ * stored as it is (its chunks checksummed, its values back bit for bit), at it deflated;
+ * any other 2-D dataset (the lanes') deflated whatever its size */
+static void deflate_from_min_bytes(void)
+{
+  const size_t cols = RS_H5_DEFLATE_MIN_BYTES / sizeof(double);
+  double *a = malloc(cols * sizeof *a), *b = malloc(cols * sizeof *b);
+  hid_t f = -1;
+  if (!a || !b || rs_h5_memfile_create(&f) != RS_OK) {
+    CHECK(!"set-up");
+    goto done;
+  }
+  for (size_t j = 0; j < cols; ++j) a[j] = -1.0e5 / (double)(j + 1);
+  CHECK(rs_h5_write_2d_history(f, "short", a, 1, cols - 1, "Pa", "one value short") == RS_OK);
+  CHECK(rs_h5_write_2d_history(f, "at", a, 1, cols, "Pa", "at the bound") == RS_OK);
+  CHECK(rs_h5_write_2d_chunked(f, "lanes", a, 1, cols - 1, "Pa", "not a history") == RS_OK);
+  for (int k = 0; k < 3; ++k) {
+    static const char *const name[3] = {"short", "at", "lanes"};
+    hid_t d = H5Dopen2(f, name[k], H5P_DEFAULT), dcpl = H5Dget_create_plist(d);
+    const int deflated = k > 0;
+    CHECK(has_filter(dcpl, H5Z_FILTER_DEFLATE) == deflated);
+    CHECK(has_filter(dcpl, H5Z_FILTER_SHUFFLE) == deflated);
+    CHECK(has_filter(dcpl, H5Z_FILTER_FLETCHER32));
+    const size_t n = k == 1 ? cols : cols - 1;
+    CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, b) >= 0);
+    CHECK(memcmp(a, b, n * sizeof *a) == 0);
+    const hsize_t stored = H5Dget_storage_size(d);
+    CHECK_LOG(name[k], (double)stored / (double)(n * sizeof(double)));
+    if (deflated) CHECK(stored < n * sizeof(double));
+    else CHECK(stored >= n * sizeof(double));
+    H5Pclose(dcpl);
+    H5Dclose(d);
+  }
+done:
+  if (f >= 0) H5Fclose(f);
+  free(a);
+  free(b);
 }
 
 /* Grown by one stage, the new row reads as NaN (the fill value) until written; a dataset
@@ -185,5 +230,6 @@ static const check_case cases[] = {
     {"chunked_2d_layout", chunked_2d_layout},
     {"chunked_2d_grow", chunked_2d_grow},
     {"chunk_shape_rule", chunk_shape_rule},
+    {"deflate_from_min_bytes", deflate_from_min_bytes},
 };
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
