@@ -53,25 +53,8 @@
 enum { N = 8000 };
 static const double T0 = 100.0, TOL = 2e-5;
 
-/* the 8000-layer 6 um PET film roll, the reuse held to TOL, with the
- * deeper level's least size `min_nodes` (INT_MAX: the one-level engine) */
-static rs_roll *newsprint(int min_nodes, rs_reuse reuse, double rtol)
-{
-  const double t = (0.68 - 0.0762) / 100633; /* the 6 um film of test_roll_profile.film_span */
-  rs_roll_params p = hakiel_params(0.0762, t, 4.5e9, 1e6, 60.0, 2e-6, 1e10, N);
-  p.rtol = rtol;
-  p.reuse = reuse;
-  p.placement = RS_LOAD_BENEATH;
-  rs_roll *roll = NULL;
-  CHECK(rs_roll_create(&p, &roll) == RS_OK);
-  if (roll) {
-    roll->deep.min_nodes = min_nodes;
-    roll->deep.span = 0.1; /* on a short roll the references start low */
-  }
-  return roll;
-}
-
-/* the same film, `layers` long, whose levels form from min_nodes with the shipped span */
+/* the 6 um PET film of test_roll_profile.film_span, `layers` long, the reuse held to rtol /
+ * 50, whose levels form from min_nodes (INT_MAX: the one-level engine) with the shipped span */
 static rs_roll *film_long(int min_nodes, rs_reuse reuse, double rtol, int layers)
 {
   const double t = (0.68 - 0.0762) / 100633;
@@ -82,6 +65,15 @@ static rs_roll *film_long(int min_nodes, rs_reuse reuse, double rtol, int layers
   rs_roll *roll = NULL;
   CHECK(rs_roll_create(&p, &roll) == RS_OK);
   if (roll) roll->deep.min_nodes = min_nodes;
+  return roll;
+}
+
+/* the 8000-layer roll of that film, its levels' span 0.1 (on a short roll the references
+ * start low) */
+static rs_roll *newsprint(int min_nodes, rs_reuse reuse, double rtol)
+{
+  rs_roll *roll = film_long(min_nodes, reuse, rtol, N);
+  if (roll) roll->deep.span = 0.1;
   return roll;
 }
 
