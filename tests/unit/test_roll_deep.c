@@ -37,6 +37,10 @@
  *                     28x in the core pressure, when the nodes leaving a renewed level do not
  *                     take its rebase factors, and by 1000x in sigma_r when they do not take
  *                     its scales)
+ *   renewed_invariants the same roll alone: at least 20 renewals, the invariants after each
+ *                     and every 250 layers, a level holding nodes at the end whose layer
+ *                     reads equal the full profile bit for bit (a unit case: valgrind runs
+ *                     the renewals' paths)
  *   catches_broken    broken states of the level (a pending scale with no level, a level
  *                     above the lazy zone, a rebase factor that is not positive, a level
  *                     without its depth at forming, a renewal pending between increments,
@@ -358,7 +362,26 @@ static void renews(void)
   rs_roll_destroy(&ref);
 }
 
-static const check_case cases[] = {{"renews", renews},{"vs_one_level", vs_one_level},
+/* the renewals' state: the 25,000-layer roll of renews alone, its invariants checked every
+ * 250 layers and after every renewal, and its layer reads the full profile bit for bit */
+static void renewed_invariants(void)
+{
+  enum { NL = 25000 };
+  static double lazy[NL];
+  rs_roll *two = film_long(NL / 20, RS_REUSE_ON, TOL / RS_ACCURACY_PER_RTOL, NL);
+  int held = 0;
+  if (two && wind_checked(two, NL, &held)) {
+    printf("  renewed %ld times, %ld levels formed, a level of %d nodes at the end\n",
+           two->ref.renewals, two->deep.formed, two->deep.top);
+    CHECK(two->ref.renewals >= 20);
+    CHECK(two->deep.top > 0);
+    for (int j = 0; j < NL; ++j) lazy[j] = rs_roll_layer_sigma_r(two, j);
+    CHECK(memcmp(lazy, rs_roll_sigma_r(two), NL * sizeof(double)) == 0);
+  }
+  rs_roll_destroy(&two);
+}
+
+static const check_case cases[] = {{"renewed_invariants", renewed_invariants},{"renews", renews},{"vs_one_level", vs_one_level},
                                    {"mis_summed_scale", mis_summed_scale},
                                    {"reads_match_full", reads_match_full},
                                    {"restore_dissolves", restore_dissolves},
