@@ -45,7 +45,7 @@ static const char *roll_check_reference(const rs_roll *roll, int full)
 {
   const roll_reference *r = &roll->ref;
   const int n = roll->n;
-  RS_CHECK(r->from == -1 && r->start_C == 0.0,
+  RS_CHECK(r->from == -1 && r->renew == 0 && r->start_C == 0.0,
            "between increments no start is corrected and no reference is being rebased");
   RS_CHECK(r->start >= 0 && r->start <= n, "0 <= start <= n");
   RS_CHECK(r->top >= -1 && r->top <= n, "-1 <= ref.top <= n");
@@ -109,8 +109,11 @@ static const char *roll_check_deep(const rs_roll *roll, int full)
   const roll_deep *d = &roll->deep;
   RS_CHECK(d->min_nodes >= 1 && d->span > 0.0,
            "the deeper level's least size is at least a node, its span positive");
-  RS_CHECK(d->top > 0 || (d->c == 0.0 && d->c2 == 0.0 && d->B == 0.0 && d->A == 1.0),
+  RS_CHECK(d->top > 0 || (d->c == 0.0 && d->c2 == 0.0 && d->B == 0.0 && d->A == 1.0 &&
+                          d->depth0 == 0),
            "an empty deeper level has no pending scale nor rebase factor");
+  RS_CHECK(d->top == 0 || (d->depth0 > 0 && d->depth0 <= roll->n),
+           "a deeper level has its depth at forming, 0 < depth0 <= n");
   RS_CHECK(isfinite(d->c) && isfinite(d->c2) && isfinite(d->B) && d->A > 0.0 && d->A < INFINITY,
            "the deeper level's scales are finite and its rebase factor A positive");
   if (d->top == 0) return NULL;

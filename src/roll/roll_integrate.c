@@ -237,10 +237,13 @@ static void roll_correction_step(rs_roll *roll, roll_correction *c, const roll_j
 static rs_status roll_integration_start(rs_roll *roll, int first, int from_core, double start_C)
 {
   int need = from_core ? 0 : first - 1;
-  if (!from_core && roll->ref.from > 0) need = rsi_roll_deep_keep(roll, first); /* or 0 */
+  if (!from_core && roll->ref.from > 0 && !roll->ref.renew)
+    need = rsi_roll_deep_keep(roll, first); /* or 0 */
   const int F = roll->lazy.top;
   if (need < F) {
-    if (!from_core)
+    if (roll->ref.renew) /* the level renewed: its top nodes leave it (roll_reference_renew, roll_reference.c) */
+      rsi_roll_deep_lower(roll, need);
+    else if (!from_core)
       rsi_roll_lazy_flush(roll, need); /* below the deeper level: the level too (roll_deep) */
     else if (rsi_roll_lazy_flush_core(roll))
       rsi_roll_shape_cut(roll, -1); /* the level's nodes' shape stale: none until it is made */

@@ -40,6 +40,9 @@ enum { RS_REF_DEEP_MAX = 4 };
  * nodes more than twice as far below the top as its node in a level of their own when
  * they are at least RS_DEEP_MIN_NODES (where it pays: a long roll) */
 enum { RS_DEEP_MIN_NODES = 50000 };
+/* ... and renews it in place of a reference from the core while it lies within this many
+ * times its depth at forming below the top (roll_reference_renew) */
+enum { RS_DEEP_RENEW_DEPTH = 2 };
 /* An integration whose top is at most this many nodes above its start forms ln g^2 at
  * all of them (and the one below the start) in one vectorised pass before CVODE starts,
  * instead of when a step first looks (rsi_roll_lg2_range: the right-hand side then never
@@ -116,7 +119,7 @@ typedef struct roll_ode {
  * a rebased node) is the reference; below the node an integration starts from, (w, L)
  * stay the reference's, and the increment there is c times the reference's shape.
  * Invariant: -1 <= top <= n and Er > 0 over nodes 0..top; 0 <= start <= n; between
- * increments from = -1 and start_C = 0 (rsi_roll_start_release); -1 <= shape_top <=
+ * increments from = -1, renew = 0 and start_C = 0 (rsi_roll_start_release); -1 <= shape_top <=
  * max_layers, and over the shape's nodes 0 <= shape_e <= shape_max (and |shape_h| <=
  * shape_max with Hakiel's placement). */
 typedef struct roll_reference {
@@ -133,6 +136,9 @@ typedef struct roll_reference {
   int deep_max;         /* how many there may be (RS_REF_DEEP_MAX; 0: every one from it) */
   long deep_references; /* references from a node above the core so far */
   int from_last;        /* the node the last of them started from */
+  int renew;            /* 1: this increment's reference (from `from`) renews the deeper
+                           level in place of one from the core (roll_reference_renew) */
+  long renewals;        /* references that renewed the level so far */
   double start_C;       /* the drift scale this increment's start was corrected with, 0: none */
   double start_ref[2];  /* the reference's (w, L) at that start (rsi_roll_start_release) */
   /* Below the start node the increment's shape is the reference's: e_j = y(r_j)/y(r_A) and
@@ -195,13 +201,22 @@ typedef struct roll_lazy {
  * order: an increment c' + c2' p_L of the current shape adds A c' to c and A (B c' + c2')
  * to c2. Dissolved (the scales into the stored stresses, the rebase factors into w, L and
  * e: rsi_roll_reference_carry) when a start or a reference reaches below top, at a
- * reference from the core, a lumped block or a restore. Over nodes 0..top-1 the lazy
+ * reference from the core, a lumped block or a restore. Where a reference from the core
+ * is due, a level that may be kept is renewed instead (roll_reference_renew): the
+ * reference starts at its top node, or at the highest below it where the second-order
+ * bound of the drift since that reference (a + |c| b with the zone's a and b of when they
+ * froze: their E_ref is still that reference's) is within a hundredth of tol, the nodes
+ * above leaving the level (rsi_roll_deep_lower), and the nodes below keep the core
+ * reference's (w, L) with the rebase factors carried; while the level lies within twice
+ * its depth at forming below the top (depth0: n - top then; deeper, it is dissolved and the reference is from the core,
+ * after which a level forms afresh). Over nodes 0..top-1 the lazy
  * zone's a, b and Lmax are the level's own prefix maxima (in the scale c continues); the
  * lazy zone proper is top..lazy.top-1, its maxima starting afresh at top.
  * Invariant: an empty level (top = 0) has c = c2 = B = 0 and A = 1; a level lies within
  * the lazy zone (top <= lazy.top <= lazy.limit), with the load beneath the layer and
  * covered by the reference's shape (top - 1 <= ref.shape_top); A > 0, and c, c2, B finite;
- * min_nodes >= 1, span > 0; over its nodes the a, b and Lmax are prefix maxima. */
+ * min_nodes >= 1, span > 0; over its nodes the a, b and Lmax are prefix maxima; a level
+ * has a depth at forming, 0 < depth0 <= n (an empty one 0). */
 typedef struct roll_deep {
   int top;
   int min_nodes;        /* the fewest nodes a level forms with (RS_DEEP_MIN_NODES; tests
@@ -212,6 +227,10 @@ typedef struct roll_deep {
   double c_r;           /* c at the last rebase: the drift since is at most |c - c_r| b_j */
   double A, B;          /* the shape's rebase factor since the level formed, A exp(B p_L) */
   double pL_max;        /* max |p_L| over the level's nodes */
+  double c_form, c2_form; /* c and c2 when it formed */
+  double eP_max;        /* max e_j / P_j over its nodes when it formed (the pressure gained
+                           since, relative to the pressure: roll_deep_factor_ok) */
+  int depth0;           /* n - top when it formed (0: no level) */
   long formed;          /* levels formed so far (a work counter) */
 } roll_deep;
 
@@ -306,6 +325,21 @@ static inline int roll_deep_bounded(const rs_roll *roll, double c, double c2)
          (c2 == 0.0 || fabs(c2) * roll->ref.shape_max * roll->prof.max < INFINITY);
 }
 
+/* Whether the deeper level's rebase factor A exp(B p_L), carried in its scales to first
+ * order, is still within its bound: the truncation is (B p_L)^2/2 of the pressure its
+ * nodes gained since it formed, e_j (c - c_form + (c2 - c2_form) p_L,j), at most
+ * (|B| pL_max)^2/2 (|c - c_form| + |c2 - c2_form| pL_max) max(e_j/P_j) of a node's pressure
+ * P_j (which only grows), and is held to 1 % of tol; and |B| pL_max <= 0.1, where the
+ * series is dominated by its first terms. */
+static inline int roll_deep_factor_ok(const rs_roll *roll)
+{
+  const roll_deep *d = &roll->deep;
+  const double f = fabs(d->B) * d->pL_max;
+  if (f == 0.0) return 1;
+  const double gain = (fabs(d->c - d->c_form) + fabs(d->c2 - d->c2_form) * d->pL_max) * d->eP_max;
+  return f <= 0.1 && 0.5 * f * f * gain <= 0.01 * RS_ACCURACY_PER_RTOL * roll->p.rtol;
+}
+
 /* e^d by its Taylor sum to d^7: relative error below d^8/8! (2e-17 at |d| = 0.03) */
 static inline double roll_exp_small(double d)
 {
@@ -354,6 +388,7 @@ void rsi_roll_lazy_configure(rs_roll *roll, int m);
 void rsi_roll_lazy_clear(rs_roll *roll);
 int rsi_roll_deep_keep(rs_roll *roll, int from);
 void rsi_roll_deep_rebased(rs_roll *roll, double C, double pL_from);
+void rsi_roll_deep_lower(rs_roll *roll, int to);
 int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap);
 void rsi_roll_lazy_free(rs_roll *roll);
 
@@ -424,7 +459,7 @@ void rsi_roll_reference_begin(rs_roll *roll, int k, int j0);
 void rsi_roll_reference_end(rs_roll *roll, int k, int first);
 void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);
-void rsi_roll_reference_carry(rs_roll *roll, int top, double A, double B);
+void rsi_roll_reference_carry(rs_roll *roll, int lo, int hi, double A, double B);
 void rsi_roll_reference_restored(rs_roll *roll);
 void rsi_roll_start_set(rs_roll *roll, int first, double C);
 void rsi_roll_start_restore(rs_roll *roll);

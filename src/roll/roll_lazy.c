@@ -68,9 +68,10 @@ static void roll_deep_dissolve(rs_roll *roll, int stresses, int carry)
   roll_deep *d = &roll->deep;
   if (d->top == 0) return;
   if (stresses) roll_lazy_shift(roll, 0, d->top, d->c, d->c2);
-  if (carry) rsi_roll_reference_carry(roll, d->top, d->A, d->B);
+  if (carry) rsi_roll_reference_carry(roll, 0, d->top, d->A, d->B);
   roll->lazy.top = 0;
   d->top = 0;
+  d->depth0 = 0;
   d->c = d->c2 = d->c_r = d->B = 0.0;
   d->A = 1.0;
 }
@@ -289,7 +290,7 @@ void rsi_roll_lazy_clear(rs_roll *roll)
  * (rsi_roll_reference_rebase): the node from which the nodes must leave the lazy zone, the
  * deeper level's top, or 0 (every node: the level dissolved by the flush). A level kept
  * stays while it lies below the node and its rebase factor's first-order remainder is
- * negligible (|B| max|p_L| <= sqrt(0.02 tol): the remainder at most 1 % of tol). One
+ * negligible (roll_deep_factor_ok: at most 1 % of tol of its nodes' pressures). One
  * forms, when none exists, of the lazy nodes more than span x (n - from) below the node
  * (twice as far below the top: later references from a node above the core start at or
  * below it, rsi_roll_reuse_start), if they are at least min_nodes. Its scales are the
@@ -298,19 +299,29 @@ void rsi_roll_lazy_clear(rs_roll *roll)
 int rsi_roll_deep_keep(rs_roll *roll, int from)
 {
   roll_deep *d = &roll->deep;
-  const double factor_max = sqrt(0.02 * RS_ACCURACY_PER_RTOL * roll->p.rtol);
-  if (d->top > 0) return d->top < from && fabs(d->B) * d->pL_max <= factor_max ? d->top : 0;
+  if (d->top > 0) return d->top < from && roll_deep_factor_ok(roll) ? d->top : 0;
   int D = from - (int)(d->span * (roll->n - from));
   if (D > from - 1) D = from - 1; /* the start's Hermite slope reads node from - 1 */
   if (D > roll->lazy.top) D = roll->lazy.top;
   if (!roll->shift || D < d->min_nodes) return 0;
   const double *restrict pL = roll->prof.L;
-  double m = 0.0;
+  double m = 0.0, q = 0.0;
   for (int j = 0; j < D; ++j) m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
+  /* max e_j / P_j, P_j the node's pressure now (its true stress, in the zone: the level
+   * continues the zone's scales); a node not under pressure bounds nothing */
+  const double *restrict e = roll->ref.shape_e, *restrict sr = roll->sigma_r;
+  const double c = roll->lazy.c, c2 = roll->lazy.c2;
+  for (int j = 0; j < D; ++j) {
+    const double P = -((j == 0 ? roll->core_sigma : sr[j - 1]) + e[j] * (c + c2 * pL[j]));
+    const double r = P > 0.0 ? e[j] / P : INFINITY;
+    q = r > q || r != r ? r : q;
+  }
   d->pL_max = m;
+  d->eP_max = q;
   d->top = D;
-  d->c = d->c_r = roll->lazy.c;
-  d->c2 = roll->lazy.c2;
+  d->depth0 = roll->n - D;
+  d->c = d->c_r = d->c_form = roll->lazy.c;
+  d->c2 = d->c2_form = roll->lazy.c2;
   d->A = 1.0;
   d->B = 0.0;
   d->formed++;
@@ -327,6 +338,22 @@ void rsi_roll_deep_rebased(rs_roll *roll, double C, double pL_from)
   d->A *= exp(-C * pL_from);
   d->B += C;
   d->c_r = d->c; /* the drift since the last rebase is measured from here */
+}
+
+/* The level renewed (roll_reference_renew, roll_reference.c): the lazy zone above it
+ * flushed, and its nodes from `to` up leave it, taking its scales into their stored
+ * stresses (with the shape as it was when the level formed) and its rebase factors into
+ * their w, L and shape (rsi_roll_reference_carry); the level's top and the zone's are
+ * then `to`. */
+void rsi_roll_deep_lower(rs_roll *roll, int to)
+{
+  roll_deep *d = &roll->deep;
+  const int D = d->top;
+  rsi_roll_lazy_flush(roll, D);
+  roll_lazy_shift(roll, to, D, d->c, d->c2);
+  rsi_roll_reference_carry(roll, to, D, d->A, d->B);
+  d->top = to;
+  roll->lazy.top = to;
 }
 
 int rsi_roll_lazy_alloc(rs_roll *roll, size_t cap)

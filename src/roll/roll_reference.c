@@ -21,8 +21,13 @@
 static int roll_refresh_age(const rs_roll *roll)
 {
   if (!roll->prof.on || roll->prof.top < 1) return 32; /* the first-order search */
-  const int a = roll->n / 400;
-  return a < 32 ? 32 : a > 512 ? 512 : a;
+  /* on a roll long enough for the deeper level, whose references are not O(N) as a rule
+   * (they rebase, flush and freeze the nodes above the level; one from the core renews
+   * it: roll_reference_renew), more often: the window of nodes every increment works
+   * over shrinks with the drift since the reference (docs/performance.md) */
+  const int deep = roll->n >= roll->deep.min_nodes;
+  const int a = roll->n / (deep ? 1600 : 400), cap = deep ? 128 : 512;
+  return a < 32 ? 32 : a > cap ? cap : a;
 }
 
 /* the start-node search's block of nodes (rsi_roll_reuse_start) */
@@ -85,6 +90,63 @@ static inline void roll_lazy_zone_bound(const rs_roll *roll, int j, double *eps,
   }
 }
 
+/* A reference from the core is due (roll_reference_renew; tol the remainder a rebase may
+ * leave, a hundredth of the reuse's): the node the level may be renewed from instead, or
+ * -1 (the level dissolved by that reference). The reference then starts at that node
+ * with the rebased values there (the level lowered to the node below it first, the nodes
+ * above taking its scales and rebase factors: rsi_roll_deep_lower, so that the start and
+ * the node its Hermite slope reads are explicit), integrates every node above afresh and
+ * leaves the nodes below in the level. Their (w, L) are still the last core reference's,
+ * moved by B (p_w, p_L) to first order in the drift since it: what that leaves is second
+ * order in the drift since that reference, which the level's nodes' a + |c| b bounds
+ * (their E_ref is that reference's, and c continues the zone's scale their a and b were
+ * taken in). So the node is the level's top node, or the highest below it, where that
+ * bound's second-order error is within tol; and the level is renewed while its rebase
+ * factor's remainder is within its bound (roll_deep_factor_ok), the node within top, and
+ * the level then within twice its depth at forming below the top (deeper, a reference from
+ * it would pass over more nodes than one from a level formed afresh). */
+/* roll_deep_renewable's bound at the level's node j (the prefix maxima up to it) */
+static inline double roll_deep_renew_bound(const rs_roll *roll, int j, double Ls)
+{
+  const roll_deep *d = &roll->deep;
+  const double eps = roll->lazy.a[j] + fabs(d->c) * roll->lazy.b[j];
+  return rsi_roll_profile_bound(eps, roll->lazy.Lmax[j] + fabs(d->B) * d->pL_max, Ls, 1);
+}
+
+static int roll_deep_renewable(const rs_roll *roll, int top, double tol)
+{
+  const roll_deep *d = &roll->deep;
+  const int D = d->top;
+  if (D < 3 || D - 1 > top || !roll_deep_factor_ok(roll)) return -1;
+  const double Ls = roll->L[roll->n - roll->shift];
+  int from = D - 1;
+  if (!(roll_deep_renew_bound(roll, from, Ls) <= tol)) {
+    /* the highest node within it: the bound grows with the node (prefix maxima) */
+    int lo = -1, hi = from;
+    while (hi - lo > 1) {
+      const int mid = lo + (hi - lo) / 2;
+      if (roll_deep_renew_bound(roll, mid, Ls) <= tol)
+        lo = mid;
+      else
+        hi = mid;
+    }
+    from = lo;
+  }
+  return from >= 2 && roll->n - (from + 1) <= RS_DEEP_RENEW_DEPTH * d->depth0 ? from : -1;
+}
+
+/* A reference from the core is due (rsi_roll_reuse_start): on a long roll whose deeper
+ * level may be kept (roll_deep_renewable), one from the level's top node instead, or -1
+ * (from the core). top: the highest node the reference's books allow a start at. */
+static int roll_reference_renew(rs_roll *roll, int top)
+{
+  const int from = roll_deep_renewable(roll, top, 0.01 * RS_ACCURACY_PER_RTOL * roll->p.rtol);
+  if (from < 1 || !(roll->ref.shape_e[from] > 1e-280)) return -1;
+  roll->ref.from = from;
+  roll->ref.renew = 1;
+  return from;
+}
+
 int rsi_roll_reuse_start(rs_roll *roll, double *C)
 {
   const int n = roll->n;
@@ -103,7 +165,8 @@ int rsi_roll_reuse_start(rs_roll *roll, double *C)
   }
   if (roll->ref.age < roll_refresh_age(roll))
     return roll_reuse_search(roll, top, RS_ACCURACY_PER_RTOL * roll->p.rtol, second, C);
-  if (!second || roll->ref.deep >= roll->ref.deep_max) return -1;
+  if (!second) return -1;
+  if (roll->ref.deep >= roll->ref.deep_max) return roll_reference_renew(roll, top);
   /* A new reference, from the core or from a node above it (rsi_roll_reference_rebase):
    * below that node the reference's (w, L) and shape take their first-order correction
    * for the drift for good and the drift restarts from 0 there, so what the correction
@@ -121,7 +184,7 @@ int rsi_roll_reuse_start(rs_roll *roll, double *C)
   if (roll->ref.deep > 0) top = top < roll->ref.from_last ? top : roll->ref.from_last;
   const int from = roll_reuse_search(roll, top, 0.01 * RS_ACCURACY_PER_RTOL * roll->p.rtol, 1, C);
   *C = 0.0; /* the start is rebased, not corrected for this increment only */
-  if (from < 1 || !(roll->ref.shape_e[from] > 1e-280)) return -1;
+  if (from < 1 || !(roll->ref.shape_e[from] > 1e-280)) return roll_reference_renew(roll, top);
   roll->ref.from = from;
   return from;
 }
@@ -264,6 +327,7 @@ void rsi_roll_start_set(rs_roll *roll, int first, double C)
 void rsi_roll_start_restore(rs_roll *roll)
 {
   roll->ref.from = -1;
+  roll->ref.renew = 0;
   if (roll->ref.start_C == 0.0) return;
   roll->w[roll->ref.start] = roll->ref.start_ref[0];
   roll->L[roll->ref.start] = roll->ref.start_ref[1];
@@ -314,17 +378,18 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
   rsi_roll_profile_rebased(roll, from);
 }
 
-/* The deeper level's nodes 0..top-1 dissolved (roll_lazy.c): they take the rebases they
- * were spared, (w, L) += B (p_w, p_L) and e *= A exp(B p_L) (B the sum of the rebases' C,
+/* The deeper level's nodes lo..hi-1 leaving it (roll_lazy.c: all of them when it is
+ * dissolved, its two top ones when it is renewed): they take the rebases they were
+ * spared, (w, L) += B (p_w, p_L) and e *= A exp(B p_L) (B the sum of the rebases' C,
  * A the product of their exp(-C p_L,from): the factors of rsi_roll_reference_rebase,
  * whose profile there was the same at each); E_ref stays, so the drift there is measured
  * since the level formed, on the safe side of the one since the last rebase. */
-void rsi_roll_reference_carry(rs_roll *roll, int top, double A, double B)
+void rsi_roll_reference_carry(rs_roll *roll, int lo, int hi, double A, double B)
 {
   if (B == 0.0 && A == 1.0) return;
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
-  for (int j = 0; j < top; ++j) {
+  for (int j = lo; j < hi; ++j) {
     w[j] += B * pw[j];
     L[j] += B * pL[j];
     e[j] *= A * roll_exp_step(B * pL[j]);
@@ -342,9 +407,14 @@ void rsi_roll_reference_extend(rs_roll *roll)
   const int from = roll->ref.from;
   const int top = roll->ref.top < roll->ref.shape_top ? roll->ref.top : roll->ref.shape_top;
   roll->ref.age = 0;
-  roll->ref.deep++;
-  roll->ref.deep_references++;
-  roll->ref.from_last = from;
+  if (roll->ref.renew) { /* in place of one from the core: a new chain begins */
+    roll->ref.deep = 0;
+    roll->ref.renewals++;
+  } else {
+    roll->ref.deep++;
+    roll->ref.deep_references++;
+    roll->ref.from_last = from;
+  }
   rsi_roll_profile_extend(roll, from, top);
 }
 

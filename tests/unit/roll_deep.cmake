@@ -1,1 +1,1 @@
-rs_test(test_roll_deep unit SOURCES unit/test_roll_deep.c CASES mis_summed_scale reads_match_full restore_dissolves failure_and_block catches_broken VALIDATION_CASES vs_one_level)
+rs_test(test_roll_deep unit SOURCES unit/test_roll_deep.c CASES mis_summed_scale reads_match_full restore_dissolves failure_and_block catches_broken renewed_invariants VALIDATION_CASES vs_one_level renews)
