@@ -207,6 +207,34 @@ static void ring_stack_scan_exact(void)
     }
 }
 
+/* A stack with no ring in compression cannot buckle: the scan's answer (none below the
+ * cap, mode 0) without its passes, the same as the reference scan's; and a form singular
+ * even unloaded (no springs, no bending) still goes through the scan, as the reference. */
+static void ring_stack_in_tension_exact(void)
+{
+  enum { n = 400 };
+  static const double calipers[] = {70e-6, 1.5e-6, 1e-3}, E_r[] = {3e5, 2e7, 1e9};
+  double D[n], rho[n], N[n], k[n], rs[n];
+  for (int c = 0; c < 3; ++c)
+    for (int e = 0; e < 4; ++e) {
+      const double t = calipers[c], Et = 4e9, Dl = Et * t * t * t / 12.0;
+      for (int j = 0; j < n; ++j) {
+        rho[j] = 0.0762 + (j + 0.5) * t;
+        rs[j] = 0.0762 + j * t;
+        D[j] = e < 3 ? Dl * (1.0 + 0.3 * sin(0.1 * j)) : 0.0;
+        k[j] = e < 3 ? (j ? E_r[e] : 0.5 * E_r[e]) * (1.0 + 0.5 * cos(0.07 * j)) / t : 0.0;
+        N[j] = -2e6 * t * (1.0 + 0.2 * sin(0.3 * j)) * (j % 7 == 0 ? 0.0 : 1.0); /* tension, 0 */
+      }
+      rs_ring_stack s = {.n = n, .D = D, .rho = rho, .N = N, .k = k, .r_spring = rs};
+      int m = -1, mref = -1;
+      const double f = rs_defect_ring_stack_critical(&s, &m, NULL);
+      const double fref = ref_critical(&s, &mref);
+      CHECK_LOG(e < 3 ? "least factor, in tension" : "least factor, singular unloaded", f);
+      CHECK(f == fref && m == mref);
+      if (e < 3) CHECK(f == 1e12 && m == 0);
+    }
+}
+
 /* (a) A hoop strength: the layers over it flagged, the margin strength / compression, the
  * criterion named; (c) the zone's extent from the core. */
 static void starring_strength_and_zone(void)
@@ -431,6 +459,7 @@ static const check_case cases[] = {
     {"ring_stack_one_ring", ring_stack_one_ring},
     {"ring_stack_rigid_packet", ring_stack_rigid_packet},
     {"ring_stack_scan_exact", ring_stack_scan_exact},
+    {"ring_stack_in_tension_exact", ring_stack_in_tension_exact},
     {"starring_strength_and_zone", starring_strength_and_zone},
     {"starring_bonded_and_slipping", starring_bonded_and_slipping},
     {"slip_uniform_pressure", slip_uniform_pressure},
