@@ -3,7 +3,7 @@
 #   bench/film_million.sh build film.dat
 #   gnuplot -e "data='film.dat'" docs/img/film_million.gp
 # and, with before='old.dat' (the same bench of another build, run alternately), that
-# build's CPU time beside it (the figure: the build before the deeper level's renewals)
+# build's CPU time beside it (the figure: the build at commit c7a59ac)
 # Columns of film.dat: layers wall_s solver_s cpu_s peak_kb cvode_steps core_pressure_pa.
 if (!exists("data")) data = 'film.dat'
 set terminal pngcairo size 900,560 font ",11"
@@ -26,8 +26,8 @@ t0 = STATS_min_y
 f(x) = t0 * (x / n0) ** 1.1
 set label 1 'target 12 s' at first 949200, first 12 right offset -1, 0.6 tc rgb 'red'
 set label 2 'target 300 MB' at first 949200, second 300 right offset -1, 0.6 tc rgb 'dark-green'
-extra = exists("before") ? sprintf(", '%s' using 1:4 with linespoints pt 6 lw 1 dt 3 lc rgb 'blue' title 'CPU time before the renewals'", before) : ""
-plot data using 1:4 with linespoints pt 7 lw 2 lc rgb 'blue' title 'process CPU time (s, left), the level renewed', \
+extra = exists("before") ? sprintf(", '%s' using 1:4 with linespoints pt 6 lw 1 dt 3 lc rgb 'blue' title 'CPU time, the build at c7a59ac'", before) : ""
+plot data using 1:4 with linespoints pt 7 lw 2 lc rgb 'blue' title 'process CPU time (s, left)', \
      f(x) with lines dt 2 lc rgb 'gray' title 'N^{1.1} from the first point (target slope)', \
      '+' every ::0::0 using (949200):(12) with points pt 6 ps 2 lc rgb 'red' title 'target at 949,200 layers: 12 s', \
      data using 1:($5 / 1024) axes x1y2 with linespoints pt 9 lw 2 lc rgb 'dark-green' title 'peak resident memory (MB, right)', \
