@@ -178,28 +178,42 @@ static double ref_critical(const rs_ring_stack *s, int *mode)
   return best;
 }
 
+enum { STACK_N = 400 };
+typedef struct test_stack {
+  double D[STACK_N], rho[STACK_N], N[STACK_N], k[STACK_N], rs[STACK_N];
+} test_stack;
+
+/* STACK_N rings of caliper t on springs E_r / t, wavy so that no two rows are alike;
+ * `stiff` 0: no bending and no springs; `tension` 1: every ring in tension (every 7th
+ * unloaded), 0: compressed at the core, in tension beyond a third of the stack. */
+static rs_ring_stack stack_fill(test_stack *b, double t, double E_r, int stiff, int tension)
+{
+  const double Et = 4e9, Dl = Et * t * t * t / 12.0;
+  for (int j = 0; j < STACK_N; ++j) {
+    b->rho[j] = 0.0762 + (j + 0.5) * t;
+    b->rs[j] = 0.0762 + j * t;
+    b->D[j] = stiff ? Dl * (1.0 + 0.3 * sin(0.1 * j)) : 0.0;
+    b->k[j] = stiff ? (j ? E_r : 0.5 * E_r) * (1.0 + 0.5 * cos(0.07 * j)) / t : 0.0;
+    b->N[j] = tension ? -2e6 * t * (1.0 + 0.2 * sin(0.3 * j)) * (j % 7 == 0 ? 0.0 : 1.0)
+                      : 2e6 * t * (1.0 - 3.0 * j / STACK_N) * (1.0 + 0.2 * sin(0.3 * j));
+  }
+  return (rs_ring_stack){.n = STACK_N, .D = b->D, .rho = b->rho, .N = b->N, .k = b->k,
+                         .r_spring = b->rs};
+}
+
+static const double stack_calipers[] = {70e-6, 1.5e-6, 1e-3}, stack_E_r[] = {3e5, 2e7, 1e9};
+
 static void ring_stack_scan_exact(void)
 {
-  enum { n = 400 };
-  static const double calipers[] = {70e-6, 1.5e-6, 1e-3}, E_r[] = {3e5, 2e7, 1e9};
-  double D[n], rho[n], N[n], k[n], rs[n];
+  test_stack b;
   for (int c = 0; c < 3; ++c)
     for (int e = 0; e < 3; ++e) {
-      const double t = calipers[c], Et = 4e9, Dl = Et * t * t * t / 12.0;
-      for (int j = 0; j < n; ++j) {
-        rho[j] = 0.0762 + (j + 0.5) * t;
-        rs[j] = 0.0762 + j * t;
-        D[j] = Dl * (1.0 + 0.3 * sin(0.1 * j));
-        k[j] = (j ? E_r[e] : 0.5 * E_r[e]) * (1.0 + 0.5 * cos(0.07 * j)) / t;
-        /* compressed at the core, in tension beyond a third of the stack */
-        N[j] = 2e6 * t * (1.0 - 3.0 * j / n) * (1.0 + 0.2 * sin(0.3 * j));
-      }
-      rs_ring_stack s = {.n = n, .D = D, .rho = rho, .N = N, .k = k, .r_spring = rs};
+      const rs_ring_stack s = stack_fill(&b, stack_calipers[c], stack_E_r[e], 1, 0);
       int m = 0, mref = 0;
       const double f = rs_defect_ring_stack_critical(&s, &m, NULL);
       const double fref = ref_critical(&s, &mref);
-      CHECK_LOG("caliper (m)", t);
-      CHECK_LOG("E_r (Pa)", E_r[e]);
+      CHECK_LOG("caliper (m)", stack_calipers[c]);
+      CHECK_LOG("E_r (Pa)", stack_E_r[e]);
       CHECK_LOG("least factor", f);
       CHECK_LOG("reference", fref);
       CHECK_LOG("mode", m);
@@ -212,20 +226,10 @@ static void ring_stack_scan_exact(void)
  * even unloaded (no springs, no bending) still goes through the scan, as the reference. */
 static void ring_stack_in_tension_exact(void)
 {
-  enum { n = 400 };
-  static const double calipers[] = {70e-6, 1.5e-6, 1e-3}, E_r[] = {3e5, 2e7, 1e9};
-  double D[n], rho[n], N[n], k[n], rs[n];
+  test_stack b;
   for (int c = 0; c < 3; ++c)
     for (int e = 0; e < 4; ++e) {
-      const double t = calipers[c], Et = 4e9, Dl = Et * t * t * t / 12.0;
-      for (int j = 0; j < n; ++j) {
-        rho[j] = 0.0762 + (j + 0.5) * t;
-        rs[j] = 0.0762 + j * t;
-        D[j] = e < 3 ? Dl * (1.0 + 0.3 * sin(0.1 * j)) : 0.0;
-        k[j] = e < 3 ? (j ? E_r[e] : 0.5 * E_r[e]) * (1.0 + 0.5 * cos(0.07 * j)) / t : 0.0;
-        N[j] = -2e6 * t * (1.0 + 0.2 * sin(0.3 * j)) * (j % 7 == 0 ? 0.0 : 1.0); /* tension, 0 */
-      }
-      rs_ring_stack s = {.n = n, .D = D, .rho = rho, .N = N, .k = k, .r_spring = rs};
+      const rs_ring_stack s = stack_fill(&b, stack_calipers[c], stack_E_r[e % 3], e < 3, 1);
       int m = -1, mref = -1;
       const double f = rs_defect_ring_stack_critical(&s, &m, NULL);
       const double fref = ref_critical(&s, &mref);
