@@ -44,8 +44,8 @@ size_t cli_heap_prepare(size_t reserve, void **first)
   void *p = malloc(reserve);
   size_t marked = 0;
   if (p) {
-    const uintptr_t begin = ((uintptr_t)p + huge - 1) & ~(huge - 1);
-    const uintptr_t end = ((uintptr_t)p + reserve) & ~(huge - 1);
+    const uintptr_t at = (uintptr_t)p; /* the reserve's address, compared after its free */
+    const uintptr_t begin = (at + huge - 1) & ~(huge - 1), end = (at + reserve) & ~(huge - 1);
     if (end > begin && madvise((void *)begin, end - begin, MADV_HUGEPAGE) == 0) {
       marked = end - begin;
       if (first) *first = (void *)begin;
@@ -54,9 +54,9 @@ size_t cli_heap_prepare(size_t reserve, void **first)
     /* the part below the first 2 MiB boundary held, untouched but for its ends, so that
      * the run's blocks start on a huge page rather than in up to 2 MiB of 4 KiB ones (the
      * heap's start is randomised): glibc serves it from the same place, the freed top */
-    if (marked && begin - (uintptr_t)p > 64) {
-      heap_spacer = malloc(begin - (uintptr_t)p - 64);
-      if (heap_spacer && heap_spacer != p) { /* not where the reserve was: no use */
+    if (marked && begin - at > 64) {
+      heap_spacer = malloc(begin - at - 64);
+      if (heap_spacer && (uintptr_t)heap_spacer != at) { /* not where the reserve was */
         free(heap_spacer);
         heap_spacer = NULL;
       }
