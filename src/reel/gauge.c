@@ -113,6 +113,38 @@ double rs_reel_core_displacement(const rs_problem *pb, double core_pressure)
   return isfinite(Ec) ? -pb->core.radius * (core_pressure > 0.0 ? core_pressure : 0.0) / Ec : 0.0;
 }
 
+/* The largest pressure, core_pressure and -sigma_r[j] (j < n), as fmax() takes it in that
+ * order (a NaN so far gives way to the next value: NaN only where the last is one): as
+ * four running maxima side by side where none is a NaN (a maximum does not depend on the
+ * order it is taken in but for the sign of a zero, which the table's Pmax > 0 test does
+ * not see), in order otherwise */
+static double deformed_pmax(double core_pressure, const double *restrict sigma_r, int n)
+{
+  double m[4] = {core_pressure, core_pressure, core_pressure, core_pressure};
+  int nan = isnan(core_pressure), j = 0;
+  for (; j + 3 < n; j += 4)
+    for (int k = 0; k < 4; ++k) {
+      const double P = -sigma_r[j + k];
+      nan |= P != P;
+      m[k] = P > m[k] ? P : m[k];
+    }
+  for (; j < n; ++j) {
+    const double P = -sigma_r[j];
+    nan |= P != P;
+    m[0] = P > m[0] ? P : m[0];
+  }
+  if (!nan) {
+    const double a = m[0] > m[1] ? m[0] : m[1], b = m[2] > m[3] ? m[2] : m[3];
+    return a > b ? a : b;
+  }
+  double Pmax = core_pressure;
+  for (int i = 0; i < n; ++i) { /* fmax without the call */
+    const double P = -sigma_r[i];
+    if (P > Pmax || isnan(Pmax)) Pmax = P;
+  }
+  return Pmax;
+}
+
 rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, const double *sigma_r,
                                   const double *film, int n, double *out)
 {
@@ -120,11 +152,7 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
   strain_table *tb = malloc(sizeof *tb);
   if (!tb) return RS_ERROR(RS_ERR_MEMORY, "deformed radius: out of memory");
   const double t = pb->material.caliper, pa = pb->air.pressure;
-  double Pmax = core_pressure;
-  for (int j = 0; j < n; ++j) { /* fmax without the call */
-    const double P = -sigma_r[j];
-    if (P > Pmax || isnan(Pmax)) Pmax = P;
-  }
+  const double Pmax = deformed_pmax(core_pressure, sigma_r, n);
   strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
   double r = pb->core.radius + rs_reel_core_displacement(pb, core_pressure);
   double P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);

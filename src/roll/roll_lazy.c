@@ -286,6 +286,46 @@ void rsi_roll_lazy_clear(rs_roll *roll)
   roll->lazy.c = roll->lazy.c2 = 0.0;
 }
 
+/* max |p_L,j| (*m) and max e_j / P_j (*q) over the nodes [0, D) (rsi_roll_deep_keep), P_j
+ * the node's pressure now (its true stress, in the zone: the level continues the zone's
+ * scales); a node not under pressure bounds nothing (INFINITY), a NaN is kept for good.
+ * Each maximum as four running ones side by side, merged by the same rule: a maximum is
+ * the same whatever the order it is taken in (of numbers >= +0, or a NaN kept), so the
+ * chains' latency is shared out without a bit changing. */
+static void roll_deep_maxima(const rs_roll *roll, int D, double *m, double *q)
+{
+  const double *restrict pL = roll->prof.L, *restrict e = roll->ref.shape_e;
+  const double *restrict sr = roll->sigma_r;
+  const double c = roll->lazy.c, c2 = roll->lazy.c2;
+  double mm[4] = {0.0, 0.0, 0.0, 0.0}, qq[4] = {0.0, 0.0, 0.0, 0.0};
+  if (D > 0) {
+    const double P = -(roll->core_sigma + e[0] * (c + c2 * pL[0]));
+    const double r = P > 0.0 ? e[0] / P : INFINITY;
+    mm[0] = fabs(pL[0]) > mm[0] ? fabs(pL[0]) : mm[0];
+    qq[0] = r > qq[0] || r != r ? r : qq[0];
+  }
+  int j = 1;
+  for (; j + 3 < D; j += 4)
+    for (int k = 0; k < 4; ++k) {
+      const double P = -(sr[j + k - 1] + e[j + k] * (c + c2 * pL[j + k]));
+      const double r = P > 0.0 ? e[j + k] / P : INFINITY, a = fabs(pL[j + k]);
+      mm[k] = a > mm[k] ? a : mm[k];
+      qq[k] = r > qq[k] || r != r ? r : qq[k];
+    }
+  for (; j < D; ++j) {
+    const double P = -(sr[j - 1] + e[j] * (c + c2 * pL[j]));
+    const double r = P > 0.0 ? e[j] / P : INFINITY, a = fabs(pL[j]);
+    mm[0] = a > mm[0] ? a : mm[0];
+    qq[0] = r > qq[0] || r != r ? r : qq[0];
+  }
+  for (int k = 1; k < 4; ++k) {
+    mm[0] = mm[k] > mm[0] ? mm[k] : mm[0];
+    qq[0] = qq[k] > qq[0] || qq[k] != qq[k] ? qq[k] : qq[0];
+  }
+  *m = mm[0];
+  *q = qq[0];
+}
+
 /* A reference from node `from` above the core is about to rebase the nodes below it
  * (rsi_roll_reference_rebase): the node from which the nodes must leave the lazy zone, the
  * deeper level's top, or 0 (every node: the level dissolved by the flush). A level kept
@@ -304,20 +344,7 @@ int rsi_roll_deep_keep(rs_roll *roll, int from)
   if (D > from - 1) D = from - 1; /* the start's Hermite slope reads node from - 1 */
   if (D > roll->lazy.top) D = roll->lazy.top;
   if (!roll->shift || D < d->min_nodes) return 0;
-  const double *restrict pL = roll->prof.L;
-  double m = 0.0, q = 0.0;
-  for (int j = 0; j < D; ++j) m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
-  /* max e_j / P_j, P_j the node's pressure now (its true stress, in the zone: the level
-   * continues the zone's scales); a node not under pressure bounds nothing */
-  const double *restrict e = roll->ref.shape_e, *restrict sr = roll->sigma_r;
-  const double c = roll->lazy.c, c2 = roll->lazy.c2;
-  for (int j = 0; j < D; ++j) {
-    const double P = -((j == 0 ? roll->core_sigma : sr[j - 1]) + e[j] * (c + c2 * pL[j]));
-    const double r = P > 0.0 ? e[j] / P : INFINITY;
-    q = r > q || r != r ? r : q;
-  }
-  d->pL_max = m;
-  d->eP_max = q;
+  roll_deep_maxima(roll, D, &d->pL_max, &d->eP_max);
   d->top = D;
   d->depth0 = roll->n - D;
   d->c = d->c_r = d->c_form = roll->lazy.c;

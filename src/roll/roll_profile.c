@@ -187,20 +187,19 @@ RS_VECTOR_CLONES static int roll_profile_pass(rs_roll *roll, int from, int top)
     pw[0] = 0.0;
     pL[0] = 0.0;
   }
-  /* the chains in registers: through the arrays each node would wait for its store */
+  /* the chains in registers: through the arrays each node would wait for its store; the
+   * bound over nodes 0..top beside them, off their critical path (the nodes below from
+   * keep theirs, within prof_max) */
   double pwj = pw[from], pLj = pL[from];
+  double m = from > 0 ? roll->prof.max : 0.0;
+  int64_t nan = 0;
   for (int j = from; j < top; ++j) {
     pLj += A[j] * pwj + B[j];
     pwj = Q[j] * pwj + Cf[j];
     pL[j + 1] = pLj;
     pw[j + 1] = pwj;
-  }
-  /* the bound over nodes 0..top: the nodes below from keep theirs, within prof_max */
-  double m = from > 0 ? roll->prof.max : 0.0;
-  int64_t nan = 0;
-  for (int j = from + 1; j <= top; ++j) {
-    m = fabs(pL[j]) > m ? fabs(pL[j]) : m;
-    nan |= -(int64_t)(pL[j] != pL[j]);
+    m = fabs(pLj) > m ? fabs(pLj) : m;
+    nan |= -(int64_t)(pLj != pLj);
   }
   if (nan || m != m) m = NAN;
   roll->prof.max = m;

@@ -6,9 +6,12 @@
  * invariant): its books, its shape, where an integration starts and the start's
  * correction for the drift, and the rebasing of a reference from a node above the core. */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "roll/roll_internal.h"
+#include "util/float_flags.h"
+#include "util/vector_clones.h"
 
 /* Integrations from the core between two references. Accuracy does not need a refresh
  * (rsi_roll_reuse_start bounds the error whatever the reference's age); cost does: the start
@@ -345,6 +348,49 @@ void rsi_roll_reference_restored(rs_roll *roll)
 
 /* ---- rebasing ------------------------------------------------------------------------- */
 
+/* 1 when |s (pL_j - p0)| < 0.03 at every node of [lo, hi) (none NaN): roll_exp_step of
+ * each is its Taylor sum (roll_exp_small), which a loop then takes without a branch. A
+ * pass over p_L alone, that vectorises (the flag from the bits: util/float_flags.h) */
+RS_VECTOR_CLONES static int roll_rebase_small(double s, const double *restrict pL, double p0,
+                                              int lo, int hi)
+{
+  uint64_t wide = 0;
+  const uint64_t limit = rs_double_bits(0.03);
+  for (int j = lo; j < hi; ++j) wide |= rs_flag_not_below(s * (pL[j] - p0), limit);
+  return !rs_flag_raised(wide);
+}
+
+/* rsi_roll_reference_rebase's nodes [lo, hi) where roll_rebase_small holds: the same
+ * operations, exp by its Taylor sum, in a loop over arrays passed as such (it vectorises) */
+RS_VECTOR_CLONES static void roll_rebase_pass(double C, const double *restrict pw,
+                                              const double *restrict pL, double pLf,
+                                              const double *restrict E, double *restrict w,
+                                              double *restrict L, double *restrict e,
+                                              double *restrict Eref, int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double a = C * (pL[j] - pLf);
+    w[j] += C * pw[j];
+    L[j] += C * pL[j];
+    e[j] *= roll_exp_small(a);
+    Eref[j] = E[j];
+  }
+}
+
+/* rsi_roll_reference_carry's nodes [lo, hi) where roll_rebase_small holds for B, p0 = 0:
+ * the same operations, exp by its Taylor sum, in a loop that vectorises */
+RS_VECTOR_CLONES static void roll_carry_pass(double A, double B, const double *restrict pw,
+                                             const double *restrict pL, double *restrict w,
+                                             double *restrict L, double *restrict e, int lo,
+                                             int hi)
+{
+  for (int j = lo; j < hi; ++j) {
+    w[j] += B * pw[j];
+    L[j] += B * pL[j];
+    e[j] *= A * roll_exp_small(B * pL[j]);
+  }
+}
+
 /* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
  * the node the reference's values take their first-order correction for the drift since
  * the last reference, C = prof.c, for good,
@@ -360,14 +406,18 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
   double *restrict Eref = roll->ref.Er;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L, *restrict E = roll->ode.Er;
   /* the deeper level's nodes (roll_deep) stay as they are: the level carries the factor
-   * (rsi_roll_deep_rebased, called before) */
-  for (int j = roll->deep.top; j <= from; ++j) {
-    const double a = C * (pL[j] - pLf);
-    w[j] += C * pw[j];
-    L[j] += C * pL[j];
-    e[j] *= roll_exp_step(a);
-    Eref[j] = E[j];
-  }
+   * (rsi_roll_deep_rebased, called before); in a loop that vectorises where every
+   * exponent is within the Taylor sum's range (roll_exp_step's own choice: the same bits) */
+  if (roll_rebase_small(C, pL, pLf, roll->deep.top, from + 1))
+    roll_rebase_pass(C, pw, pL, pLf, E, w, L, e, Eref, roll->deep.top, from + 1);
+  else
+    for (int j = roll->deep.top; j <= from; ++j) {
+      const double a = C * (pL[j] - pLf);
+      w[j] += C * pw[j];
+      L[j] += C * pL[j];
+      e[j] *= roll_exp_step(a);
+      Eref[j] = E[j];
+    }
   /* |p_L| <= prof.max: the shape's bound grows by at most the factor */
   roll->ref.shape_max *= exp(2.0 * fabs(C) * roll->prof.max);
   /* the drift is in the rebased values now: should this increment fail, the next starts
@@ -389,6 +439,10 @@ void rsi_roll_reference_carry(rs_roll *roll, int lo, int hi, double A, double B)
   if (B == 0.0 && A == 1.0) return;
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
+  if (roll_rebase_small(B, pL, 0.0, lo, hi)) {
+    roll_carry_pass(A, B, pw, pL, w, L, e, lo, hi);
+    return;
+  }
   for (int j = lo; j < hi; ++j) {
     w[j] += B * pw[j];
     L[j] += B * pL[j];
