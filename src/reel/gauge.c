@@ -114,11 +114,11 @@ double rs_reel_core_displacement(const rs_problem *pb, double core_pressure)
 }
 
 /* The largest pressure, core_pressure and -sigma_r[j] (j < n), as fmax() takes it in that
- * order (a NaN so far gives way to the next value: NaN only where the last is one): as
- * four running maxima side by side where none is a NaN (a maximum does not depend on the
- * order it is taken in but for the sign of a zero, which the table's Pmax > 0 test does
- * not see), in order otherwise */
-static double deformed_pmax(double core_pressure, const double *restrict sigma_r, int n)
+ * order (a NaN pressure skipped, a NaN so far replaced by the next pressure): as four
+ * running maxima side by side where none is a NaN (a maximum does not depend on the order
+ * it is taken in but for the sign of a zero, which the table's Pmax > 0 test does not
+ * see), in order otherwise */
+double rs_reel_deformed_pmax(double core_pressure, const double *restrict sigma_r, int n)
 {
   double m[4] = {core_pressure, core_pressure, core_pressure, core_pressure};
   int nan = isnan(core_pressure), j = 0;
@@ -152,7 +152,7 @@ rs_status rs_reel_deformed_radius(const rs_problem *pb, double core_pressure, co
   strain_table *tb = malloc(sizeof *tb);
   if (!tb) return RS_ERROR(RS_ERR_MEMORY, "deformed radius: out of memory");
   const double t = pb->material.caliper, pa = pb->air.pressure;
-  const double Pmax = deformed_pmax(core_pressure, sigma_r, n);
+  const double Pmax = rs_reel_deformed_pmax(core_pressure, sigma_r, n);
   strain_table_fill(tb, &pb->material.radial, Pmax > 0.0 ? Pmax : 0.0);
   double r = pb->core.radius + rs_reel_core_displacement(pb, core_pressure);
   double P_in = core_pressure, e_in = strain_table_eval(tb, core_pressure);

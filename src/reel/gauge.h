@@ -31,6 +31,10 @@ void rs_reel_gauge_rewind(rs_reel_gauge *g, int layers);
 /* wound[0..n-1]: the deformed outer radius of the roll as each layer went on. */
 void rs_reel_gauge_finish(const rs_reel_gauge *g, const rs_problem *pb, int n, double *wound);
 
+/* The largest pressure of core_pressure and -sigma_r[0..n-1] as fmax() over them in that
+ * order gives it (the table rs_reel_deformed_radius makes reaches it) */
+double rs_reel_deformed_pmax(double core_pressure, const double *sigma_r, int n);
+
 /* u_c = -r_c P_c / E_c (m), the core face's displacement under the core pressure P_c (Pa,
  * compression positive); 0 for a rigid core or P_c <= 0 (rs_reel_deformed_radius's) */
 double rs_reel_core_displacement(const rs_problem *pb, double core_pressure);

@@ -375,6 +375,8 @@ static inline double roll_log_ratio_small(double z)
 }
 
 /* roll_lazy.c */
+void rsi_roll_deep_maxima(const double *pL, const double *e, const double *sr, double core_sigma,
+                          double c, double c2, int D, double *m, double *q);
 void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);
 void rsi_roll_lazy_flush(rs_roll *roll, int from);
 int rsi_roll_lazy_flush_core(rs_roll *roll);
@@ -460,6 +462,20 @@ void rsi_roll_reference_end(rs_roll *roll, int k, int first);
 void rsi_roll_reference_extend(rs_roll *roll);
 void rsi_roll_reference_rebase(rs_roll *roll, int from);
 void rsi_roll_reference_carry(rs_roll *roll, int lo, int hi, double A, double B);
+/* 1 when |s (pL_j - p0)| < 0.03 at every node of [lo, hi), none NaN: roll_exp_step is then
+ * the Taylor sum at each, and the rebase's and the carry's node loops below that vectorise
+ * (exp by roll_exp_small) give the bits of those node by node (_exp: roll_exp_step) */
+int rsi_roll_rebase_small(double s, const double *pL, double p0, int lo, int hi);
+void rsi_roll_rebase_nodes(double C, const double *pw, const double *pL, double pLf,
+                           const double *E, double *w, double *L, double *e, double *Eref,
+                           int lo, int hi);
+void rsi_roll_carry_nodes(double A, double B, const double *pw, const double *pL, double *w,
+                          double *L, double *e, int lo, int hi);
+void rsi_roll_rebase_nodes_exp(double C, const double *pw, const double *pL, double pLf,
+                               const double *E, double *w, double *L, double *e, double *Eref,
+                               int lo, int hi);
+void rsi_roll_carry_nodes_exp(double A, double B, const double *pw, const double *pL, double *w,
+                              double *L, double *e, int lo, int hi);
 void rsi_roll_reference_restored(rs_roll *roll);
 void rsi_roll_start_set(rs_roll *roll, int first, double C);
 void rsi_roll_start_restore(rs_roll *roll);

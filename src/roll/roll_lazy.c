@@ -287,19 +287,18 @@ void rsi_roll_lazy_clear(rs_roll *roll)
 }
 
 /* max |p_L,j| (*m) and max e_j / P_j (*q) over the nodes [0, D) (rsi_roll_deep_keep), P_j
- * the node's pressure now (its true stress, in the zone: the level continues the zone's
- * scales); a node not under pressure bounds nothing (INFINITY), a NaN is kept for good.
+ * the node's pressure now, -(stored + e_j (c + c2 p_L,j)) (sr[j - 1] stored, core_sigma at
+ * node 0: its true stress, in the zone: the level continues the zone's scales); a node not under pressure bounds nothing (INFINITY), a NaN is kept for good.
  * Each maximum as four running ones side by side, merged by the same rule: a maximum is
  * the same whatever the order it is taken in (of numbers >= +0, or a NaN kept), so the
  * chains' latency is shared out without a bit changing. */
-static void roll_deep_maxima(const rs_roll *roll, int D, double *m, double *q)
+void rsi_roll_deep_maxima(const double *restrict pL, const double *restrict e,
+                          const double *restrict sr, double core_sigma, double c, double c2,
+                          int D, double *m, double *q)
 {
-  const double *restrict pL = roll->prof.L, *restrict e = roll->ref.shape_e;
-  const double *restrict sr = roll->sigma_r;
-  const double c = roll->lazy.c, c2 = roll->lazy.c2;
   double mm[4] = {0.0, 0.0, 0.0, 0.0}, qq[4] = {0.0, 0.0, 0.0, 0.0};
   if (D > 0) {
-    const double P = -(roll->core_sigma + e[0] * (c + c2 * pL[0]));
+    const double P = -(core_sigma + e[0] * (c + c2 * pL[0]));
     const double r = P > 0.0 ? e[0] / P : INFINITY;
     mm[0] = fabs(pL[0]) > mm[0] ? fabs(pL[0]) : mm[0];
     qq[0] = r > qq[0] || r != r ? r : qq[0];
@@ -344,7 +343,8 @@ int rsi_roll_deep_keep(rs_roll *roll, int from)
   if (D > from - 1) D = from - 1; /* the start's Hermite slope reads node from - 1 */
   if (D > roll->lazy.top) D = roll->lazy.top;
   if (!roll->shift || D < d->min_nodes) return 0;
-  roll_deep_maxima(roll, D, &d->pL_max, &d->eP_max);
+  rsi_roll_deep_maxima(roll->prof.L, roll->ref.shape_e, roll->sigma_r, roll->core_sigma,
+                       roll->lazy.c, roll->lazy.c2, D, &d->pL_max, &d->eP_max);
   d->top = D;
   d->depth0 = roll->n - D;
   d->c = d->c_r = d->c_form = roll->lazy.c;

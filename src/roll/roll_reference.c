@@ -391,6 +391,50 @@ RS_VECTOR_CLONES static void roll_carry_pass(double A, double B, const double *r
   }
 }
 
+int rsi_roll_rebase_small(double s, const double *pL, double p0, int lo, int hi)
+{
+  return roll_rebase_small(s, pL, p0, lo, hi);
+}
+
+void rsi_roll_rebase_nodes(double C, const double *pw, const double *pL, double pLf,
+                           const double *E, double *w, double *L, double *e, double *Eref,
+                           int lo, int hi)
+{
+  roll_rebase_pass(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi);
+}
+
+void rsi_roll_carry_nodes(double A, double B, const double *pw, const double *pL, double *w,
+                          double *L, double *e, int lo, int hi)
+{
+  roll_carry_pass(A, B, pw, pL, w, L, e, lo, hi);
+}
+
+/* the rebase's and the carry's loops node by node, exp() where the Taylor sum does not hold */
+void rsi_roll_rebase_nodes_exp(double C, const double *restrict pw, const double *restrict pL,
+                               double pLf, const double *restrict E, double *restrict w,
+                               double *restrict L, double *restrict e, double *restrict Eref,
+                               int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double a = C * (pL[j] - pLf);
+    w[j] += C * pw[j];
+    L[j] += C * pL[j];
+    e[j] *= roll_exp_step(a);
+    Eref[j] = E[j];
+  }
+}
+
+void rsi_roll_carry_nodes_exp(double A, double B, const double *restrict pw,
+                              const double *restrict pL, double *restrict w, double *restrict L,
+                              double *restrict e, int lo, int hi)
+{
+  for (int j = lo; j < hi; ++j) {
+    w[j] += B * pw[j];
+    L[j] += B * pL[j];
+    e[j] *= A * roll_exp_step(B * pL[j]);
+  }
+}
+
 /* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
  * the node the reference's values take their first-order correction for the drift since
  * the last reference, C = prof.c, for good,
@@ -408,16 +452,10 @@ void rsi_roll_reference_rebase(rs_roll *roll, int from)
   /* the deeper level's nodes (roll_deep) stay as they are: the level carries the factor
    * (rsi_roll_deep_rebased, called before); in a loop that vectorises where every
    * exponent is within the Taylor sum's range (roll_exp_step's own choice: the same bits) */
-  if (roll_rebase_small(C, pL, pLf, roll->deep.top, from + 1))
-    roll_rebase_pass(C, pw, pL, pLf, E, w, L, e, Eref, roll->deep.top, from + 1);
+  if (rsi_roll_rebase_small(C, pL, pLf, roll->deep.top, from + 1))
+    rsi_roll_rebase_nodes(C, pw, pL, pLf, E, w, L, e, Eref, roll->deep.top, from + 1);
   else
-    for (int j = roll->deep.top; j <= from; ++j) {
-      const double a = C * (pL[j] - pLf);
-      w[j] += C * pw[j];
-      L[j] += C * pL[j];
-      e[j] *= roll_exp_step(a);
-      Eref[j] = E[j];
-    }
+    rsi_roll_rebase_nodes_exp(C, pw, pL, pLf, E, w, L, e, Eref, roll->deep.top, from + 1);
   /* |p_L| <= prof.max: the shape's bound grows by at most the factor */
   roll->ref.shape_max *= exp(2.0 * fabs(C) * roll->prof.max);
   /* the drift is in the rebased values now: should this increment fail, the next starts
@@ -439,15 +477,10 @@ void rsi_roll_reference_carry(rs_roll *roll, int lo, int hi, double A, double B)
   if (B == 0.0 && A == 1.0) return;
   double *restrict w = roll->w, *restrict L = roll->L, *restrict e = roll->ref.shape_e;
   const double *restrict pw = roll->prof.w, *restrict pL = roll->prof.L;
-  if (roll_rebase_small(B, pL, 0.0, lo, hi)) {
-    roll_carry_pass(A, B, pw, pL, w, L, e, lo, hi);
-    return;
-  }
-  for (int j = lo; j < hi; ++j) {
-    w[j] += B * pw[j];
-    L[j] += B * pL[j];
-    e[j] *= A * roll_exp_step(B * pL[j]);
-  }
+  if (rsi_roll_rebase_small(B, pL, 0.0, lo, hi))
+    rsi_roll_carry_nodes(A, B, pw, pL, w, L, e, lo, hi);
+  else
+    rsi_roll_carry_nodes_exp(A, B, pw, pL, w, L, e, lo, hi);
 }
 
 /* A new reference from node ref.from up, its increment committed: the nodes above it hold
