@@ -128,9 +128,10 @@ static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P
  * With GCC's vector extensions four nodes at a time by a scan inside the vector (each lane
  * against the one, then the two, before it, then against the carry), each array's carry
  * a chain of a quarter of the nodes: the same numbers (a NaN taken as -inf, which is never
- * taken either but where every value is -inf, itself); else node by node. Returns the
+ * taken either but where every value is -inf, itself), in an AVX2 build (whose vectors
+ * these are, passed between the functions); else node by node. Returns the
  * three maxima in pa, pb, pl. */
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__AVX2__)
 typedef double roll_v4 __attribute__((vector_size(32)));
 typedef int64_t roll_m4 __attribute__((vector_size(32)));
 
