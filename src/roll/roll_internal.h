@@ -375,8 +375,6 @@ static inline double roll_log_ratio_small(double z)
 }
 
 /* roll_lazy.c */
-void rsi_roll_lazy_maxima(double *la, double *lb, const double *L, double *sl, int lo, int hi,
-                          double *pa, double *pb, double *pl);
 void rsi_roll_deep_maxima(const double *pL, const double *e, const double *sr, double core_sigma,
                           double c, double c2, int D, double *m, double *q);
 void rsi_roll_shape_add(rs_roll *roll, int lo, int hi, double c, double c2);

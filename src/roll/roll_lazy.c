@@ -15,9 +15,7 @@
  * Readers get the full values in separate arrays (roll_lazy_view_*): reading never moves
  * the frontier. */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "roll/roll_internal.h"
 #include "util/vector_clones.h"
@@ -122,99 +120,6 @@ static void roll_lazy_bounds(int lo, int hi, double aC, const double *restrict P
   }
 }
 
-/* The running maxima of the drift bound's a (la, in place), b (lb, in place) and of L
- * (into sl) over the nodes [lo, hi), from pa, pb, pl: x > p ? x : p node by node (a NaN
- * never taken, the earlier of equals kept: the leftmost maximum, an associative rule).
- * With GCC's vector extensions four nodes at a time by a scan inside the vector (each lane
- * against the one, then the two, before it, then against the carry), each array's carry
- * a chain of a quarter of the nodes: the same numbers (a NaN taken as -inf, which is never
- * taken either but where every value is -inf, itself), in an AVX2 build (whose vectors
- * these are, passed between the functions); else node by node. Returns the
- * three maxima in pa, pb, pl. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__AVX2__)
-typedef double roll_v4 __attribute__((vector_size(32)));
-typedef int64_t roll_m4 __attribute__((vector_size(32)));
-
-/* b where b > a, else a, lane by lane (a the earlier) */
-static inline roll_v4 roll_v4_later(roll_v4 a, roll_v4 b)
-{
-  const roll_m4 gt = b > a;
-  return (roll_v4)(((roll_m4)b & gt) | ((roll_m4)a & ~gt));
-}
-
-/* the inclusive running maximum of the four lanes of x after the carry c (all lanes the
- * carry), a NaN lane as -inf */
-static inline roll_v4 roll_v4_scan(roll_v4 x, roll_v4 c)
-{
-  const roll_v4 ninf = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
-  const roll_m4 num = x == x;
-  x = (roll_v4)(((roll_m4)x & num) | ((roll_m4)ninf & ~num));
-  x = roll_v4_later(__builtin_shuffle(x, ninf, (roll_m4){4, 0, 1, 2}), x);
-  x = roll_v4_later(__builtin_shuffle(x, ninf, (roll_m4){4, 5, 0, 1}), x);
-  return roll_v4_later(c, x);
-}
-
-static void roll_lazy_maxima(double *restrict la, double *restrict lb, const double *restrict L,
-                             double *restrict sl, int lo, int hi, double *pa, double *pb,
-                             double *pl)
-{
-  roll_v4 ca = {*pa, *pa, *pa, *pa}, cb = {*pb, *pb, *pb, *pb}, cl = {*pl, *pl, *pl, *pl};
-  const roll_m4 last = {3, 3, 3, 3};
-  int j = lo;
-  for (; j + 3 < hi; j += 4) {
-    roll_v4 a, b, l;
-    memcpy(&a, la + j, sizeof a);
-    memcpy(&b, lb + j, sizeof b);
-    memcpy(&l, L + j, sizeof l);
-    a = roll_v4_scan(a, ca);
-    b = roll_v4_scan(b, cb);
-    l = roll_v4_scan(l, cl);
-    memcpy(la + j, &a, sizeof a);
-    memcpy(lb + j, &b, sizeof b);
-    memcpy(sl + j, &l, sizeof l);
-    ca = __builtin_shuffle(a, last);
-    cb = __builtin_shuffle(b, last);
-    cl = __builtin_shuffle(l, last);
-  }
-  double qa = ca[0], qb = cb[0], ql = cl[0];
-  for (; j < hi; ++j) {
-    qa = la[j] > qa ? la[j] : qa;
-    qb = lb[j] > qb ? lb[j] : qb;
-    ql = L[j] > ql ? L[j] : ql;
-    la[j] = qa;
-    lb[j] = qb;
-    sl[j] = ql;
-  }
-  *pa = qa;
-  *pb = qb;
-  *pl = ql;
-}
-#else
-static void roll_lazy_maxima(double *restrict la, double *restrict lb, const double *restrict L,
-                             double *restrict sl, int lo, int hi, double *pa, double *pb,
-                             double *pl)
-{
-  double qa = *pa, qb = *pb, ql = *pl;
-  for (int j = lo; j < hi; ++j) {
-    qa = la[j] > qa ? la[j] : qa;
-    qb = lb[j] > qb ? lb[j] : qb;
-    ql = L[j] > ql ? L[j] : ql;
-    la[j] = qa;
-    lb[j] = qb;
-    sl[j] = ql;
-  }
-  *pa = qa;
-  *pb = qb;
-  *pl = ql;
-}
-#endif
-
-void rsi_roll_lazy_maxima(double *la, double *lb, const double *L, double *sl, int lo, int hi,
-                          double *pa, double *pb, double *pl)
-{
-  roll_lazy_maxima(la, lb, L, sl, lo, hi, pa, pb, pl);
-}
-
 /* rsi_roll_lazy_freeze's block of nodes: its ten arrays' blocks fit the first-level cache */
 enum { RS_FREEZE_BLOCK = 256 };
 
@@ -248,7 +153,14 @@ RS_VECTOR_CLONES static void roll_lazy_freeze_pass(rs_roll *roll, int to)
     /* each node's a and b in a pass that vectorises (into the arrays, over Pp and Ep), then
      * the three running maxima side by side */
     roll_lazy_bounds(b0, b1, aC, P, Pp, E, Ep, Eref, e, la, lb);
-    roll_lazy_maxima(la, lb, L, sl, b0, b1, &pa, &pb, &pl);
+    for (int j = b0; j < b1; ++j) {
+      pa = la[j] > pa ? la[j] : pa;
+      pb = lb[j] > pb ? lb[j] : pb;
+      pl = L[j] > pl ? L[j] : pl;
+      la[j] = pa;
+      lb[j] = pb;
+      sl[j] = pl;
+    }
   }
   if (C != 0.0 || roll->lazy.c2 != 0.0) roll_lazy_shift(roll, F, to, -C, -roll->lazy.c2);
   roll->lazy.top = to;

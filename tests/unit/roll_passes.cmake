@@ -1,1 +1,1 @@
-rs_test(test_roll_passes unit SOURCES unit/test_roll_passes.c CASES rebase_same_bits carry_same_bits deep_maxima_order gauge_pmax_order lazy_maxima_order)
+rs_test(test_roll_passes unit SOURCES unit/test_roll_passes.c CASES rebase_same_bits carry_same_bits deep_maxima_order gauge_pmax_order)

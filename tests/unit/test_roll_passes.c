@@ -10,8 +10,6 @@
  *   carry_same_bits     the same for the deeper level's carry (rsi_roll_carry_nodes)
  *   deep_maxima_order   the level's maxima (rsi_roll_deep_maxima) against one running
  *                       maximum node by node, with NaNs, nodes in tension, zeros
- *   lazy_maxima_order   the lazy zone's running maxima at a freeze (rsi_roll_lazy_maxima)
- *                       against node by node, with ties, zeros of both signs, NaNs, -inf
  *   gauge_pmax_order    the gauge's largest pressure (rs_reel_deformed_pmax) against fmax()
  *                       in order, with NaN pressures inside and last, a NaN core pressure */
 #include <math.h>
@@ -178,50 +176,11 @@ static void gauge_pmax_order(void)
   CHECK(nans == 1); /* the case with no number reached NaN, and it alone */
 }
 
-static void lazy_maxima_order(void)
-{
-  uint64_t s = 39;
-  int bad = 0;
-  static double la[N], lb[N], L[N], sl[N], a1[N], b1[N], s1[N];
-  for (int r = 0; r < 60; ++r) {
-    for (int j = 0; j < N; ++j) {
-      /* few distinct values (ties), zeros of both signs, NaNs, -inf */
-      la[j] = j % 5 == 0 ? (j % 2 ? 0.0 : -0.0) : (double)(int)uniform(&s, -3.0, 3.0);
-      lb[j] = uniform(&s, 0.0, 1.0) < 0.1 ? -0.0 : uniform(&s, 0.0, 2.0);
-      L[j] = uniform(&s, -50.0, 0.0);
-    }
-    la[(r * 31) % N] = NAN;
-    lb[(r * 37) % N] = NAN;
-    L[(r * 41) % N] = -INFINITY;
-    if (r % 3 == 0) la[r] = L[r] = NAN; /* in the first group of four */
-    const int lo = r % 9, hi = N - r % 7;
-    double pa = r % 2 ? -INFINITY : 0.0, pb = r % 3 ? 0.0 : -0.0, pl = -INFINITY;
-    double qa = pa, qb = pb, ql = pl;
-    memcpy(a1, la, sizeof la);
-    memcpy(b1, lb, sizeof lb);
-    memcpy(s1, sl, sizeof sl);
-    rsi_roll_lazy_maxima(la, lb, L, sl, lo, hi, &pa, &pb, &pl);
-    for (int j = lo; j < hi; ++j) { /* node by node */
-      qa = a1[j] > qa ? a1[j] : qa;
-      qb = b1[j] > qb ? b1[j] : qb;
-      ql = L[j] > ql ? L[j] : ql;
-      a1[j] = qa;
-      b1[j] = qb;
-      s1[j] = ql;
-    }
-    bad += differ(la, a1, N) + differ(lb, b1, N) + differ(sl, s1, N);
-    bad += differ(&pa, &qa, 1) + differ(&pb, &qb, 1) + differ(&pl, &ql, 1);
-  }
-  CHECK_LOG("running maxima that differ from node by node", bad);
-  CHECK(bad == 0);
-}
-
 static const check_case cases[] = {
     {"rebase_same_bits", rebase_same_bits},
     {"carry_same_bits", carry_same_bits},
     {"deep_maxima_order", deep_maxima_order},
     {"gauge_pmax_order", gauge_pmax_order},
-    {"lazy_maxima_order", lazy_maxima_order},
 };
 
 int main(int argc, char **argv) { return CHECK_MAIN(argc, argv, cases); }
