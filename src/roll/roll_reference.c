@@ -360,35 +360,52 @@ RS_VECTOR_CLONES static int roll_rebase_small(double s, const double *restrict p
   return !rs_flag_raised(wide);
 }
 
-/* rsi_roll_reference_rebase's nodes [lo, hi) where roll_rebase_small holds: the same
- * operations, exp by its Taylor sum, in a loop over arrays passed as such (it vectorises) */
+/* The rebase's nodes [lo, hi) (rsi_roll_reference_rebase) and the carry's
+ * (rsi_roll_reference_carry): exp by its Taylor sum alone with small != 0, where
+ * roll_rebase_small holds (roll_exp_step's own choice there: the same bits), in a loop
+ * over arrays passed as such that then vectorises; else roll_exp_step node by node */
+static inline void roll_rebase_loop(double C, const double *restrict pw,
+                                    const double *restrict pL, double pLf,
+                                    const double *restrict E, double *restrict w,
+                                    double *restrict L, double *restrict e,
+                                    double *restrict Eref, int lo, int hi, int small)
+{
+  for (int j = lo; j < hi; ++j) {
+    const double a = C * (pL[j] - pLf);
+    w[j] += C * pw[j];
+    L[j] += C * pL[j];
+    e[j] *= small ? roll_exp_small(a) : roll_exp_step(a);
+    Eref[j] = E[j];
+  }
+}
+
+static inline void roll_carry_loop(double A, double B, const double *restrict pw,
+                                   const double *restrict pL, double *restrict w,
+                                   double *restrict L, double *restrict e, int lo, int hi,
+                                   int small)
+{
+  for (int j = lo; j < hi; ++j) {
+    w[j] += B * pw[j];
+    L[j] += B * pL[j];
+    e[j] *= A * (small ? roll_exp_small(B * pL[j]) : roll_exp_step(B * pL[j]));
+  }
+}
+
 RS_VECTOR_CLONES static void roll_rebase_pass(double C, const double *restrict pw,
                                               const double *restrict pL, double pLf,
                                               const double *restrict E, double *restrict w,
                                               double *restrict L, double *restrict e,
                                               double *restrict Eref, int lo, int hi)
 {
-  for (int j = lo; j < hi; ++j) {
-    const double a = C * (pL[j] - pLf);
-    w[j] += C * pw[j];
-    L[j] += C * pL[j];
-    e[j] *= roll_exp_small(a);
-    Eref[j] = E[j];
-  }
+  roll_rebase_loop(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi, 1);
 }
 
-/* rsi_roll_reference_carry's nodes [lo, hi) where roll_rebase_small holds for B, p0 = 0:
- * the same operations, exp by its Taylor sum, in a loop that vectorises */
 RS_VECTOR_CLONES static void roll_carry_pass(double A, double B, const double *restrict pw,
                                              const double *restrict pL, double *restrict w,
                                              double *restrict L, double *restrict e, int lo,
                                              int hi)
 {
-  for (int j = lo; j < hi; ++j) {
-    w[j] += B * pw[j];
-    L[j] += B * pL[j];
-    e[j] *= A * roll_exp_small(B * pL[j]);
-  }
+  roll_carry_loop(A, B, pw, pL, w, L, e, lo, hi, 1);
 }
 
 int rsi_roll_rebase_small(double s, const double *pL, double p0, int lo, int hi)
@@ -409,30 +426,17 @@ void rsi_roll_carry_nodes(double A, double B, const double *pw, const double *pL
   roll_carry_pass(A, B, pw, pL, w, L, e, lo, hi);
 }
 
-/* the rebase's and the carry's loops node by node, exp() where the Taylor sum does not hold */
-void rsi_roll_rebase_nodes_exp(double C, const double *restrict pw, const double *restrict pL,
-                               double pLf, const double *restrict E, double *restrict w,
-                               double *restrict L, double *restrict e, double *restrict Eref,
+void rsi_roll_rebase_nodes_exp(double C, const double *pw, const double *pL, double pLf,
+                               const double *E, double *w, double *L, double *e, double *Eref,
                                int lo, int hi)
 {
-  for (int j = lo; j < hi; ++j) {
-    const double a = C * (pL[j] - pLf);
-    w[j] += C * pw[j];
-    L[j] += C * pL[j];
-    e[j] *= roll_exp_step(a);
-    Eref[j] = E[j];
-  }
+  roll_rebase_loop(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi, 0);
 }
 
-void rsi_roll_carry_nodes_exp(double A, double B, const double *restrict pw,
-                              const double *restrict pL, double *restrict w, double *restrict L,
-                              double *restrict e, int lo, int hi)
+void rsi_roll_carry_nodes_exp(double A, double B, const double *pw, const double *pL, double *w,
+                              double *L, double *e, int lo, int hi)
 {
-  for (int j = lo; j < hi; ++j) {
-    w[j] += B * pw[j];
-    L[j] += B * pL[j];
-    e[j] *= A * roll_exp_step(B * pL[j]);
-  }
+  roll_carry_loop(A, B, pw, pL, w, L, e, lo, hi, 0);
 }
 
 /* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
