@@ -288,10 +288,11 @@ void rsi_roll_lazy_clear(rs_roll *roll)
 
 /* max |p_L,j| (*m) and max e_j / P_j (*q) over the nodes [0, D) (rsi_roll_deep_keep), P_j
  * the node's pressure now, -(stored + e_j (c + c2 p_L,j)) (sr[j - 1] stored, core_sigma at
- * node 0: its true stress, in the zone: the level continues the zone's scales); a node not under pressure bounds nothing (INFINITY), a NaN is kept for good.
- * Each maximum as four running ones side by side, merged by the same rule: a maximum is
- * the same whatever the order it is taken in (of numbers >= +0, or a NaN kept), so the
- * chains' latency is shared out without a bit changing. */
+ * node 0: its true stress, in the zone: the level continues the zone's scales); a node not
+ * under pressure bounds nothing (INFINITY), a NaN is kept for good. Each maximum as four
+ * running ones side by side, merged by the same rule: a maximum is the same whatever the
+ * order it is taken in (of numbers >= +0, or a NaN kept), so the chains' latency is shared
+ * out without a bit changing. */
 void rsi_roll_deep_maxima(const double *restrict pL, const double *restrict e,
                           const double *restrict sr, double core_sigma, double c, double c2,
                           int D, double *m, double *q)
