@@ -1,6 +1,6 @@
 /* The stick/slip conditions at a fixed half-width as a linear complementarity problem
  * (LCP), solved by Lemke's complementary pivoting (Lemke 1965; Cottle, Pang & Stone 1992,
- * "The linear complementarity problem", sec. 4.4).
+ * "The linear complementarity problem", sec. 4.4; contact_lemke.c).
  *
  * Each element e of contact k has a slip rate s = s+ - s- (s+, s- >= 0, per unit speed)
  * and friction margins w+ = mu pbar - q >= 0, w- = mu pbar + q >= 0 (q the friction on
