@@ -145,6 +145,18 @@ void rs_nipc_assemble(rs_nip_contact *nc, double a, double Ti);
  * its solution in state_out (2 (M-1)), or RS_ERR_SOLVER (ray or pivot cap). */
 rs_status rs_nipc_lcp(rs_nip_contact *nc, double a, double Ti, signed char *state_out, int *pivots);
 
+/* contact_lemke.c: Lemke's method on the LCP w = c + Mt u of contact_lcp.c given by its
+ * starting tableau: the right-hand side c (m = 2 S) and the stored s+ columns U (m x S,
+ * column-major). The revised (product) form for the first revised_max pivots, then the
+ * tableau; the same pivots and numbers either way. Returns 1 at a solution (its active set
+ * in state_out, S; the basic variables' values in x_out, m, when not NULL), 0 on a
+ * secondary ray or past the pivot cap (*pivots > cap), -1 out of memory. */
+int rs_nipc_lemke(int m, int S, const double *U, const double *c, int revised_max, int cap,
+                  signed char *state_out, double *x_out, int *pivots);
+/* the revised form while it is the cheaper: pivot k costs ~k m against the tableau's
+ * ~m (m + S), and the tableau formed from it ~(m + S) k m */
+#define RS_NIPC_LEMKE_REVISED_MAX(m) (m)
+
 /* contact_solve.c: allocates the solution arrays for M nodes. */
 rs_status rs_nipc_solution_reserve(rs_nip_solution *s, int M);
 
