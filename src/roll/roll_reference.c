@@ -4,14 +4,12 @@
  * reference's (w, L) still give the increment within the tolerance, and keeps them there.
  * This file owns the reference (struct roll_reference, roll_internal.h, with its
  * invariant): its books, its shape, where an integration starts and the start's
- * correction for the drift, and the rebasing of a reference from a node above the core. */
+ * correction for the drift, and the rebasing of a reference from a node above the core
+ * (its passes over the nodes in roll_rebase_pass.c). */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "roll/roll_internal.h"
-#include "util/float_flags.h"
-#include "util/vector_clones.h"
 
 /* Integrations from the core between two references. Accuracy does not need a refresh
  * (rsi_roll_reuse_start bounds the error whatever the reference's age); cost does: the start
@@ -347,97 +345,6 @@ void rsi_roll_reference_restored(rs_roll *roll)
 }
 
 /* ---- rebasing ------------------------------------------------------------------------- */
-
-/* 1 when |s (pL_j - p0)| < 0.03 at every node of [lo, hi) (none NaN): roll_exp_step of
- * each is its Taylor sum (roll_exp_small), which a loop then takes without a branch. A
- * pass over p_L alone, that vectorises (the flag from the bits: util/float_flags.h) */
-RS_VECTOR_CLONES static int roll_rebase_small(double s, const double *restrict pL, double p0,
-                                              int lo, int hi)
-{
-  uint64_t wide = 0;
-  const uint64_t limit = rs_double_bits(0.03);
-  for (int j = lo; j < hi; ++j) wide |= rs_flag_not_below(s * (pL[j] - p0), limit);
-  return !rs_flag_raised(wide);
-}
-
-/* The rebase's nodes [lo, hi) (rsi_roll_reference_rebase) and the carry's
- * (rsi_roll_reference_carry): exp by its Taylor sum alone with small != 0, where
- * roll_rebase_small holds (roll_exp_step's own choice there: the same bits), in a loop
- * over arrays passed as such that then vectorises; else roll_exp_step node by node */
-static inline void roll_rebase_loop(double C, const double *restrict pw,
-                                    const double *restrict pL, double pLf,
-                                    const double *restrict E, double *restrict w,
-                                    double *restrict L, double *restrict e,
-                                    double *restrict Eref, int lo, int hi, int small)
-{
-  for (int j = lo; j < hi; ++j) {
-    const double a = C * (pL[j] - pLf);
-    w[j] += C * pw[j];
-    L[j] += C * pL[j];
-    e[j] *= small ? roll_exp_small(a) : roll_exp_step(a);
-    Eref[j] = E[j];
-  }
-}
-
-static inline void roll_carry_loop(double A, double B, const double *restrict pw,
-                                   const double *restrict pL, double *restrict w,
-                                   double *restrict L, double *restrict e, int lo, int hi,
-                                   int small)
-{
-  for (int j = lo; j < hi; ++j) {
-    w[j] += B * pw[j];
-    L[j] += B * pL[j];
-    e[j] *= A * (small ? roll_exp_small(B * pL[j]) : roll_exp_step(B * pL[j]));
-  }
-}
-
-RS_VECTOR_CLONES static void roll_rebase_pass(double C, const double *restrict pw,
-                                              const double *restrict pL, double pLf,
-                                              const double *restrict E, double *restrict w,
-                                              double *restrict L, double *restrict e,
-                                              double *restrict Eref, int lo, int hi)
-{
-  roll_rebase_loop(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi, 1);
-}
-
-RS_VECTOR_CLONES static void roll_carry_pass(double A, double B, const double *restrict pw,
-                                             const double *restrict pL, double *restrict w,
-                                             double *restrict L, double *restrict e, int lo,
-                                             int hi)
-{
-  roll_carry_loop(A, B, pw, pL, w, L, e, lo, hi, 1);
-}
-
-int rsi_roll_rebase_small(double s, const double *pL, double p0, int lo, int hi)
-{
-  return roll_rebase_small(s, pL, p0, lo, hi);
-}
-
-void rsi_roll_rebase_nodes(double C, const double *pw, const double *pL, double pLf,
-                           const double *E, double *w, double *L, double *e, double *Eref,
-                           int lo, int hi)
-{
-  roll_rebase_pass(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi);
-}
-
-void rsi_roll_carry_nodes(double A, double B, const double *pw, const double *pL, double *w,
-                          double *L, double *e, int lo, int hi)
-{
-  roll_carry_pass(A, B, pw, pL, w, L, e, lo, hi);
-}
-
-void rsi_roll_rebase_nodes_exp(double C, const double *pw, const double *pL, double pLf,
-                               const double *E, double *w, double *L, double *e, double *Eref,
-                               int lo, int hi)
-{
-  roll_rebase_loop(C, pw, pL, pLf, E, w, L, e, Eref, lo, hi, 0);
-}
-
-void rsi_roll_carry_nodes_exp(double A, double B, const double *pw, const double *pL, double *w,
-                              double *L, double *e, int lo, int hi)
-{
-  roll_carry_loop(A, B, pw, pL, w, L, e, lo, hi, 0);
-}
 
 /* A new reference from node `from` up (rsi_roll_reuse_start), before it is integrated: below
  * the node the reference's values take their first-order correction for the drift since
