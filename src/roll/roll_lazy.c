@@ -286,6 +286,17 @@ void rsi_roll_lazy_clear(rs_roll *roll)
   roll->lazy.c = roll->lazy.c2 = 0.0;
 }
 
+/* one node of rsi_roll_deep_maxima (below): `stored` its stored stress, *m and *q the
+ * maxima of its chain */
+static inline void deep_maxima_node(double stored, double e, double pL, double c, double c2,
+                                    double *m, double *q)
+{
+  const double P = -(stored + e * (c + c2 * pL));
+  const double r = P > 0.0 ? e / P : INFINITY, a = fabs(pL);
+  *m = a > *m ? a : *m;
+  *q = r > *q || r != r ? r : *q;
+}
+
 /* max |p_L,j| (*m) and max e_j / P_j (*q) over the nodes [0, D) (rsi_roll_deep_keep), P_j
  * the node's pressure now, -(stored + e_j (c + c2 p_L,j)) (sr[j - 1] stored, core_sigma at
  * node 0: its true stress, in the zone: the level continues the zone's scales); a node not
@@ -298,26 +309,12 @@ void rsi_roll_deep_maxima(const double *restrict pL, const double *restrict e,
                           int D, double *m, double *q)
 {
   double mm[4] = {0.0, 0.0, 0.0, 0.0}, qq[4] = {0.0, 0.0, 0.0, 0.0};
-  if (D > 0) {
-    const double P = -(core_sigma + e[0] * (c + c2 * pL[0]));
-    const double r = P > 0.0 ? e[0] / P : INFINITY;
-    mm[0] = fabs(pL[0]) > mm[0] ? fabs(pL[0]) : mm[0];
-    qq[0] = r > qq[0] || r != r ? r : qq[0];
-  }
+  if (D > 0) deep_maxima_node(core_sigma, e[0], pL[0], c, c2, &mm[0], &qq[0]);
   int j = 1;
   for (; j + 3 < D; j += 4)
-    for (int k = 0; k < 4; ++k) {
-      const double P = -(sr[j + k - 1] + e[j + k] * (c + c2 * pL[j + k]));
-      const double r = P > 0.0 ? e[j + k] / P : INFINITY, a = fabs(pL[j + k]);
-      mm[k] = a > mm[k] ? a : mm[k];
-      qq[k] = r > qq[k] || r != r ? r : qq[k];
-    }
-  for (; j < D; ++j) {
-    const double P = -(sr[j - 1] + e[j] * (c + c2 * pL[j]));
-    const double r = P > 0.0 ? e[j] / P : INFINITY, a = fabs(pL[j]);
-    mm[0] = a > mm[0] ? a : mm[0];
-    qq[0] = r > qq[0] || r != r ? r : qq[0];
-  }
+    for (int k = 0; k < 4; ++k)
+      deep_maxima_node(sr[j + k - 1], e[j + k], pL[j + k], c, c2, &mm[k], &qq[k]);
+  for (; j < D; ++j) deep_maxima_node(sr[j - 1], e[j], pL[j], c, c2, &mm[0], &qq[0]);
   for (int k = 1; k < 4; ++k) {
     mm[0] = mm[k] > mm[0] ? mm[k] : mm[0];
     qq[0] = qq[k] > qq[0] || qq[k] != qq[k] ? qq[k] : qq[0];
